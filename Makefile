@@ -1,0 +1,29 @@
+# knifeedge developer targets. PYTHON defaults to the active interpreter.
+PYTHON ?= python
+export PYTHONHASHSEED = 0
+
+.PHONY: derive test test-all demo bench figures check-generated
+
+## derive: regenerate generated/ from the Lagrangians (SymPy; deterministic)
+derive:
+	$(PYTHON) -m derivation --out generated
+
+## check-generated: fail if generated/ differs from a fresh derivation
+check-generated: derive
+	@git diff --exit-code --stat -- generated || (echo "generated/ is stale: run make derive and commit" && exit 1)
+
+## test: the test suite (what CI runs)
+test:
+	$(PYTHON) -m pytest
+
+## demo: the main job
+demo:
+	knifeedge demo
+
+## bench: speed and accuracy benchmarks (not part of the tests)
+bench:
+	$(PYTHON) -m benchmarks
+
+## figures: every figure of the paper
+figures:
+	knifeedge figures --out figures

@@ -1,0 +1,256 @@
+"""Emitter: reduced systems -> plain Python modules of numba-jitted functions.
+
+Each generated module documents the order of its state and parameter
+vectors, carries a header (producer, source, SymPy version, input hash) and
+holds only ``math``/``numpy``/``numba`` code.  Output is deterministic for a
+given SymPy version (``PYTHONHASHSEED=0`` is set by ``make derive`` and the
+staleness test; the generation itself sorts everything it iterates).
+
+Refuses to emit an expression containing a symbol that is not a declared
+state, pose coordinate or parameter.
+"""
+from __future__ import annotations
+
+import hashlib
+import inspect
+from pathlib import Path
+
+import sympy as sp
+from sympy.printing.pycode import PythonCodePrinter
+
+from . import engine, models, truncation
+from .engine import ReducedSystem
+
+GENERATOR = "derivation/emit.py (make derive)"
+
+class _Printer(PythonCodePrinter):
+    """Python printer with bare ``math`` names and integer powers as products."""
+
+    def _print_Pow(self, expr, rational=False):
+        b, e = expr.args
+        if e.is_Integer and 1 < int(e) <= 4:
+            base = self.parenthesize(b, 100)
+            return "*".join([base] * int(e))
+        if e.is_Integer and -4 <= int(e) < 0:
+            base = self.parenthesize(b, 100)
+            return "(1.0/(" + "*".join([base] * -int(e)) + "))"
+        return super()._print_Pow(expr, rational=rational)
+
+    def _print_Rational(self, expr):
+        return f"({float(expr.p)!r}/{float(expr.q)!r})"
+
+
+def _code(e: sp.Expr) -> str:
+    return _Printer({"fully_qualified_modules": True, "standard": "python3"}).doprint(e)
+
+
+def input_hash(spec: engine.ModelSpec, fidelity: str) -> str:
+    """SHA-256 of what determines a module: the model data, the pipeline sources, SymPy's version."""
+    h = hashlib.sha256()
+    for part in (
+        spec.name, fidelity, sp.__version__,
+        sp.srepr(spec.lagrangian), *(sp.srepr(c) for c in spec.constraints),
+        inspect.getsource(engine), inspect.getsource(truncation), inspect.getsource(models),
+        Path(__file__).read_text(),
+    ):
+        h.update(part.encode())
+        h.update(b"\0")
+    return h.hexdigest()
+
+
+def _cse_block(exprs, targets, allowed, indent="    "):
+    """CSE ``exprs`` and assign them to ``targets``; returns (code lines, op count)."""
+    bad = set().union(*(e.free_symbols for e in exprs)) - set(allowed)
+    if bad:
+        raise ValueError(f"refusing to emit: undeclared symbols {sorted(map(str, bad))}")
+    subs, reduced_exprs = sp.cse(exprs, symbols=sp.numbered_symbols("_c"), order="canonical")
+    lines = [f"{indent}{s} = {_code(v)}" for s, v in subs]
+    lines += [f"{indent}{t} = {_code(v)}" for t, v in zip(targets, reduced_exprs)]
+    ops = sum(sp.count_ops(v) for _, v in subs) + sum(sp.count_ops(v) for v in reduced_exprs)
+    return lines, int(ops)
+
+
+def _unpack(names, array, indent="    "):
+    return [f"{indent}{n} = {array}[{i}]" for i, n in enumerate(names)]
+
+
+def _dims(name: str) -> str:
+    """Unit of a state or parameter, from :data:`derivation.models.DIMENSIONS`."""
+    length, time = models.DIMENSIONS[name]
+    num = {0: "", 1: "length"}[length]
+    if time < 0:
+        return (num or "rad") + "/time" + ("^2" if time == -2 else "")
+    return num or "rad"
+
+
+def module_source(system: ReducedSystem, fidelity: str) -> str:
+    spec = system.spec
+    state = [str(s) for s in system.state]
+    pose = [str(q) for q in spec.pose]
+    params = [str(p) for p in spec.params]
+    n, npose = len(state), len(pose)
+    rates = system.state_rhs()
+    allowed = set(system.state) | set(spec.params)
+    rhs_lines, rhs_ops = _cse_block(rates, [f"ds[{i}]" for i in range(n)], allowed)
+    pose_exprs = [system.pose_rates[q] for q in spec.pose]
+    pose_lines, pose_ops = _cse_block(pose_exprs, [f"out[{i}]" for i in range(npose)], allowed | set(spec.pose))
+    rhsp_lines, rhsp_ops = _cse_block(
+        rates + pose_exprs, [f"ds[{i}]" for i in range(n + npose)], allowed | set(spec.pose)
+    )
+    energy_lines, energy_ops = _cse_block([system.energy], ["energy"], allowed)
+    lam = list(system.multipliers)
+    lam_lines, lam_ops = _cse_block(lam, [f"out[{i}]" for i in range(len(lam))], allowed)
+    labels = ", ".join(spec.constraint_labels)
+    digest = input_hash(spec, fidelity)
+    fid_doc = {
+        "full": "exact consequences of the paper's Lagrangian and constraints, nothing dropped",
+        "reduced": (f"degree-{truncation.ORDER} Taylor polynomial of the full vector field in the tilts "
+                    "and tilt rates (tilt equations to O(theta), spin equation to O(theta^2))"),
+    }[fidelity]
+    state_doc = "\n".join(f"    s[{i}] = {nm:<12} [{_dims(nm)}]" for i, nm in enumerate(state))
+    pose_doc = "\n".join(f"    s[{n + i}] = {nm:<12} [{_dims(nm)}]" for i, nm in enumerate(pose))
+    par_doc = "\n".join(f"    p[{i}] = {nm:<12} [{_dims(nm)}]" for i, nm in enumerate(params))
+    unpack_s = _unpack(state, "s")
+    unpack_p = _unpack(params, "p")
+    unpack_pose = [f"    {q} = s[{n + i}]" for i, q in enumerate(pose)]
+    nl = "\n"
+    return f'''"""{spec.name}, fidelity {fidelity}: {fid_doc}.
+
+GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
+Produced by {GENERATOR} from derivation/models.py (model {spec.name!r},
+constraints {labels}) through derivation/engine.py{" and derivation/truncation.py" if fidelity != "full" else ""}.
+SymPy {sp.__version__}; input hash sha256:{digest}
+
+{spec.description}
+
+State vector ``s`` (closed state; the pose follows by quadrature):
+{state_doc}
+Pose-extended state (``*_pose`` functions) appends:
+{pose_doc}
+Parameter vector ``p``:
+{par_doc}
+Multipliers are per unit mass (the mass M cancels), in the order {labels}.
+Energy is per unit mass.
+"""
+import math
+
+import numpy as np
+from numba import njit
+
+MODEL = {spec.name!r}
+FIDELITY = {fidelity!r}
+STATE_NAMES = {tuple(state)!r}
+POSE_NAMES = {tuple(pose)!r}
+PARAM_NAMES = {tuple(params)!r}
+TILT_NAMES = {tuple(str(q) for q in spec.small)!r}
+MULTIPLIER_NAMES = {tuple(spec.constraint_labels)!r}
+INPUT_HASH = {digest!r}
+SYMPY_VERSION = {sp.__version__!r}
+#: floating-point operation counts of each function body (SymPy count_ops after CSE)
+OP_COUNTS = {{"rhs": {rhs_ops}, "rhs_pose": {rhsp_ops}, "pose_rates": {pose_ops}, "energy": {energy_ops}, "multipliers": {lam_ops}}}
+
+
+@njit(cache=True)
+def rhs_into(t, s, p, ds):
+    """Write d(state)/dt into ``ds`` ({rhs_ops} operations)."""
+{nl.join(unpack_s)}
+{nl.join(unpack_p)}
+{nl.join(rhs_lines)}
+
+
+@njit(cache=True)
+def rhs(t, s, p):
+    """Return d(state)/dt as a new array of length {n}."""
+    ds = np.empty({n})
+    rhs_into(t, s, p, ds)
+    return ds
+
+
+@njit(cache=True)
+def rhs_pose_into(t, s, p, ds):
+    """Write d(state, pose)/dt into ``ds`` ({rhsp_ops} operations)."""
+{nl.join(unpack_s)}
+{nl.join(unpack_pose)}
+{nl.join(unpack_p)}
+{nl.join(rhsp_lines)}
+
+
+@njit(cache=True)
+def rhs_pose(t, s, p):
+    """Return d(state, pose)/dt as a new array of length {n + npose}."""
+    ds = np.empty({n + npose})
+    rhs_pose_into(t, s, p, ds)
+    return ds
+
+
+@njit(cache=True)
+def pose_rates(s, p):
+    """Return (phi_dot, x_dot, y_dot) at the pose-extended state ``s`` ({pose_ops} operations)."""
+    out = np.empty({npose})
+{nl.join(unpack_s)}
+{nl.join(unpack_pose)}
+{nl.join(unpack_p)}
+{nl.join(pose_lines)}
+    return out
+
+
+@njit(cache=True)
+def energy(s, p):
+    """Energy per unit mass ({energy_ops} operations)."""
+{nl.join(unpack_s)}
+{nl.join(unpack_p)}
+{nl.join(energy_lines)}
+    return energy
+
+
+@njit(cache=True)
+def multipliers(s, p):
+    """Lagrange multipliers (contact forces per unit mass) {labels} ({lam_ops} operations)."""
+    out = np.empty({len(lam)})
+{nl.join(unpack_s)}
+{nl.join(unpack_p)}
+{nl.join(lam_lines)}
+    return out
+'''
+
+
+def build_all() -> dict:
+    """Derive every model at every fidelity: ``{(model, fidelity): ReducedSystem}``."""
+    out = {}
+    for name in sorted(models.MODELS):
+        full = engine.derive(models.MODELS[name])
+        out[(name, "full")] = full
+        out[(name, "reduced")] = truncation.reduced(full)
+    return out
+
+
+def registry_source(systems: dict) -> str:
+    entries = "\n".join(
+        f"    ({m!r}, {f!r}): {m + '_' + f!r}," for (m, f) in sorted(systems)
+    )
+    return f'''"""Registry of the generated model modules.
+
+GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
+Produced by {GENERATOR}; SymPy {sp.__version__}.
+"""
+
+#: (model, fidelity) -> module name inside this package
+MODULES = {{
+{entries}
+}}
+'''
+
+
+def write_all(out_dir: Path, systems: dict | None = None) -> list[Path]:
+    """Write every module (and the registry) into ``out_dir``; return the paths."""
+    systems = systems if systems is not None else build_all()
+    out_dir.mkdir(parents=True, exist_ok=True)
+    paths = []
+    for (name, fidelity), system in sorted(systems.items()):
+        path = out_dir / f"{name}_{fidelity}.py"
+        path.write_text(module_source(system, fidelity))
+        paths.append(path)
+    reg = out_dir / "__init__.py"
+    reg.write_text(registry_source(systems))
+    paths.append(reg)
+    return paths

@@ -1,0 +1,13 @@
+"""Registry of the generated model modules.
+
+GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
+Produced by derivation/emit.py (make derive); SymPy 1.14.0.
+"""
+
+#: (model, fidelity) -> module name inside this package
+MODULES = {
+    ('single_mode', 'full'): 'single_mode_full',
+    ('single_mode', 'reduced'): 'single_mode_reduced',
+    ('two_mode', 'full'): 'two_mode_full',
+    ('two_mode', 'reduced'): 'two_mode_reduced',
+}

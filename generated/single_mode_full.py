@@ -1,0 +1,151 @@
+"""single_mode, fidelity full: exact consequences of the paper's Lagrangian and constraints, nothing dropped.
+
+GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
+Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
+constraints vinculo1, vinculo2) through derivation/engine.py.
+SymPy 1.14.0; input hash sha256:c6f6195b44982e39e8aa80b43faa082306171938784e198e35a512a52fbbbfc8
+
+Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
+
+State vector ``s`` (closed state; the pose follows by quadrature):
+    s[0] = theta        [rad]
+    s[1] = theta_dot    [rad/time]
+    s[2] = phi_dot      [rad/time]
+Pose-extended state (``*_pose`` functions) appends:
+    s[3] = phi          [rad]
+    s[4] = x            [length]
+    s[5] = y            [length]
+Parameter vector ``p``:
+    p[0] = g            [length/time^2]
+    p[1] = ell          [length]
+    p[2] = L            [length]
+    p[3] = D            [length]
+Multipliers are per unit mass (the mass M cancels), in the order vinculo1, vinculo2.
+Energy is per unit mass.
+"""
+import math
+
+import numpy as np
+from numba import njit
+
+MODEL = 'single_mode'
+FIDELITY = 'full'
+STATE_NAMES = ('theta', 'theta_dot', 'phi_dot')
+POSE_NAMES = ('phi', 'x', 'y')
+PARAM_NAMES = ('g', 'ell', 'L', 'D')
+TILT_NAMES = ('theta',)
+MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
+INPUT_HASH = 'c6f6195b44982e39e8aa80b43faa082306171938784e198e35a512a52fbbbfc8'
+SYMPY_VERSION = '1.14.0'
+#: floating-point operation counts of each function body (SymPy count_ops after CSE)
+OP_COUNTS = {"rhs": 20, "rhs_pose": 27, "pose_rates": 7, "energy": 23, "multipliers": 7}
+
+
+@njit(cache=True)
+def rhs_into(t, s, p, ds):
+    """Write d(state)/dt into ``ds`` (20 operations)."""
+    theta = s[0]
+    theta_dot = s[1]
+    phi_dot = s[2]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    _c0 = L*L
+    _c1 = (1.0/(_c0))
+    ds[0] = theta_dot
+    ds[1] = _c1*(-D*D*g*theta*theta*theta + D*_c0*phi_dot*theta_dot - _c0*g*theta)/ell
+    ds[2] = -D*_c1*g*theta*theta
+
+
+@njit(cache=True)
+def rhs(t, s, p):
+    """Return d(state)/dt as a new array of length 3."""
+    ds = np.empty(3)
+    rhs_into(t, s, p, ds)
+    return ds
+
+
+@njit(cache=True)
+def rhs_pose_into(t, s, p, ds):
+    """Write d(state, pose)/dt into ``ds`` (27 operations)."""
+    theta = s[0]
+    theta_dot = s[1]
+    phi_dot = s[2]
+    phi = s[3]
+    x = s[4]
+    y = s[5]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    _c0 = L*L
+    _c1 = (1.0/(_c0))
+    _c2 = D*phi_dot*theta
+    ds[0] = theta_dot
+    ds[1] = _c1*(-D*D*g*theta*theta*theta + D*_c0*phi_dot*theta_dot - _c0*g*theta)/ell
+    ds[2] = -D*_c1*g*theta*theta
+    ds[3] = phi_dot
+    ds[4] = _c2*math.sin(phi)
+    ds[5] = -_c2*math.cos(phi)
+
+
+@njit(cache=True)
+def rhs_pose(t, s, p):
+    """Return d(state, pose)/dt as a new array of length 6."""
+    ds = np.empty(6)
+    rhs_pose_into(t, s, p, ds)
+    return ds
+
+
+@njit(cache=True)
+def pose_rates(s, p):
+    """Return (phi_dot, x_dot, y_dot) at the pose-extended state ``s`` (7 operations)."""
+    out = np.empty(3)
+    theta = s[0]
+    theta_dot = s[1]
+    phi_dot = s[2]
+    phi = s[3]
+    x = s[4]
+    y = s[5]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    _c0 = D*phi_dot*theta
+    out[0] = phi_dot
+    out[1] = _c0*math.sin(phi)
+    out[2] = -_c0*math.cos(phi)
+    return out
+
+
+@njit(cache=True)
+def energy(s, p):
+    """Energy per unit mass (23 operations)."""
+    theta = s[0]
+    theta_dot = s[1]
+    phi_dot = s[2]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    _c0 = theta*theta
+    _c1 = ((1.0/2.0))*phi_dot*phi_dot
+    energy = D*D*_c0*_c1 - D*ell*phi_dot*theta*theta_dot + L*L*_c1 + ((1.0/2.0))*_c0*ell*g + ((1.0/2.0))*ell*ell*theta_dot*theta_dot
+    return energy
+
+
+@njit(cache=True)
+def multipliers(s, p):
+    """Lagrange multipliers (contact forces per unit mass) vinculo1, vinculo2 (7 operations)."""
+    out = np.empty(2)
+    theta = s[0]
+    theta_dot = s[1]
+    phi_dot = s[2]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    out[0] = phi_dot*(D*phi_dot*theta - ell*theta_dot)
+    out[1] = -g*theta
+    return out

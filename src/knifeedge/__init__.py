@@ -1,0 +1,18 @@
+"""knifeedge: verified, compiled simulators of the chiral knife-edge rattleback.
+
+Implements Jagla & Rojo, "The chiral knife edge: a simplified rattleback to
+illustrate spin inversion" (arXiv:2309.06154).  The equations of motion are
+derived by machine from the paper's Lagrangians (``derivation/``, SymPy) and
+emitted as numba modules (``knifeedge.generated``); this package loads and
+integrates them and never imports SymPy.
+
+>>> import knifeedge as ke
+>>> m = ke.load("single_mode", fidelity="full")
+>>> m.state_names
+('theta', 'theta_dot', 'phi_dot')
+"""
+from .models import FIDELITIES, MODEL_NAMES, Model, load
+from .simulate import METHODS, SimulationResult, simulate
+
+__version__ = "0.1.0"
+__all__ = ["load", "simulate", "Model", "SimulationResult", "METHODS", "MODEL_NAMES", "FIDELITIES"]

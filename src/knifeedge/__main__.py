@@ -1,0 +1,4 @@
+"""``python -m knifeedge``: same as the ``knifeedge`` command."""
+from .cli import main
+
+raise SystemExit(main())

@@ -1,0 +1,215 @@
+"""Model registry: :func:`load` returns a :class:`Model` backed by a generated module.
+
+Everything a model knows (state and parameter names, their order, the
+compiled functions) comes from the module that ``make derive`` wrote into
+``knifeedge.generated``; nothing is derived at run time.
+"""
+from __future__ import annotations
+
+import importlib
+import math
+from collections.abc import Mapping
+
+import numpy as np
+
+from .generated import MODULES
+
+MODEL_NAMES = tuple(sorted({m for m, _ in MODULES}))
+FIDELITIES = tuple(sorted({f for _, f in MODULES}))
+#: parameters that may take any finite value (angles); the others must be positive
+SIGNED_PARAMS = frozenset({"alpha"})
+
+
+class Model:
+    """A knife-edge model at one fidelity, with or without the pose.
+
+    Attributes
+    ----------
+    name, fidelity : str
+    pose : bool
+        When true the state carries ``("phi", "x", "y")`` after the closed state.
+    state_names : tuple of str
+    param_names : tuple of str
+    tilt_names : tuple of str
+        The small coordinates (tilt angles).
+    multiplier_names : tuple of str
+        The constraints whose multipliers :meth:`multipliers` returns.
+    rhs : compiled function ``rhs(t, y, p) -> ndarray``
+        Also callable from other numba code.
+    rhs_into : compiled function ``rhs_into(t, y, p, dy)`` writing into ``dy``.
+    module : the generated module.
+    """
+
+    def __init__(self, name: str, fidelity: str, pose: bool):
+        self.name = name
+        self.fidelity = fidelity
+        self.pose = bool(pose)
+        self.module = importlib.import_module(f"{__package__}.generated.{MODULES[(name, fidelity)]}")
+        mod = self.module
+        self.closed_state_names: tuple = mod.STATE_NAMES
+        self.pose_names: tuple = mod.POSE_NAMES
+        self.state_names: tuple = mod.STATE_NAMES + (mod.POSE_NAMES if self.pose else ())
+        self.param_names: tuple = mod.PARAM_NAMES
+        self.tilt_names: tuple = mod.TILT_NAMES
+        self.multiplier_names: tuple = mod.MULTIPLIER_NAMES
+        self.rhs = mod.rhs_pose if self.pose else mod.rhs
+        self.rhs_into = mod.rhs_pose_into if self.pose else mod.rhs_into
+
+    def __repr__(self) -> str:
+        return f"knifeedge.load({self.name!r}, fidelity={self.fidelity!r}, pose={self.pose})"
+
+    @property
+    def n_state(self) -> int:
+        return len(self.state_names)
+
+    def index(self, name: str) -> int:
+        """Position of a state variable in the state vector."""
+        try:
+            return self.state_names.index(name)
+        except ValueError:
+            raise KeyError(f"unknown state {name!r}; this model's states are {self.state_names}") from None
+
+    # -- parameters and states -------------------------------------------------
+    def params(self, values: Mapping | None = None, /, **kwargs) -> np.ndarray:
+        """Validated float64 parameter vector in the order of :attr:`param_names`.
+
+        Accepts keywords (``m.params(g=1.0, ell=1.0, L=2.0, D=0.5)``) or one
+        mapping.  Every parameter is required; lengths and ``g`` must be
+        positive and finite, ``alpha`` any finite angle (radians).
+        """
+        if values is not None and kwargs:
+            raise TypeError("pass the parameters either as one mapping or as keywords, not both")
+        values = dict(values if values is not None else kwargs)
+        missing = [n for n in self.param_names if n not in values]
+        extra = [n for n in values if n not in self.param_names]
+        if missing or extra:
+            msg = []
+            if missing:
+                msg.append(f"missing {missing}")
+            if extra:
+                msg.append(f"unknown {extra}")
+            raise ValueError(f"parameters `p` of {self.name}: {', '.join(msg)}; expected exactly {self.param_names}")
+        out = np.empty(len(self.param_names))
+        for i, n in enumerate(self.param_names):
+            out[i] = _finite_float(values[n], f"parameter `{n}`")
+            if n not in SIGNED_PARAMS and not out[i] > 0:
+                raise ValueError(f"parameter `{n}` must be positive, got {values[n]!r}")
+        return out
+
+    def check_params(self, p) -> np.ndarray:
+        """Validate a parameter vector or mapping; returns a float64 array."""
+        if isinstance(p, Mapping):
+            return self.params(p)
+        arr = _float_array(p, "parameters `p`")
+        if arr.shape != (len(self.param_names),):
+            raise ValueError(
+                f"parameters `p` must have shape ({len(self.param_names)},) for {self.param_names}, got {arr.shape}"
+            )
+        return self.params(dict(zip(self.param_names, arr)))
+
+    def state(self, values: Mapping | None = None, /, **kwargs) -> np.ndarray:
+        """Validated float64 state vector in the order of :attr:`state_names`.
+
+        Every state is required except the pose, which defaults to zero.
+        """
+        if values is not None and kwargs:
+            raise TypeError("pass the state either as one mapping or as keywords, not both")
+        values = dict(values if values is not None else kwargs)
+        defaults = {n: 0.0 for n in self.pose_names} if self.pose else {}
+        missing = [n for n in self.state_names if n not in values and n not in defaults]
+        extra = [n for n in values if n not in self.state_names]
+        if missing or extra:
+            msg = []
+            if missing:
+                msg.append(f"missing {missing}")
+            if extra:
+                msg.append(f"unknown {extra}")
+            raise ValueError(f"initial state `y0` of {self.name}: {', '.join(msg)}; expected {self.state_names}")
+        return np.array(
+            [_finite_float(values.get(n, defaults.get(n)), f"initial state `{n}`") for n in self.state_names]
+        )
+
+    def check_state(self, y) -> np.ndarray:
+        """Validate a state vector or mapping; returns a float64 array."""
+        if isinstance(y, Mapping):
+            return self.state(y)
+        arr = _float_array(y, "initial state `y0`")
+        if arr.shape != (self.n_state,):
+            raise ValueError(
+                f"initial state `y0` must have shape ({self.n_state},) for {self.state_names}, got {arr.shape}"
+            )
+        if not np.all(np.isfinite(arr)):
+            raise ValueError("All components of the initial state `y0` must be finite.")
+        return arr
+
+    # -- compiled quantities ---------------------------------------------------
+    def energy(self, y, p) -> float | np.ndarray:
+        """Energy per unit mass; ``y`` of shape (n_state,) or (n_state, n_times)."""
+        y = np.asarray(y, dtype=float)
+        p = np.asarray(p, dtype=float)
+        if y.ndim == 1:
+            return float(self.module.energy(y, p))
+        return np.array([self.module.energy(np.ascontiguousarray(y[:, k]), p) for k in range(y.shape[1])])
+
+    def multipliers(self, y, p) -> np.ndarray:
+        """Lagrange multipliers (contact forces per unit mass), in :attr:`multiplier_names` order.
+
+        ``y`` of shape (n_state,) gives shape (n_constraints,); (n_state, n_times)
+        gives (n_constraints, n_times).
+        """
+        y = np.asarray(y, dtype=float)
+        p = np.asarray(p, dtype=float)
+        if y.ndim == 1:
+            return self.module.multipliers(y, p)
+        return np.stack([self.module.multipliers(np.ascontiguousarray(y[:, k]), p) for k in range(y.shape[1])], 1)
+
+    def pose_rates(self, y, p) -> np.ndarray:
+        """``(phi_dot, x_dot, y_dot)`` at a pose-extended state (needs ``pose=True``)."""
+        if not self.pose:
+            raise ValueError("pose_rates needs the pose: load the model with `pose=True`")
+        return self.module.pose_rates(np.asarray(y, dtype=float), np.asarray(p, dtype=float))
+
+
+def _finite_float(v, what: str) -> float:
+    if isinstance(v, bool) or not isinstance(v, (int, float, np.integer, np.floating)):
+        raise TypeError(f"{what} must be a real number, got {type(v).__name__} {v!r}")
+    v = float(v)
+    if not math.isfinite(v):
+        raise ValueError(f"{what} must be finite, got {v!r}")
+    return v
+
+
+def _float_array(v, what: str) -> np.ndarray:
+    try:
+        arr = np.asarray(v, dtype=float)
+    except (TypeError, ValueError):
+        raise TypeError(f"{what} must be an array of real numbers or a mapping of names to numbers") from None
+    return arr
+
+
+_CACHE: dict = {}
+
+
+def load(name: str, fidelity: str = "full", pose: bool = False) -> Model:
+    """Load a generated model.
+
+    Parameters
+    ----------
+    name : ``"single_mode"`` (paper section II) or ``"two_mode"`` (section III).
+    fidelity : ``"full"`` (exact consequences of the paper's Lagrangian and
+        constraints) or ``"reduced"`` (small-angle truncation, the order of
+        the paper's ``FINAL1``/``FINAL2`` and ``eqs_2modes``).
+    pose : append ``("phi", "x", "y")`` to the state; only scenes that look at
+        the path on the table need it.
+    """
+    if not isinstance(name, str) or name not in MODEL_NAMES:
+        raise ValueError(f"unknown model `name` {name!r}; accepted: {', '.join(MODEL_NAMES)}")
+    if not isinstance(fidelity, str) or (name, fidelity) not in MODULES:
+        accepted = sorted(f for m, f in MODULES if m == name)
+        raise ValueError(f"unknown `fidelity` {fidelity!r} for {name}; accepted: {', '.join(accepted)}")
+    if not isinstance(pose, (bool, np.bool_)):
+        raise TypeError(f"`pose` must be True or False, got {pose!r}")
+    key = (name, fidelity, bool(pose))
+    if key not in _CACHE:
+        _CACHE[key] = Model(name, fidelity, bool(pose))
+    return _CACHE[key]
