@@ -143,6 +143,8 @@ STATE_NAMES = {tuple(state)!r}
 POSE_NAMES = {tuple(pose)!r}
 PARAM_NAMES = {tuple(params)!r}
 TILT_NAMES = {tuple(str(q) for q in spec.small)!r}
+#: the spin rate, whose zero crossings are the spin reversals
+SPIN_NAME = "phi_dot"
 MULTIPLIER_NAMES = {tuple(spec.constraint_labels)!r}
 INPUT_HASH = {digest!r}
 SYMPY_VERSION = {sp.__version__!r}

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py and derivation/truncation.py.
-SymPy 1.14.0; input hash sha256:80774f110a5193d102890bda9f7a12306f821ec71746f8afcbee1785fee59903
+SymPy 1.14.0; input hash sha256:3ad8e8c12a4cecb4a9342769da9c8b6d36ebb108a64a1620d13f73de03ef7ee0
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -34,8 +34,10 @@ STATE_NAMES = ('theta', 'theta_dot', 'phi_dot')
 POSE_NAMES = ('phi', 'x', 'y')
 PARAM_NAMES = ('g', 'ell', 'L', 'D')
 TILT_NAMES = ('theta',)
+#: the spin rate, whose zero crossings are the spin reversals
+SPIN_NAME = "phi_dot"
 MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
-INPUT_HASH = '80774f110a5193d102890bda9f7a12306f821ec71746f8afcbee1785fee59903'
+INPUT_HASH = '3ad8e8c12a4cecb4a9342769da9c8b6d36ebb108a64a1620d13f73de03ef7ee0'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {"rhs": 11, "rhs_pose": 17, "pose_rates": 7, "energy": 23, "multipliers": 7}

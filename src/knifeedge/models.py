@@ -32,6 +32,8 @@ class Model:
     param_names : tuple of str
     tilt_names : tuple of str
         The small coordinates (tilt angles).
+    spin_name : str
+        The state whose zero crossings are spin reversals (``"phi_dot"``).
     multiplier_names : tuple of str
         The constraints whose multipliers :meth:`multipliers` returns.
     rhs : compiled function ``rhs(t, y, p) -> ndarray``
@@ -51,6 +53,7 @@ class Model:
         self.state_names: tuple = mod.STATE_NAMES + (mod.POSE_NAMES if self.pose else ())
         self.param_names: tuple = mod.PARAM_NAMES
         self.tilt_names: tuple = mod.TILT_NAMES
+        self.spin_name: str = mod.SPIN_NAME
         self.multiplier_names: tuple = mod.MULTIPLIER_NAMES
         self.rhs = mod.rhs_pose if self.pose else mod.rhs
         self.rhs_into = mod.rhs_pose_into if self.pose else mod.rhs_into

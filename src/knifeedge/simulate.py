@@ -70,7 +70,7 @@ METHODS: dict = {}
 
 
 def _spin_index(model: Model) -> int:
-    return model.index("phi_dot")
+    return model.index(model.spin_name)
 
 
 def _run_scipy(scipy_method: str):
