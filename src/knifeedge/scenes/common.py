@@ -1,0 +1,54 @@
+"""Small helpers the scenes share: envelopes, energy drift, plotting style."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+#: the paper's caption convention: time in sqrt(ell/g), rates in sqrt(g/ell)
+T_LABEL = r"$t\ [\sqrt{\ell/g}]$"
+RATE_LABEL = r"$\dot\phi\ [\sqrt{g/\ell}]$"
+
+
+def envelope(theta: np.ndarray, theta_dot: np.ndarray, omega: float) -> np.ndarray:
+    """Oscillation amplitude ``sqrt(theta^2 + (theta_dot/omega)^2)``, shape of ``theta``.
+
+    For a harmonic oscillation of angular frequency ``omega`` this is its
+    amplitude at every instant (the paper's ``A_theta``).
+    """
+    return np.sqrt(np.asarray(theta) ** 2 + (np.asarray(theta_dot) / omega) ** 2)
+
+
+def relative_energy_drift(result) -> float:
+    """``max |E(t) - E(0)| / |E(0)|`` along a simulation."""
+    e = result.energy
+    return float(np.max(np.abs(e - e[0])) / abs(e[0]))
+
+
+def omega(params) -> float:
+    """Pendulum frequency sqrt(g/ell) of the tilt mode(s)."""
+    return math.sqrt(params["g"] / params["ell"])
+
+
+def mark_reversals(ax, times, label: bool = True) -> None:
+    """Dotted vertical lines at the spin reversals."""
+    for i, t in enumerate(times):
+        ax.axvline(t, color="k", ls=":", lw=0.9, label="spin reversal" if (label and i == 0) else None)
+
+
+def fit_power_law(x, y) -> tuple:
+    """Least-squares fit ``log y = a + b log x``; returns (b, standard error of b, a).
+
+    The standard error is the usual ordinary-least-squares one,
+    ``sqrt(s^2 / sum((log x - mean)^2))`` with ``s^2`` the residual variance
+    on ``n - 2`` degrees of freedom.
+    """
+    lx, ly = np.log(np.asarray(x, float)), np.log(np.asarray(y, float))
+    n = lx.size
+    if n < 3:
+        raise ValueError("a power-law fit with an uncertainty needs at least 3 points")
+    b, a = np.polyfit(lx, ly, 1)
+    resid = ly - (a + b * lx)
+    s2 = float(resid @ resid) / (n - 2)
+    se = math.sqrt(s2 / float(((lx - lx.mean()) ** 2).sum()))
+    return float(b), se, float(a)
