@@ -45,7 +45,7 @@ def _two():
 
 
 @pytest.mark.parametrize("name,build", [("single_mode", _single), ("two_mode", _two)])
-def test_full_rhs_matches_lagranges_method(name, build):
+def test_full_rhs_and_multipliers_match_lagranges_method(name, build):
     qs, lag, cons, params, state_syms = build()
     lm = LagrangesMethod(lag, qs, nonhol_coneqs=cons)
     lm.form_lagranges_equations()
@@ -59,7 +59,7 @@ def test_full_rhs_matches_lagranges_method(name, build):
 
     m = ke.load(name, fidelity="full")
     rng = np.random.default_rng(2023)
-    worst = 0.0
+    worst = worst_lam = 0.0
     for _ in range(20):
         pv = rng.uniform(0.3, 2.0, len(params))
         if name == "two_mode":
@@ -81,5 +81,10 @@ def test_full_rhs_matches_lagranges_method(name, build):
         dy = m.rhs(0.0, y, pv)
         expect = np.concatenate([u[2:-1], qdd[2:-1], [qdd[-1]]])
         rel = np.max(np.abs(dy - expect)) / np.max(np.abs(expect))
+        # multipliers (contact forces per unit mass), same constraint rows and sign convention
+        lam = sol[2 * n:]
+        rel_lam = np.max(np.abs(m.multipliers(y, pv) - lam)) / np.max(np.abs(lam))
         worst = max(worst, rel)
+        worst_lam = max(worst_lam, rel_lam)
     assert worst < 1e-10, f"{name}: generated full rhs differs from LagrangesMethod by {worst:.2e} (relative)"
+    assert worst_lam < 1e-10, f"{name}: generated multipliers differ from LagrangesMethod by {worst_lam:.2e}"
