@@ -1,21 +1,28 @@
 """``simulate``: integrate a model and locate its spin reversals.
 
-The integration methods are looked up in :data:`METHODS`; every method
-returns the same :class:`SimulationResult`.  Inputs are validated before any
-work (``ValueError``/``TypeError`` naming the argument); a failed
-integration is reported in ``success``/``status``/``message`` and its arrays
-stop at the last good step.
+The integration methods are looked up in :data:`METHODS`: the compiled
+methods of :mod:`knifeedge.integrators` under their plain names (``"DOP853"``,
+``"DP54"`` alias ``"RK45"``, ``"RK4"``, ``"implicit_midpoint"``,
+``"gauss4"``, ``"gauss6"``) and SciPy's ``solve_ivp`` under ``"scipy:NAME"``.
+Every method returns the same :class:`SimulationResult`.  Inputs are
+validated before any work (``ValueError``/``TypeError`` naming the
+argument); a failed integration is reported in ``success``/``status``/
+``message``/``outcome`` and its arrays stop at the last good step.
 """
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 import numpy as np
 from scipy.integrate import solve_ivp
 
+from .integrators import ALIASES, COMPILED_METHODS, Status, from_code, kernel
 from .models import Model
+
+#: the smallest relative tolerance accepted: below it the error estimate is round-off
+MIN_RTOL = 100 * np.finfo(float).eps
+ERROR_CONTROLS = ("component", "mode")
 
 
 @dataclass
@@ -29,17 +36,24 @@ class SimulationResult:
         States in the order of ``state_names``.
     state_names : tuple of str
     reversal_times : ndarray
-        Spin reversals: zero crossings of ``phi_dot``, located on the
-        solver's dense output.
+        Spin reversals: zero crossings of the model's spin rate
+        (``model.spin_name``), located on the solver's dense output.
     success : bool
     status : int
-        0 reached the end of ``t_span``; negative values are failures.
+        0 reached the end of ``t_span``; negative values are failures
+        (see :class:`knifeedge.integrators.Status`).
     message : str
     nfev : int
         Right-hand-side evaluations.
     method : str
     model : Model
     p : ndarray
+    outcome : Status
+        How the integration ended (its value is ``message``).
+    nsteps : int
+        Accepted steps.
+    nrejected : int
+        Rejected steps (adaptive methods).
     """
 
     t: np.ndarray
@@ -53,6 +67,9 @@ class SimulationResult:
     method: str
     model: Model = field(repr=False)
     p: np.ndarray = field(repr=False)
+    outcome: Status = Status.SUCCESS
+    nsteps: int = 0
+    nrejected: int = 0
 
     def __getitem__(self, name: str) -> np.ndarray:
         """Time series of the named state, e.g. ``r["phi_dot"]``."""
@@ -64,19 +81,63 @@ class SimulationResult:
         return self.model.energy(self.y, self.p)
 
 
+@dataclass(frozen=True)
+class _Run:
+    """Validated inputs handed to a runner."""
+
+    model: Model
+    y0: np.ndarray
+    t0: float
+    t1: float
+    p: np.ndarray
+    rtol: float
+    atol: np.ndarray  # shape (n_state,)
+    t_eval: np.ndarray | None
+    max_step: float
+    h: float | None
+    max_steps: int
+    error_control: str
+
+
 SCIPY_METHODS = ("RK45", "DOP853", "LSODA", "Radau")
-#: method name -> runner(model, y0, t_span, p, rtol, atol, t_eval, max_step)
+#: method name -> runner(run) -> (t, y, reversal_times, Status, nfev, nsteps, nrejected)
 METHODS: dict = {}
 
 
-def _spin_index(model: Model) -> int:
-    return model.index(model.spin_name)
+def _mode_pairs(model: Model) -> np.ndarray:
+    """``pair[i]``: the partner of a tilt and its rate (``theta`` <-> ``theta_dot``), else -1."""
+    pair = np.full(model.n_state, -1, dtype=np.int64)
+    for name in model.tilt_names:
+        rate = f"{name}_dot"
+        if name in model.state_names and rate in model.state_names:
+            i, j = model.index(name), model.index(rate)
+            pair[i], pair[j] = j, i
+    return pair
+
+
+def _run_compiled(name: str):
+    spec = COMPILED_METHODS[ALIASES.get(name, name)]
+
+    def run(r: _Run):
+        solve = kernel(r.model, name)
+        spin = r.model.index(r.model.spin_name)
+        every = r.t_eval is None
+        t_eval = np.empty(0) if every else np.ascontiguousarray(r.t_eval)
+        if spec.fixed_step:
+            out = solve(r.t0, r.t1, r.y0, r.p, r.h, r.atol, t_eval, every, spin, r.max_steps, _mode_pairs(r.model))
+        else:
+            out = solve(r.t0, r.t1, r.y0, r.p, r.rtol, r.atol, 0.0, r.max_step, t_eval, every, spin,
+                        r.max_steps, _mode_pairs(r.model), r.error_control == "mode")
+        ts, ys, ev, code, nfev, nacc, nrej = out
+        return ts, ys.T, ev, from_code(code), nfev, nacc, nrej
+
+    return run
 
 
 def _run_scipy(scipy_method: str):
-    def run(model: Model, y0, t_span, p, rtol, atol, t_eval, max_step):
-        k = _spin_index(model)
-        rhs = model.rhs
+    def run(r: _Run):
+        k = r.model.index(r.model.spin_name)
+        rhs, p = r.model.rhs, r.p
 
         def fun(t, y):
             return rhs(t, y, p)
@@ -84,18 +145,21 @@ def _run_scipy(scipy_method: str):
         def reversal(t, y):
             return y[k]
 
-        sol = solve_ivp(
-            fun, t_span, y0, method=scipy_method, rtol=rtol, atol=atol, t_eval=t_eval,
-            events=reversal, max_step=max_step,
-        )
-        return sol.t, sol.y, np.asarray(sol.t_events[0]), sol.status, sol.message, sol.nfev
+        sol = solve_ivp(fun, (r.t0, r.t1), r.y0, method=scipy_method, rtol=r.rtol, atol=r.atol, t_eval=r.t_eval,
+                        events=reversal, max_step=r.max_step)
+        outcome = Status.SUCCESS if sol.status >= 0 else Status.STEP_SIZE_UNDERFLOW
+        nsteps = len(sol.t) - 1 if r.t_eval is None else -1
+        return sol.t, sol.y, np.asarray(sol.t_events[0]), outcome, sol.nfev, nsteps, 0
 
     return run
 
 
+for _m in COMPILED_METHODS:
+    METHODS[_m] = _run_compiled(_m)
+for _alias in ALIASES:
+    METHODS[_alias] = _run_compiled(_alias)
 for _m in SCIPY_METHODS:
     METHODS[f"scipy:{_m}"] = _run_scipy(_m)
-    METHODS[_m] = METHODS[f"scipy:{_m}"]
 
 
 def _check_t_span(t_span) -> tuple:
@@ -110,13 +174,37 @@ def _check_t_span(t_span) -> tuple:
     return t0, t1
 
 
-def _check_tol(v, name: str) -> float:
+def _check_positive(v, name: str) -> float:
     if isinstance(v, bool) or not isinstance(v, (int, float, np.integer, np.floating)):
         raise TypeError(f"`{name}` must be a positive number, got {v!r}")
     v = float(v)
     if not (math.isfinite(v) and v > 0):
         raise ValueError(f"`{name}` must be positive and finite, got {v!r}")
     return v
+
+
+def _check_atol(atol, n: int) -> np.ndarray:
+    if isinstance(atol, (bool, str)):
+        raise TypeError(f"`atol` must be a positive number or an array of shape ({n},), got {atol!r}")
+    try:
+        arr = np.asarray(atol, dtype=float)
+    except (TypeError, ValueError):
+        raise TypeError(f"`atol` must be a positive number or an array of shape ({n},), got {atol!r}") from None
+    if arr.ndim == 0:
+        arr = np.full(n, float(arr))
+    if arr.shape != (n,):
+        raise ValueError(f"`atol` must be a number or have shape ({n},) (one per state), got shape {arr.shape}")
+    if not np.all(np.isfinite(arr) & (arr > 0)):
+        raise ValueError(f"`atol` must be positive and finite, got {atol!r}")
+    return np.ascontiguousarray(arr)
+
+
+def _check_max_steps(v) -> int:
+    if isinstance(v, bool) or not isinstance(v, (int, np.integer)):
+        raise TypeError(f"`max_steps` must be a positive integer, got {v!r}")
+    if v < 1:
+        raise ValueError(f"`max_steps` must be a positive integer, got {v!r}")
+    return int(v)
 
 
 def simulate(
@@ -126,9 +214,13 @@ def simulate(
     p,
     method: str = "DOP853",
     rtol: float = 1e-10,
-    atol: float = 1e-12,
+    atol=1e-12,
     t_eval=None,
     max_step: float = math.inf,
+    *,
+    h: float | None = None,
+    max_steps: int = 1_000_000,
+    error_control: str = "component",
 ) -> SimulationResult:
     """Integrate ``model`` from ``y0`` over ``t_span`` with parameters ``p``.
 
@@ -138,10 +230,26 @@ def simulate(
     y0 : array of shape (n_state,) or mapping of state names to values.
     t_span : (t0, t1) with t1 > t0, in units of the parameters' time.
     p : parameter array (from ``model.params``) or mapping of names to values.
-    method : one of :data:`METHODS` (``"scipy:DOP853"`` etc.).
-    rtol, atol : positive tolerances.
-    t_eval : optional times at which to store the solution.
-    max_step : largest step (default unbounded).
+    method : one of :data:`METHODS`.  Adaptive compiled: ``"DOP853"``
+        (default), ``"DP54"`` (alias ``"RK45"``); fixed step (need ``h``):
+        ``"RK4"``, ``"implicit_midpoint"``, ``"gauss4"``, ``"gauss6"``;
+        SciPy: ``"scipy:RK45"``, ``"scipy:DOP853"``, ``"scipy:LSODA"``,
+        ``"scipy:Radau"``.
+    rtol : relative tolerance, at least ``MIN_RTOL`` (100 machine epsilons).
+    atol : absolute tolerance, a number or one per state (shape (n_state,)).
+        For the Gauss methods it is the floor of the scale of the stage
+        solver's convergence test.
+    t_eval : optional increasing times in ``t_span`` at which to store the
+        solution (interpolated); by default every step is stored.
+    max_step : largest step of an adaptive method (default unbounded).
+    h : step of a fixed-step method (required for them, refused by the
+        others); the run uses ``(t1 - t0) / ceil((t1 - t0) / h)``.
+    max_steps : accepted steps allowed before the run stops with
+        ``Status.MAX_STEPS`` (compiled methods).
+    error_control : ``"component"`` -- each state on its own magnitude (as
+        SciPy); ``"mode"`` -- a tilt and its rate share the larger of their
+        magnitudes, so a small oscillation mode is controlled relative to
+        its amplitude (use with a small ``atol``).  Compiled adaptive methods.
 
     Returns
     -------
@@ -154,24 +262,45 @@ def simulate(
     y0 = model.check_state(y0)
     p = model.check_params(p)
     t0, t1 = _check_t_span(t_span)
-    rtol, atol = _check_tol(rtol, "rtol"), _check_tol(atol, "atol")
+    rtol = _check_positive(rtol, "rtol")
+    if rtol < MIN_RTOL:
+        raise ValueError(f"`rtol` must be at least {MIN_RTOL:.3g} (100 machine epsilons): below it round-off "
+                         f"dominates the error estimate; got {rtol!r}")
+    atol = _check_atol(atol, model.n_state)
     if t_eval is not None:
         t_eval = np.asarray(t_eval, dtype=float)
         if t_eval.ndim != 1 or not np.all(np.isfinite(t_eval)) or np.any(np.diff(t_eval) <= 0) \
                 or (t_eval.size and (t_eval[0] < t0 or t_eval[-1] > t1)):
             raise ValueError("`t_eval` must be a finite, strictly increasing 1-D array inside `t_span`")
-    max_step = _check_tol(max_step, "max_step") if max_step != math.inf else math.inf
+    max_step = _check_positive(max_step, "max_step") if max_step != math.inf else math.inf
+    spec = COMPILED_METHODS.get(ALIASES.get(method, method))
+    fixed = spec is not None and spec.fixed_step
+    if fixed and h is None:
+        raise ValueError(f"method {method!r} has a fixed step: pass the step `h`")
+    if not fixed and h is not None:
+        raise ValueError(f"`h` is the step of a fixed-step method; {method!r} chooses its own steps (use `rtol`)")
+    if h is not None:
+        h = _check_positive(h, "h")
+    max_steps = _check_max_steps(max_steps)
+    if error_control not in ERROR_CONTROLS:
+        raise ValueError(f"unknown `error_control` {error_control!r}; accepted: {', '.join(ERROR_CONTROLS)}")
+    if error_control != "component" and (spec is None or fixed):
+        raise ValueError(f"`error_control={error_control!r}` needs a compiled adaptive method, not {method!r}")
 
-    t, y, rev, status, message, nfev = METHODS[method](model, y0, (t0, t1), p, rtol, atol, t_eval, max_step)
+    run = _Run(model, y0, t0, t1, p, rtol, atol, t_eval, max_step, h, max_steps, error_control)
+    t, y, rev, outcome, nfev, nsteps, nrej = METHODS[method](run)
     t, y = np.asarray(t), np.asarray(y)
     finite = np.all(np.isfinite(y), axis=0)
-    if not np.all(finite):
+    if not np.all(finite):  # SciPy methods accept non-finite states; cut them off and say so
         bad = int(np.argmin(finite))
         t, y = t[:bad], y[:, :bad]
         rev = rev[rev <= (t[-1] if t.size else t0)]
-        status, message = -3, f"The state became non-finite near t = {t[-1] if t.size else t0:.6g}; the step was rejected."
+        outcome = Status.NON_FINITE
+    message = outcome.value
+    if outcome is Status.NON_FINITE and t.size:
+        message = f"{message} Last good state at t = {t[-1]:.6g}."
     return SimulationResult(
         t=t, y=y, state_names=model.state_names, reversal_times=np.asarray(rev, dtype=float),
-        success=status >= 0, status=int(status), message=str(message), nfev=int(nfev), method=method,
-        model=model, p=p,
+        success=outcome.success, status=outcome.code, message=message, nfev=int(nfev), method=method,
+        model=model, p=p, outcome=outcome, nsteps=int(nsteps), nrejected=int(nrej),
     )

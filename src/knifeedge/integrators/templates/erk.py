@@ -1,0 +1,270 @@
+"""Adaptive embedded explicit Runge--Kutta kernel: DOP853 and Dormand--Prince 5(4).
+
+The algorithm is the one of SciPy's ``solve_ivp`` (``DOP853`` and ``RK45``):
+same tableaus, initial step (Hairer, Norsett & Wanner I, Sect. II.4), error
+norms and step-size controller (safety 0.9, factors in [0.2, 10], no increase
+right after a rejection), so the two agree step for step up to round-off.
+
+Error control: ``scale_i = atol_i + rtol * max(|y_i|, |y_new_i|)``.  With
+``mode_scaled`` the magnitude of a component is taken as the larger of itself
+and its partner ``pair[i]`` (a tilt and its rate), i.e. each oscillation
+mode is measured on its own amplitude rather than through its zero crossings.
+"""
+import numpy as np
+from numba import njit
+
+from knifeedge.integrators import common as _c
+from knifeedge.integrators import dop853_tableau as _t8
+from knifeedge.integrators import rk_tableaus as _t5
+from knifeedge.integrators.templates._stub import rhs_into as _rhs  # knifeedge:rhs
+
+VARIANT = 0  # knifeedge:variant  (0: DOP853, 1: Dormand--Prince 5(4))
+
+if VARIANT == 0:
+    N_STAGES = 12
+    N_EXT = 16
+    A = _t8.A.copy()
+    C = _t8.C.copy()
+    E3 = _t8.E3.copy()
+    E5 = _t8.E5.copy()
+    DD = _t8.D.copy()
+    P = np.zeros((1, 1))
+    ERROR_ORDER = 7
+    DENSE_KIND = _c.DENSE_DOP853
+    DENSE_ROWS = 7
+else:
+    N_STAGES = 6
+    N_EXT = 7
+    A = np.zeros((7, 7))
+    A[:6, :5] = _t5.DP54_A
+    A[6, :6] = _t5.DP54_B
+    C = np.zeros(7)
+    C[:6] = _t5.DP54_C
+    C[6] = 1.0
+    E3 = np.zeros(7)
+    E5 = _t5.DP54_E.copy()
+    DD = np.zeros((1, 1))
+    P = _t5.DP54_P.copy()
+    ERROR_ORDER = 4
+    DENSE_KIND = _c.DENSE_POWER
+    DENSE_ROWS = 4
+ERROR_EXPONENT = -1.0 / (ERROR_ORDER + 1)
+SAFETY = 0.9
+MIN_FACTOR = 0.2
+MAX_FACTOR = 10.0
+
+
+@njit(cache=True)
+def _rms(v):
+    s = 0.0
+    for x in v:
+        s += x * x
+    return np.sqrt(s / v.size)
+
+
+@njit(cache=True)
+def _scale(y, y_new, rtol, atol, pair, mode_scaled, out):
+    for i in range(y.size):
+        m = max(abs(y[i]), abs(y_new[i]))
+        if mode_scaled and pair[i] >= 0:
+            j = pair[i]
+            m = max(m, abs(y[j]), abs(y_new[j]))
+        out[i] = atol[i] + rtol * m
+
+
+@njit(cache=True)
+def initial_step(t0, y0, f0, p, t1, max_step, rtol, atol, work):
+    """Hairer, Norsett & Wanner I, Sect. II.4 (as SciPy's ``select_initial_step``); one rhs call."""
+    n = y0.size
+    interval = abs(t1 - t0)
+    d0 = 0.0
+    d1 = 0.0
+    for i in range(n):
+        sc = atol[i] + abs(y0[i]) * rtol
+        d0 += (y0[i] / sc) ** 2
+        d1 += (f0[i] / sc) ** 2
+    d0 = np.sqrt(d0 / n)
+    d1 = np.sqrt(d1 / n)
+    h0 = 1e-6 if (d0 < 1e-5 or d1 < 1e-5) else 0.01 * d0 / d1
+    h0 = min(h0, interval)
+    y1 = y0 + h0 * f0
+    _rhs(t0 + h0, y1, p, work)
+    d2 = 0.0
+    for i in range(n):
+        sc = atol[i] + abs(y0[i]) * rtol
+        d2 += ((work[i] - f0[i]) / sc) ** 2
+    d2 = np.sqrt(d2 / n) / h0
+    if d1 <= 1e-15 and d2 <= 1e-15:
+        h1 = max(1e-6, h0 * 1e-3)
+    else:
+        h1 = (0.01 / max(d1, d2)) ** (1.0 / (ERROR_ORDER + 1))
+    return min(100 * h0, h1, interval, max_step)
+
+
+@njit(cache=True)
+def _stage_state(K, s, y, h, out):
+    for i in range(y.size):
+        acc = 0.0
+        for j in range(s):
+            a = A[s, j]
+            if a != 0.0:
+                acc += a * K[j, i]
+        out[i] = y[i] + h * acc
+
+
+@njit(cache=True)
+def _error_norm(K, h, scale, work5, work3):
+    n = scale.size
+    for i in range(n):
+        e5 = 0.0
+        e3 = 0.0
+        for j in range(N_STAGES + 1):
+            e5 += E5[j] * K[j, i]
+            e3 += E3[j] * K[j, i]
+        work5[i] = e5 / scale[i]
+        work3[i] = e3 / scale[i]
+    if VARIANT == 0:
+        n5 = 0.0
+        n3 = 0.0
+        for i in range(n):
+            n5 += work5[i] * work5[i]
+            n3 += work3[i] * work3[i]
+        if n5 == 0.0 and n3 == 0.0:
+            return 0.0
+        return abs(h) * n5 / np.sqrt((n5 + 0.01 * n3) * n)
+    return abs(h) * _rms(work5)
+
+
+@njit(cache=True)
+def _dense(K, y_old, y_new, t_old, h, p, F, work):
+    """Interpolant coefficients of the accepted step; returns the rhs calls it made."""
+    n = y_old.size
+    if VARIANT == 0:
+        for s in range(N_STAGES + 1, N_EXT):
+            _stage_state(K, s, y_old, h, work)
+            _rhs(t_old + C[s] * h, work, p, K[s])
+        for i in range(n):
+            dy = y_new[i] - y_old[i]
+            F[0, i] = dy
+            F[1, i] = h * K[0, i] - dy
+            F[2, i] = 2.0 * dy - h * (K[N_STAGES, i] + K[0, i])
+            for r in range(4):
+                acc = 0.0
+                for j in range(N_EXT):
+                    acc += DD[r, j] * K[j, i]
+                F[3 + r, i] = h * acc
+        return N_EXT - N_STAGES - 1
+    for i in range(n):
+        for r in range(4):
+            acc = 0.0
+            for j in range(N_EXT):
+                acc += K[j, i] * P[j, r]
+            F[r, i] = h * acc
+    return 0
+
+
+@njit(cache=True)
+def solve(t0, t1, y0, p, rtol, atol, h_init, max_step, t_eval, every, spin, max_steps, pair, mode_scaled):
+    """Integrate from ``t0`` to ``t1 > t0``.
+
+    Parameters
+    ----------
+    y0 : (n,) initial state; p : parameters of the right-hand side.
+    rtol : float; atol : (n,) absolute tolerances.
+    h_init : first step, or 0 to choose it.  max_step : largest step.
+    t_eval : (m,) increasing output times in [t0, t1] (used when not ``every``).
+    every : store every accepted step (and t0) instead of ``t_eval``.
+    spin : component whose zero crossings are recorded (< 0: none).
+    max_steps : accepted steps allowed.
+    pair : (n,) int, partner component for ``mode_scaled`` error control (-1: none).
+
+    Returns
+    -------
+    ts (k,), ys (k, n), ev (e,), status code, nfev, accepted steps, rejected steps
+    """
+    n = y0.size
+    K = np.empty((N_EXT, n))
+    y = y0.copy()
+    y_new = np.empty(n)
+    work = np.empty(n)
+    work3 = np.empty(n)
+    scale = np.empty(n)
+    F = np.empty((DENSE_ROWS, n))
+    cap = 64 if every else max(t_eval.size, 1)
+    ts = np.empty(cap)
+    ys = np.empty((cap, n))
+    n_out = 0
+    ev = np.empty(8)
+    n_ev = 0
+    ie = 0
+    if every:
+        ts, ys, n_out = _c.push_row(ts, ys, n_out, t0, y)
+    else:
+        while ie < t_eval.size and t_eval[ie] <= t0:
+            ts, ys, n_out = _c.push_row(ts, ys, n_out, t_eval[ie], y)
+            ie += 1
+    _rhs(t0, y, p, K[0])
+    nfev = 1
+    if h_init > 0.0:
+        h_abs = h_init
+    else:
+        h_abs = initial_step(t0, y, K[0], p, t1, max_step, rtol, atol, work)
+        nfev += 1
+    t = t0
+    status = 0
+    n_acc = 0
+    n_rej = 0
+    while t < t1:
+        if n_acc >= max_steps:
+            status = -2
+            break
+        min_step = 10.0 * abs(np.nextafter(t, np.inf) - t)
+        if h_abs > max_step:
+            h_abs = max_step
+        elif h_abs < min_step:
+            h_abs = min_step
+        rejected = False
+        while True:
+            if h_abs < min_step:
+                status = -1
+                break
+            t_new = t + h_abs
+            if t_new > t1:
+                t_new = t1
+            h = t_new - t
+            h_abs = abs(h)
+            for s in range(1, N_STAGES):
+                _stage_state(K, s, y, h, work)
+                _rhs(t + C[s] * h, work, p, K[s])
+            _stage_state(K, N_STAGES, y, h, y_new)
+            _rhs(t_new, y_new, p, K[N_STAGES])
+            nfev += N_STAGES
+            _scale(y, y_new, rtol, atol, pair, mode_scaled, scale)
+            err = _error_norm(K, h, scale, work, work3)
+            if err < 1.0:
+                if err == 0.0:
+                    factor = MAX_FACTOR
+                else:
+                    factor = min(MAX_FACTOR, SAFETY * err ** ERROR_EXPONENT)
+                if rejected:
+                    factor = min(1.0, factor)
+                h_abs *= factor
+                break
+            if not np.isfinite(err):
+                h_abs *= MIN_FACTOR
+            else:
+                h_abs *= max(MIN_FACTOR, SAFETY * err ** ERROR_EXPONENT)
+            rejected = True
+            n_rej += 1
+        if status != 0:
+            break
+        n_acc += 1
+        if _c.needs_dense(spin, y, y_new, t_eval, ie, t_new):
+            nfev += _dense(K, y, y_new, t, h, p, F, work)
+        ie, ts, ys, n_out, ev, n_ev = _c.record_step(
+            DENSE_KIND, F, y, y_new, t, t_new, spin, t_eval, ie, every, ts, ys, n_out, ev, n_ev, work
+        )
+        y[:] = y_new
+        K[0, :] = K[N_STAGES, :]
+        t = t_new
+    return ts[:n_out].copy(), ys[:n_out].copy(), ev[:n_ev].copy(), status, nfev, n_acc, n_rej

@@ -1,0 +1,212 @@
+"""Fixed-step kernel: classical RK4 and the Gauss--Legendre collocation methods.
+
+``VARIANT`` 0 is the classical Runge--Kutta method of order 4; 1, 2, 3 are the
+Gauss--Legendre methods with that many stages (orders 2, 4, 6; one stage is
+the implicit midpoint rule).  Gauss methods are symmetric, hence
+time-reversible, and keep quadratic invariants exactly; their stage
+equations are solved by fixed-point iteration to round-off, started from the
+previous step's collocation polynomial.
+
+The step is ``h = (t1 - t0) / N`` with ``N = ceil((t1 - t0) / h_req)``, so the
+grid ends on ``t1``.  The state update uses compensated (Kahan) summation, so
+round-off does not accumulate as a random walk over long runs.  Dense output
+(events, output times) is the cubic Hermite interpolant of each step.
+"""
+import math
+
+import numpy as np
+from numba import njit
+
+from knifeedge.integrators import common as _c
+from knifeedge.integrators import rk_tableaus as _tb
+from knifeedge.integrators.templates._stub import rhs_into as _rhs  # knifeedge:rhs
+
+VARIANT = 0  # knifeedge:variant  (0: RK4; s = 1, 2, 3: Gauss--Legendre with s stages)
+
+if VARIANT == 0:
+    S = 4
+    GA = np.zeros((1, 1))
+    GB = _tb.RK4_B.copy()
+    GC = _tb.RK4_C.copy()
+else:
+    S = VARIANT
+    GA = _tb.GAUSS[VARIANT][0].copy()
+    GB = _tb.GAUSS[VARIANT][1].copy()
+    GC = _tb.GAUSS[VARIANT][2].copy()
+
+
+def _extrapolation_matrix():
+    """``X[i, j]``: Lagrange basis polynomial j on the nodes ``GC`` evaluated at ``1 + GC[i]``."""
+    s = GC.size
+    X = np.ones((s, s))
+    for i in range(s):
+        for j in range(s):
+            for k in range(s):
+                if k != j:
+                    X[i, j] *= (1.0 + GC[i] - GC[k]) / (GC[j] - GC[k])
+    return X
+
+
+EXTRAP = _extrapolation_matrix() if VARIANT > 0 else np.zeros((1, 1))
+MAX_ITER = 60
+_EPS = 2.220446049250313e-16
+
+
+@njit(cache=True)
+def _rk4_increment(t, y, h, p, f0, K, work, dy):
+    for i in range(y.size):
+        work[i] = y[i] + 0.5 * h * f0[i]
+    _rhs(t + 0.5 * h, work, p, K[1])
+    for i in range(y.size):
+        work[i] = y[i] + 0.5 * h * K[1, i]
+    _rhs(t + 0.5 * h, work, p, K[2])
+    for i in range(y.size):
+        work[i] = y[i] + h * K[2, i]
+    _rhs(t + h, work, p, K[3])
+    for i in range(y.size):
+        dy[i] = h / 6.0 * (f0[i] + 2.0 * K[1, i] + 2.0 * K[2, i] + K[3, i])
+    return 3
+
+
+@njit(cache=True)
+def _gauss_increment(t, y, h, p, scale, Z, Znew, work, dy):
+    """Solve the stage equations by fixed-point iteration; returns (rhs calls, converged).
+
+    The iteration stops when the largest change of a stage increment, relative
+    to ``scale``, is a few ulps or has stopped decreasing below 1e-8 (round-off
+    reached); it fails when that change grows above 1e-8, becomes non-finite,
+    or ``MAX_ITER`` iterations pass.
+    """
+    n = y.size
+    nfev = 0
+    dprev = np.inf
+    for it in range(MAX_ITER):
+        for k in range(S):
+            for i in range(n):
+                acc = 0.0
+                for j in range(S):
+                    acc += GA[k, j] * Z[j, i]
+                work[i] = y[i] + h * acc
+            _rhs(t + GC[k] * h, work, p, Znew[k])
+        nfev += S
+        d = 0.0
+        for k in range(S):
+            for i in range(n):
+                r = abs(h * (Znew[k, i] - Z[k, i])) / scale[i]
+                if not (r <= d):
+                    d = r
+                Z[k, i] = Znew[k, i]
+        if not np.isfinite(d):
+            return nfev, False
+        if d <= 4.0 * _EPS or (d >= dprev and d <= 1e-8):
+            for i in range(n):
+                acc = 0.0
+                for k in range(S):
+                    acc += GB[k] * Z[k, i]
+                dy[i] = h * acc
+            return nfev, True
+        if d >= dprev and it >= 2:
+            return nfev, False
+        dprev = d
+    return nfev, False
+
+
+@njit(cache=True)
+def _solver_scale(y, atol, pair, out):
+    """Scale of the stage solver's test: a component's magnitude, or its mode partner's if larger, or atol."""
+    for i in range(y.size):
+        m = abs(y[i])
+        if pair[i] >= 0:
+            m = max(m, abs(y[pair[i]]))
+        out[i] = max(m, atol[i])
+
+
+@njit(cache=True)
+def solve(t0, t1, y0, p, h_req, atol, t_eval, every, spin, max_steps, pair):
+    """Integrate from ``t0`` to ``t1 > t0`` with steps of at most ``h_req``.
+
+    ``atol`` (n,) is the floor of the scale of the implicit solver's
+    convergence test and ``pair`` (n,) the mode partner of each component
+    (-1: none) whose magnitude also sets it (Gauss only).  Other arguments and the returned tuple
+    are as for the adaptive kernel (rejected steps are always 0).
+    """
+    n = y0.size
+    N = max(1, int(math.ceil((t1 - t0) / h_req)))
+    h = (t1 - t0) / N
+    y = y0.copy()
+    y_new = np.empty(n)
+    dy = np.empty(n)
+    comp = np.zeros(n)
+    comp_trial = np.zeros(n)
+    scale = np.empty(n)
+    work = np.empty(n)
+    f_old = np.empty(n)
+    f_new = np.empty(n)
+    K = np.empty((4, n))
+    Z = np.empty((S, n))
+    Znew = np.empty((S, n))
+    F = np.empty((3, n))
+    cap = 64 if every else max(t_eval.size, 1)
+    ts = np.empty(cap)
+    ys = np.empty((cap, n))
+    n_out = 0
+    ev = np.empty(8)
+    n_ev = 0
+    ie = 0
+    if every:
+        ts, ys, n_out = _c.push_row(ts, ys, n_out, t0, y)
+    else:
+        while ie < t_eval.size and t_eval[ie] <= t0:
+            ts, ys, n_out = _c.push_row(ts, ys, n_out, t_eval[ie], y)
+            ie += 1
+    _rhs(t0, y, p, f_old)
+    nfev = 1
+    for k in range(S):
+        Z[k, :] = f_old
+    status = 0
+    n_acc = 0
+    t = t0
+    for step in range(1, N + 1):
+        if n_acc >= max_steps:
+            status = -2
+            break
+        t_new = t1 if step == N else t0 + step * h
+        if VARIANT == 0:
+            nfev += _rk4_increment(t, y, h, p, f_old, K, work, dy)
+        else:
+            _solver_scale(y, atol, pair, scale)
+            calls, ok = _gauss_increment(t, y, h, p, scale, Z, Znew, work, dy)
+            nfev += calls
+            if not ok:
+                status = -4
+                break
+        comp_trial[:] = comp
+        _c.compensated_add(y, dy, comp_trial, y_new)
+        if not _c.all_finite(y_new):
+            status = -3
+            break
+        _rhs(t_new, y_new, p, f_new)
+        nfev += 1
+        if not _c.all_finite(f_new):
+            status = -3
+            break
+        comp[:] = comp_trial
+        n_acc += 1
+        if _c.needs_dense(spin, y, y_new, t_eval, ie, t_new):
+            _c.hermite_coefficients(y, y_new, f_old, f_new, t_new - t, F)
+        ie, ts, ys, n_out, ev, n_ev = _c.record_step(
+            _c.DENSE_POWER, F, y, y_new, t, t_new, spin, t_eval, ie, every, ts, ys, n_out, ev, n_ev, work
+        )
+        if VARIANT > 0:
+            # start the next stage iteration from this step's collocation polynomial
+            for k in range(S):
+                for i in range(n):
+                    acc = 0.0
+                    for j in range(S):
+                        acc += EXTRAP[k, j] * Z[j, i]
+                    Znew[k, i] = acc
+            Z[:, :] = Znew
+        y[:] = y_new
+        f_old[:] = f_new
+        t = t_new
+    return ts[:n_out].copy(), ys[:n_out].copy(), ev[:n_ev].copy(), status, nfev, n_acc, 0
