@@ -18,7 +18,8 @@ from pathlib import Path
 import sympy as sp
 from sympy.printing.pycode import PythonCodePrinter
 
-from . import engine, models, truncation
+from . import averaging, engine, models, truncation
+from .averaging import AmplitudeSystem
 from .engine import ReducedSystem
 
 GENERATOR = "derivation/emit.py (make derive)"
@@ -36,6 +37,17 @@ class _Printer(PythonCodePrinter):
             return "(1.0/(" + "*".join([base] * -int(e)) + "))"
         return super()._print_Pow(expr, rational=rational)
 
+    def _print_Mul(self, expr):
+        # A single denominator printed by _print_Pow as a product needs parentheses:
+        # x/L**2 must print as x/(L*L), not x/L*L.
+        out = super()._print_Mul(expr)
+        den = [f for f in sp.Mul.make_args(expr) if f.is_Pow and f.exp.is_Rational and f.exp.is_negative]
+        if len(den) == 1 and den[0].exp.is_Integer and -4 <= int(den[0].exp) <= -2:
+            tail = "/" + self._print(sp.Pow(den[0].base, -den[0].exp, evaluate=False))
+            if out.endswith(tail):
+                out = out[: -len(tail)] + "/(" + tail[1:] + ")"
+        return out
+
     def _print_Rational(self, expr):
         return f"({float(expr.p)!r}/{float(expr.q)!r})"
 
@@ -52,6 +64,8 @@ def input_hash(spec: engine.ModelSpec, fidelity: str) -> str:
         sp.srepr(spec.lagrangian), *(sp.srepr(c) for c in spec.constraints),
         inspect.getsource(engine), inspect.getsource(truncation), inspect.getsource(models),
         Path(__file__).read_text(),
+        *((inspect.getsource(averaging),) if fidelity == "amplitude" else ()),
+        *(sp.srepr(e) for _, _, e in spec.quasi_velocities),
     ):
         h.update(part.encode())
         h.update(b"\0")
@@ -74,16 +88,19 @@ def _unpack(names, array, indent="    "):
     return [f"{indent}{n} = {array}[{i}]" for i, n in enumerate(names)]
 
 
-def _dims(name: str) -> str:
-    """Unit of a state or parameter, from :data:`derivation.models.DIMENSIONS`."""
-    length, time = models.DIMENSIONS[name]
+def _dims(name: str, extra: dict | None = None) -> str:
+    """Unit of a state or parameter, from :data:`derivation.models.DIMENSIONS` (or ``extra``)."""
+    length, time = (extra or {}).get(name) or models.DIMENSIONS[name]
     num = {0: "", 1: "length"}[length]
     if time < 0:
         return (num or "rad") + "/time" + ("^2" if time == -2 else "")
     return num or "rad"
 
 
-def module_source(system: ReducedSystem, fidelity: str) -> str:
+def module_source(system, fidelity: str) -> str:
+    """Source of the generated module of ``system`` (a reduced or an amplitude system)."""
+    if isinstance(system, AmplitudeSystem):
+        return amplitude_module_source(system, fidelity)
     spec = system.spec
     state = [str(s) for s in system.state]
     pose = [str(q) for q in spec.pose]
@@ -216,13 +233,151 @@ def multipliers(s, p):
 '''
 
 
+def _coefficient_block(name: str, exprs, params, doc: str) -> tuple[str, int]:
+    """A jitted ``name(p)`` returning the parameter-only expressions ``exprs`` as an array."""
+    lines, ops = _cse_block(list(exprs), [f"out[{i}]" for i in range(len(exprs))], set(params))
+    nl = "\n"
+    return f'''
+
+@njit(cache=True)
+def {name}(p):
+    """{doc} ({ops} operations)."""
+    out = np.empty({len(exprs)})
+{nl.join(_unpack([str(q) for q in params], "p"))}
+{nl.join(lines)}
+    return out
+''', ops
+
+
+def amplitude_module_source(system: AmplitudeSystem, fidelity: str) -> str:
+    """Source of an ``amplitude`` module: slow flow, invariants and its coefficients; no pose, no multipliers."""
+    spec = system.spec
+    state = [str(s) for s in system.state]
+    params = [str(p) for p in spec.params]
+    n, n_tilt = len(state), len(system.amplitudes)
+    allowed = set(system.state) | set(spec.params)
+    rhs_lines, rhs_ops = _cse_block(system.rates, [f"ds[{i}]" for i in range(n)], allowed)
+    inv_names = list(system.invariants)
+    inv_lines, inv_ops = _cse_block(list(system.invariants.values()), [f"out[{i}]" for i in range(len(inv_names))],
+                                    allowed)
+    energy_lines, energy_ops = _cse_block([system.energy], ["energy"], allowed)
+    freq_src, freq_ops = _coefficient_block(
+        "frequencies", system.frequencies, spec.params,
+        "Angular frequencies omega_i of the tilts " + ", ".join(map(str, system.tilts)) + " at zero spin")
+    extra_src, extra_ops = "", {}
+    if system.growth is not None:
+        spin = system.spin_amplitudes[0]
+        drive = sp.Poly(sp.expand(system.rates[n_tilt]), *system.amplitudes)
+        if drive.is_homogeneous and drive.total_degree() == 2 and all(
+                sum(1 for k in m if k) == 1 for m in drive.monoms()):
+            k_i = [sp.factor(drive.coeff_monomial(a**2)) for a in system.amplitudes]
+            src1, ops1 = _coefficient_block(
+                "growth_rates", system.growth, spec.params,
+                f"c_i in d(A_i)/dt = c_i {spin} A_i [dimensionless]")
+            src2, ops2 = _coefficient_block(
+                "drive_rates", k_i, spec.params,
+                f"k_i in d({spin})/dt = sum_i k_i A_i^2 [1/time^2]")
+            extra_src, extra_ops = src1 + src2, {"growth_rates": ops1, "drive_rates": ops2}
+    digest = input_hash(spec, fidelity)
+    dims = system.dimensions
+    state_doc = "\n".join(f"    s[{i}] = {nm:<12} [{_dims(nm, dims)}]" for i, nm in enumerate(state))
+    par_doc = "\n".join(f"    p[{i}] = {nm:<12} [{_dims(nm)}]" for i, nm in enumerate(params))
+    flow_doc = "\n".join(f"    d{nm}/dt = {r}" for nm, r in zip(state, system.rates))
+    inv_doc = "\n".join(f"    {k}: {v}" for k, v in system.invariants.items())
+    phase_doc = ", ".join(f"d(beta_{i + 1})/dt = {r}" for i, r in enumerate(system.phase_rates))
+    ops = {"rhs": rhs_ops, "energy": energy_ops, "invariants": inv_ops, "frequencies": freq_ops, **extra_ops}
+    nl = "\n"
+    return f'''"""{spec.name}, fidelity {fidelity}: first-order averaged slow flow of the reduced equations.
+
+GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
+Produced by {GENERATOR} from derivation/models.py (model {spec.name!r})
+through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
+SymPy {sp.__version__}; input hash sha256:{digest}
+
+{spec.description}
+
+Tilts theta_i = A_i cos(psi_i), theta_i_dot = -omega_i A_i sin(psi_i), averaged
+over independent fast phases psi_i, leading order in (spin rate)/omega.
+Averaged phase drifts: {phase_doc} (the phases do not enter the slow flow).
+
+State vector ``s``:
+{state_doc}
+Parameter vector ``p``:
+{par_doc}
+Slow flow:
+{flow_doc}
+Invariants (conserved by the slow flow):
+{inv_doc}
+No pose and no multipliers at this fidelity.
+"""
+import math
+
+import numpy as np
+from numba import njit
+
+MODEL = {spec.name!r}
+FIDELITY = {fidelity!r}
+STATE_NAMES = {tuple(state)!r}
+POSE_NAMES = ()
+PARAM_NAMES = {tuple(params)!r}
+TILT_NAMES = {tuple(str(a) for a in system.amplitudes)!r}
+#: the slow spin rate, whose zero crossings are the spin reversals
+SPIN_NAME = {str(system.spin_amplitudes[0])!r}
+MULTIPLIER_NAMES = ()
+#: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
+INVARIANT_NAMES = {tuple(inv_names)!r}
+INPUT_HASH = {digest!r}
+SYMPY_VERSION = {sp.__version__!r}
+#: floating-point operation counts of each function body (SymPy count_ops after CSE)
+OP_COUNTS = {ops!r}
+
+
+@njit(cache=True)
+def rhs_into(t, s, p, ds):
+    """Write d(state)/dt into ``ds`` ({rhs_ops} operations)."""
+{nl.join(_unpack(state, "s"))}
+{nl.join(_unpack(params, "p"))}
+{nl.join(rhs_lines)}
+
+
+@njit(cache=True)
+def rhs(t, s, p):
+    """Return d(state)/dt as a new array of length {n}."""
+    ds = np.empty({n})
+    rhs_into(t, s, p, ds)
+    return ds
+
+
+@njit(cache=True)
+def energy(s, p):
+    """Averaged energy per unit mass, a conserved quantity of the slow flow ({energy_ops} operations)."""
+{nl.join(_unpack(state, "s"))}
+{nl.join(_unpack(params, "p"))}
+{nl.join(energy_lines)}
+    return energy
+
+
+@njit(cache=True)
+def invariants(s, p):
+    """Conserved quantities {inv_names} ({inv_ops} operations)."""
+    out = np.empty({len(inv_names)})
+{nl.join(_unpack(state, "s"))}
+{nl.join(_unpack(params, "p"))}
+{nl.join(inv_lines)}
+    return out
+{freq_src}{extra_src}'''
+
+
 def build_all() -> dict:
     """Derive every model at every fidelity: ``{(model, fidelity): ReducedSystem}``."""
     out = {}
     for name in sorted(models.MODELS):
-        full = engine.derive(models.MODELS[name])
+        spec = models.MODELS[name]
+        full = engine.derive(spec)
         out[(name, "full")] = full
-        out[(name, "reduced")] = truncation.reduced(full)
+        if spec.small:
+            out[(name, "reduced")] = truncation.reduced(full)
+            out[(name, "amplitude")] = averaging.average(out[(name, "reduced")])
     return out
 
 

@@ -54,6 +54,13 @@ class ModelSpec:
     small : coordinates scaled as small in the ``reduced`` truncation (tilts).
     params : parameter symbols in the order of the parameter vector.
     pose : cyclic coordinates reported as the pose (order of ``POSE_NAMES``).
+    quasi_velocities : optional ``(symbol, replaced_velocity, expression)``
+        triples: a velocity of a cyclic independent coordinate is replaced in
+        the closed state by a quasi-velocity, ``expression`` linear in the
+        velocities with coefficients depending on the coordinates (for a
+        sleigh, the speed along its axis ``x_dot cos(phi) + y_dot sin(phi)``).
+        Needed when the independent velocities of the cyclic coordinates are
+        not invariant under the symmetry (translations in a body frame).
     """
 
     name: str
@@ -70,6 +77,7 @@ class ModelSpec:
     pose: tuple
     description: str = ""
     param_units: dict = field(default_factory=dict)
+    quasi_velocities: tuple = ()
 
     @property
     def independent(self) -> tuple:
@@ -82,13 +90,19 @@ class ModelSpec:
         return self.accelerations[self.coordinates.index(q)]
 
     @property
-    def state(self) -> tuple:
-        """Closed state: small coordinates, their rates, rates of cyclic independents."""
+    def velocity_state(self) -> tuple:
+        """Small coordinates, their rates, rates of cyclic independents (before quasi-velocities)."""
         tilts = tuple(q for q in self.independent if q not in self.cyclic)
         spins = tuple(q for q in self.independent if q in self.cyclic)
         return tilts + tuple(self.velocity_of(q) for q in tilts) + tuple(
             self.velocity_of(q) for q in spins
         )
+
+    @property
+    def state(self) -> tuple:
+        """Closed state: :attr:`velocity_state` with the quasi-velocities in place of the velocities they replace."""
+        replace_by = {old: new for new, old, _ in self.quasi_velocities}
+        return tuple(replace_by.get(s, s) for s in self.velocity_state)
 
 
 @dataclass
@@ -204,7 +218,7 @@ def derive(spec: ModelSpec) -> ReducedSystem:
     lam = (A_dep_inv.T * r_dep).applyfunc(sp.expand)  # multipliers, implicit in q_ddot_ind
     reduced = (r_ind - A_ind.T * lam).applyfunc(sp.expand)
 
-    variables = list(spec.state)
+    variables = list(spec.velocity_state)
     mass = reduced.jacobian(qdd_ind).applyfunc(lambda e: tidy(e, variables))
     forcing = (-reduced.subs({a: 0 for a in qdd_ind})).applyfunc(lambda e: tidy(e, variables))
     leftover = set().union(*(e.free_symbols for e in reduced)) & (
@@ -232,7 +246,7 @@ def derive(spec: ModelSpec) -> ReducedSystem:
 
     state = spec.state
     accelerations = tuple(qdd_ind)
-    return ReducedSystem(
+    system = ReducedSystem(
         spec=spec,
         state=state,
         accelerations=accelerations,
@@ -244,20 +258,85 @@ def derive(spec: ModelSpec) -> ReducedSystem:
         energy=energy,
         pose_rates=pose_rates,
     )
+    if spec.quasi_velocities:
+        system = _with_quasi_velocities(system, at, dep_vel, dep_acc, general)
+    return system
+
+
+def _quasi_rates(spec: ModelSpec, at: dict, dep_vel: dict, dep_acc: dict, acc_sub: dict) -> dict:
+    """``d(u)/dt`` of each quasi-velocity at the representative point, in the velocity state."""
+    q, qd = spec.coordinates, spec.velocities
+    out = {}
+    for u, _, expr in spec.quasi_velocities:
+        rate = sum((sp.diff(expr, v) * a for v, a in zip(qd, spec.accelerations)), sp.S.Zero)
+        rate += sum((sp.diff(expr, c) * v for c, v in zip(q, qd)), sp.S.Zero)
+        rate = sp.expand(rate.subs(at)).subs(dep_acc).subs(dep_vel).subs(acc_sub)
+        out[u] = sp.expand(rate)
+    return out
+
+
+def _solve_quasi(spec: ModelSpec, dep_vel: dict, at: dict | None = None) -> dict:
+    """Replaced velocities as functions of the quasi-velocities (at ``at`` if given, else at a general pose)."""
+    eqs, unknowns = [], []
+    for u, old, expr in spec.quasi_velocities:
+        e = expr.subs(at) if at else expr
+        eqs.append(sp.expand(e.subs(dep_vel)) - u)
+        unknowns.append(old)
+    sol = sp.solve(eqs, unknowns, dict=True)
+    if len(sol) != 1:
+        raise ValueError(f"{spec.name}: the quasi-velocities do not determine {unknowns} uniquely")
+    return {k: sp.factor(sp.trigsimp(v)) for k, v in sol[0].items()}
+
+
+def _with_quasi_velocities(system: ReducedSystem, at: dict, dep_vel: dict, dep_acc: dict,
+                           general: dict) -> ReducedSystem:
+    """Rewrite a reduced system on the quasi-velocities of its spec (see :class:`ModelSpec`)."""
+    spec = system.spec
+    variables = list(spec.state)
+    acc_sub = dict(zip(system.accelerations, system.explicit))
+    rates = _quasi_rates(spec, at, dep_vel, dep_acc, acc_sub)
+    back = _solve_quasi(spec, dep_vel, at)
+    new_acc = {old_a: sp.Symbol(f"{u}_dot", real=True) for u, old, _ in spec.quasi_velocities
+               for old_a in [spec.acceleration_of(spec.coordinates[spec.velocities.index(old)])]}
+    explicit = []
+    for a, e in zip(system.accelerations, system.explicit):
+        quasi = [u for u, old, _ in spec.quasi_velocities if spec.acceleration_of(
+            spec.coordinates[spec.velocities.index(old)]) == a]
+        e = rates[quasi[0]] if quasi else e
+        explicit.append(tidy(e.subs(back), variables))
+    explicit = sp.Matrix(explicit)
+    multipliers = system.multipliers.applyfunc(lambda e: tidy(e.subs(back), variables))
+    general_back = _solve_quasi(spec, general)
+    pose_rates = {q: sp.factor(sp.trigsimp(sp.expand(v.subs(general_back))))
+                  for q, v in system.pose_rates.items()}
+    return ReducedSystem(
+        spec=spec,
+        state=spec.state,
+        accelerations=tuple(new_acc.get(a, a) for a in system.accelerations),
+        mass_matrix=sp.eye(len(explicit)),
+        forcing=explicit,
+        explicit=explicit,
+        multipliers=multipliers,
+        multipliers_implicit=multipliers,
+        energy=tidy(system.energy.subs(back), variables),
+        pose_rates=pose_rates,
+    )
 
 
 def _random_point(symbols, rng: random.Random) -> dict:
     return {s: sp.Rational(rng.randint(-900, 900), 1000) for s in symbols}
 
 
-def unreduced_accelerations(spec: ModelSpec, values: dict) -> tuple:
+def unreduced_accelerations(spec: ModelSpec, values: dict, everything: bool = False) -> tuple:
     """Independent accelerations and multipliers from the full DAE at a numeric point.
 
     Solves ``[[M, -A^T], [A, 0]] [q_ddot, lambda] = [-h, -c]`` at the
     configuration ``values`` (which must fix every coordinate, including the
     cyclic ones, every parameter, and the independent velocities; the
     dependent velocities are taken from the constraints).  Used to test the
-    elimination and the symmetry assumption at arbitrary poses.
+    elimination and the symmetry assumption at arbitrary poses.  With
+    ``everything`` the first item holds every acceleration (in the order of
+    ``spec.accelerations``) and a third item the dependent velocities.
     """
     M, h, A, c = _lagrange_terms(spec)
     dep_vel = dependent_velocities(spec, at={k: v for k, v in values.items() if k in spec.coordinates})
@@ -272,6 +351,8 @@ def unreduced_accelerations(spec: ModelSpec, values: dict) -> tuple:
     with mpmath.workdps(30):
         sol = mpmath.lu_solve(mpmath.matrix(K.evalf(30).tolist()), mpmath.matrix(rhs.evalf(30).tolist()))
         sol = [sp.Float(v, 30) for v in sol]
+    if everything:
+        return sol[:n], list(sol[n:]), dep_vel
     ind = [spec.coordinates.index(q) for q in spec.independent]
     return [sol[i] for i in ind], list(sol[n:])
 
@@ -287,10 +368,29 @@ def check_symmetry(system: ReducedSystem, seed: int = 0, tol: float = 1e-20) -> 
     rng = random.Random(seed)
     pt = _random_point(spec.coordinates + tuple(spec.velocity_of(q) for q in spec.independent), rng)
     pt.update({s: sp.Rational(rng.randint(300, 1500), 1000) for s in spec.params})
-    acc, lam = unreduced_accelerations(spec, pt)
+    if spec.quasi_velocities:
+        acc, lam, pt = _quasi_point(spec, pt)
+    else:
+        acc, lam = unreduced_accelerations(spec, pt)
     red_acc = [e.subs(pt).evalf(30) for e in system.explicit]
     red_lam = [e.subs(pt).evalf(30) for e in system.multipliers]
     err = max(abs(a - b) for a, b in zip(acc + lam, red_acc + red_lam))
     if err > tol:
         raise ValueError(f"{spec.name}: reduced equations differ from the unreduced ones at a general pose by {err}")
     return float(err)
+
+
+def _quasi_point(spec: ModelSpec, pt: dict) -> tuple:
+    """Unreduced quasi-velocity rates at a general pose; ``pt`` gains the quasi-velocity values."""
+    acc_all, lam, dep_vel = unreduced_accelerations(spec, pt, everything=True)
+    full_pt = {**pt, **dep_vel, **dict(zip(spec.accelerations, acc_all))}
+    out = dict(pt)
+    quasi_rate = {}
+    for u, old, expr in spec.quasi_velocities:
+        out[u] = expr.subs(full_pt).evalf(30)
+        rate = sum((sp.diff(expr, vel) * acc for vel, acc in zip(spec.velocities, spec.accelerations)), sp.S.Zero)
+        rate += sum((sp.diff(expr, c) * vel for c, vel in zip(spec.coordinates, spec.velocities)), sp.S.Zero)
+        quasi_rate[spec.acceleration_of(spec.coordinates[spec.velocities.index(old)])] = rate.subs(full_pt).evalf(30)
+    ind = [spec.coordinates.index(q) for q in spec.independent]
+    acc = [quasi_rate.get(spec.accelerations[i], acc_all[i]) for i in ind]
+    return acc, lam, out

@@ -110,4 +110,7 @@ def _two_mode() -> ModelSpec:
     )
 
 
-MODELS = {"single_mode": _single_mode(), "two_mode": _two_mode()}
+from .sleigh import DIMENSIONS as _SLEIGH_DIMENSIONS, chaplygin_sleigh  # noqa: E402
+
+DIMENSIONS.update(_SLEIGH_DIMENSIONS)
+MODELS = {"single_mode": _single_mode(), "two_mode": _two_mode(), "chaplygin_sleigh": chaplygin_sleigh()}

@@ -6,8 +6,11 @@ Produced by derivation/emit.py (make derive); SymPy 1.14.0.
 
 #: (model, fidelity) -> module name inside this package
 MODULES = {
+    ('chaplygin_sleigh', 'full'): 'chaplygin_sleigh_full',
+    ('single_mode', 'amplitude'): 'single_mode_amplitude',
     ('single_mode', 'full'): 'single_mode_full',
     ('single_mode', 'reduced'): 'single_mode_reduced',
+    ('two_mode', 'amplitude'): 'two_mode_amplitude',
     ('two_mode', 'full'): 'two_mode_full',
     ('two_mode', 'reduced'): 'two_mode_reduced',
 }

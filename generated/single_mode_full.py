@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:d608e1f54eca7eea84941feaad22e924be56e3e2978357ca6784350568e2c923
+SymPy 1.14.0; input hash sha256:a9857091bfd469c737490ac6d1a3591a66fb1348f54a11e7fa0a6e7be4f06860
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -37,7 +37,7 @@ TILT_NAMES = ('theta',)
 #: the spin rate, whose zero crossings are the spin reversals
 SPIN_NAME = "phi_dot"
 MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
-INPUT_HASH = 'd608e1f54eca7eea84941feaad22e924be56e3e2978357ca6784350568e2c923'
+INPUT_HASH = 'a9857091bfd469c737490ac6d1a3591a66fb1348f54a11e7fa0a6e7be4f06860'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {"rhs": 20, "rhs_pose": 27, "pose_rates": 7, "energy": 23, "multipliers": 7}

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:d0ac8b8f035240b4b0303b1e9242627226ea07c80883df1542be3e0a58e90b2c
+SymPy 1.14.0; input hash sha256:d0323514d096f17fef208d68c0f0b20cab745250bb34305892c85a2b474b71ea
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -40,7 +40,7 @@ TILT_NAMES = ('theta1', 'theta2')
 #: the spin rate, whose zero crossings are the spin reversals
 SPIN_NAME = "phi_dot"
 MULTIPLIER_NAMES = ('Const22', 'Const23')
-INPUT_HASH = 'd0ac8b8f035240b4b0303b1e9242627226ea07c80883df1542be3e0a58e90b2c'
+INPUT_HASH = 'd0323514d096f17fef208d68c0f0b20cab745250bb34305892c85a2b474b71ea'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {"rhs": 152, "rhs_pose": 166, "pose_rates": 13, "energy": 58, "multipliers": 166}

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py and derivation/truncation.py.
-SymPy 1.14.0; input hash sha256:04a4b9b888a9b172d90d0cc09b47aa1948428048d7d72bcb83435cc3c98af23e
+SymPy 1.14.0; input hash sha256:6db8ad1df61a861cfb605a385b8a0eb5b755ad592cab097441a1c4ec830d2455
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -40,7 +40,7 @@ TILT_NAMES = ('theta1', 'theta2')
 #: the spin rate, whose zero crossings are the spin reversals
 SPIN_NAME = "phi_dot"
 MULTIPLIER_NAMES = ('Const22', 'Const23')
-INPUT_HASH = '04a4b9b888a9b172d90d0cc09b47aa1948428048d7d72bcb83435cc3c98af23e'
+INPUT_HASH = '6db8ad1df61a861cfb605a385b8a0eb5b755ad592cab097441a1c4ec830d2455'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {"rhs": 80, "rhs_pose": 91, "pose_rates": 13, "energy": 58, "multipliers": 56}

@@ -48,6 +48,8 @@ class Model:
         self.pose = bool(pose)
         self.module = importlib.import_module(f"{__package__}.generated.{MODULES[(name, fidelity)]}")
         mod = self.module
+        if self.pose and not mod.POSE_NAMES:
+            raise ValueError(f"`pose=True` needs a model with a pose; {name} at fidelity {fidelity!r} has none")
         self.closed_state_names: tuple = mod.STATE_NAMES
         self.pose_names: tuple = mod.POSE_NAMES
         self.state_names: tuple = mod.STATE_NAMES + (mod.POSE_NAMES if self.pose else ())
@@ -160,6 +162,8 @@ class Model:
         ``y`` of shape (n_state,) gives shape (n_constraints,); (n_state, n_times)
         gives (n_constraints, n_times).
         """
+        if not self.multiplier_names:
+            raise ValueError(f"{self.name} at fidelity {self.fidelity!r} has no multipliers")
         y = np.asarray(y, dtype=float)
         p = np.asarray(p, dtype=float)
         if y.ndim == 1:
@@ -198,10 +202,14 @@ def load(name: str, fidelity: str = "full", pose: bool = False) -> Model:
 
     Parameters
     ----------
-    name : ``"single_mode"`` (paper section II) or ``"two_mode"`` (section III).
+    name : ``"single_mode"`` (paper section II), ``"two_mode"`` (section III) or
+        ``"chaplygin_sleigh"`` (the sleigh of section II.C, fidelity ``"full"`` only).
     fidelity : ``"full"`` (exact consequences of the paper's Lagrangian and
-        constraints) or ``"reduced"`` (small-angle truncation, the order of
-        the paper's ``FINAL1``/``FINAL2`` and ``eqs_2modes``).
+        constraints), ``"reduced"`` (small-angle truncation, the order of
+        the paper's ``FINAL1``/``FINAL2`` and ``eqs_2modes``) or
+        ``"amplitude"`` (the averaged slow flow of ``reduced``, paper
+        ``Chap3``: no pose, no multipliers; ``energy`` is its conserved
+        averaged energy).
     pose : append ``("phi", "x", "y")`` to the state; only scenes that look at
         the path on the table need it.
     """

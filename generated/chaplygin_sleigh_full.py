@@ -1,0 +1,125 @@
+"""chaplygin_sleigh, fidelity full: exact consequences of the paper's Lagrangian and constraints, nothing dropped.
+
+GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
+Produced by derivation/emit.py (make derive) from derivation/models.py (model 'chaplygin_sleigh',
+constraints knife_edge) through derivation/engine.py.
+SymPy 1.14.0; input hash sha256:bcd03e4c2c3c4747e1ca0b4945076faadc0fa8e67e93fad7327d057f437b73d0
+
+Chaplygin sleigh: a rigid body on the plane with a knife edge at its rear contact point (x, y) that forbids sideways motion; heading phi, centre of mass at distance a ahead of the contact, radius of gyration k about the centre of mass; v is the speed along the axis.
+
+State vector ``s`` (closed state; the pose follows by quadrature):
+    s[0] = v            [length/time]
+    s[1] = phi_dot      [rad/time]
+Pose-extended state (``*_pose`` functions) appends:
+    s[2] = phi          [rad]
+    s[3] = x            [length]
+    s[4] = y            [length]
+Parameter vector ``p``:
+    p[0] = a            [length]
+    p[1] = k            [length]
+Multipliers are per unit mass (the mass M cancels), in the order knife_edge.
+Energy is per unit mass.
+"""
+import math
+
+import numpy as np
+from numba import njit
+
+MODEL = 'chaplygin_sleigh'
+FIDELITY = 'full'
+STATE_NAMES = ('v', 'phi_dot')
+POSE_NAMES = ('phi', 'x', 'y')
+PARAM_NAMES = ('a', 'k')
+TILT_NAMES = ()
+#: the spin rate, whose zero crossings are the spin reversals
+SPIN_NAME = "phi_dot"
+MULTIPLIER_NAMES = ('knife_edge',)
+INPUT_HASH = 'bcd03e4c2c3c4747e1ca0b4945076faadc0fa8e67e93fad7327d057f437b73d0'
+SYMPY_VERSION = '1.14.0'
+#: floating-point operation counts of each function body (SymPy count_ops after CSE)
+OP_COUNTS = {"rhs": 9, "rhs_pose": 13, "pose_rates": 4, "energy": 9, "multipliers": 6}
+
+
+@njit(cache=True)
+def rhs_into(t, s, p, ds):
+    """Write d(state)/dt into ``ds`` (9 operations)."""
+    v = s[0]
+    phi_dot = s[1]
+    a = p[0]
+    k = p[1]
+    ds[0] = a*phi_dot*phi_dot
+    ds[1] = -a*phi_dot*v/(a*a + k*k)
+
+
+@njit(cache=True)
+def rhs(t, s, p):
+    """Return d(state)/dt as a new array of length 2."""
+    ds = np.empty(2)
+    rhs_into(t, s, p, ds)
+    return ds
+
+
+@njit(cache=True)
+def rhs_pose_into(t, s, p, ds):
+    """Write d(state, pose)/dt into ``ds`` (13 operations)."""
+    v = s[0]
+    phi_dot = s[1]
+    phi = s[2]
+    x = s[3]
+    y = s[4]
+    a = p[0]
+    k = p[1]
+    ds[0] = a*phi_dot*phi_dot
+    ds[1] = -a*phi_dot*v/(a*a + k*k)
+    ds[2] = phi_dot
+    ds[3] = v*math.cos(phi)
+    ds[4] = v*math.sin(phi)
+
+
+@njit(cache=True)
+def rhs_pose(t, s, p):
+    """Return d(state, pose)/dt as a new array of length 5."""
+    ds = np.empty(5)
+    rhs_pose_into(t, s, p, ds)
+    return ds
+
+
+@njit(cache=True)
+def pose_rates(s, p):
+    """Return (phi_dot, x_dot, y_dot) at the pose-extended state ``s`` (4 operations)."""
+    out = np.empty(3)
+    v = s[0]
+    phi_dot = s[1]
+    phi = s[2]
+    x = s[3]
+    y = s[4]
+    a = p[0]
+    k = p[1]
+    out[0] = phi_dot
+    out[1] = v*math.cos(phi)
+    out[2] = v*math.sin(phi)
+    return out
+
+
+@njit(cache=True)
+def energy(s, p):
+    """Energy per unit mass (9 operations)."""
+    v = s[0]
+    phi_dot = s[1]
+    a = p[0]
+    k = p[1]
+    energy = ((1.0/2.0))*phi_dot*phi_dot*(a*a + k*k) + ((1.0/2.0))*v*v
+    return energy
+
+
+@njit(cache=True)
+def multipliers(s, p):
+    """Lagrange multipliers (contact forces per unit mass) knife_edge (6 operations)."""
+    out = np.empty(1)
+    v = s[0]
+    phi_dot = s[1]
+    a = p[0]
+    k = p[1]
+    _c0 = k*k
+    out[0] = _c0*phi_dot*v/(_c0 + a*a)
+    return out

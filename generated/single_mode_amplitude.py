@@ -1,0 +1,133 @@
+"""single_mode, fidelity amplitude: first-order averaged slow flow of the reduced equations.
+
+GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
+Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode')
+through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
+SymPy 1.14.0; input hash sha256:674962c667da7217fa1ccccf1a9a950ea87fde480f4244a3c7677ea9a514bf1e
+
+Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
+
+Tilts theta_i = A_i cos(psi_i), theta_i_dot = -omega_i A_i sin(psi_i), averaged
+over independent fast phases psi_i, leading order in (spin rate)/omega.
+Averaged phase drifts: d(beta_1)/dt = 0 (the phases do not enter the slow flow).
+
+State vector ``s``:
+    s[0] = A_theta      [rad]
+    s[1] = A_phi        [rad/time]
+Parameter vector ``p``:
+    p[0] = g            [length/time^2]
+    p[1] = ell          [length]
+    p[2] = L            [length]
+    p[3] = D            [length]
+Slow flow:
+    dA_theta/dt = A_phi*A_theta*D/(2*ell)
+    dA_phi/dt = -A_theta**2*D*g/(2*L**2)
+Invariants (conserved by the slow flow):
+    energy: A_phi**2*L**2/2 + A_theta**2*ell*g/2
+No pose and no multipliers at this fidelity.
+"""
+import math
+
+import numpy as np
+from numba import njit
+
+MODEL = 'single_mode'
+FIDELITY = 'amplitude'
+STATE_NAMES = ('A_theta', 'A_phi')
+POSE_NAMES = ()
+PARAM_NAMES = ('g', 'ell', 'L', 'D')
+TILT_NAMES = ('A_theta',)
+#: the slow spin rate, whose zero crossings are the spin reversals
+SPIN_NAME = 'A_phi'
+MULTIPLIER_NAMES = ()
+#: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
+INVARIANT_NAMES = ('energy',)
+INPUT_HASH = '674962c667da7217fa1ccccf1a9a950ea87fde480f4244a3c7677ea9a514bf1e'
+SYMPY_VERSION = '1.14.0'
+#: floating-point operation counts of each function body (SymPy count_ops after CSE)
+OP_COUNTS = {'rhs': 10, 'energy': 9, 'invariants': 9, 'frequencies': 5, 'growth_rates': 2, 'drive_rates': 5}
+
+
+@njit(cache=True)
+def rhs_into(t, s, p, ds):
+    """Write d(state)/dt into ``ds`` (10 operations)."""
+    A_theta = s[0]
+    A_phi = s[1]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    _c0 = ((1.0/2.0))*D
+    ds[0] = A_phi*A_theta*_c0/ell
+    ds[1] = -A_theta*A_theta*_c0*g/(L*L)
+
+
+@njit(cache=True)
+def rhs(t, s, p):
+    """Return d(state)/dt as a new array of length 2."""
+    ds = np.empty(2)
+    rhs_into(t, s, p, ds)
+    return ds
+
+
+@njit(cache=True)
+def energy(s, p):
+    """Averaged energy per unit mass, a conserved quantity of the slow flow (9 operations)."""
+    A_theta = s[0]
+    A_phi = s[1]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    energy = ((1.0/2.0))*A_phi*A_phi*L*L + ((1.0/2.0))*A_theta*A_theta*ell*g
+    return energy
+
+
+@njit(cache=True)
+def invariants(s, p):
+    """Conserved quantities ['energy'] (9 operations)."""
+    out = np.empty(1)
+    A_theta = s[0]
+    A_phi = s[1]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    out[0] = ((1.0/2.0))*A_phi*A_phi*L*L + ((1.0/2.0))*A_theta*A_theta*ell*g
+    return out
+
+
+@njit(cache=True)
+def frequencies(p):
+    """Angular frequencies omega_i of the tilts theta at zero spin (5 operations)."""
+    out = np.empty(1)
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    out[0] = math.sqrt(g)/math.sqrt(ell)
+    return out
+
+
+@njit(cache=True)
+def growth_rates(p):
+    """c_i in d(A_i)/dt = c_i A_phi A_i [dimensionless] (2 operations)."""
+    out = np.empty(1)
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    out[0] = ((1.0/2.0))*D/ell
+    return out
+
+
+@njit(cache=True)
+def drive_rates(p):
+    """k_i in d(A_phi)/dt = sum_i k_i A_i^2 [1/time^2] (5 operations)."""
+    out = np.empty(1)
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    out[0] = -(1.0/2.0)*D*g/(L*L)
+    return out

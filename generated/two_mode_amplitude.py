@@ -1,0 +1,166 @@
+"""two_mode, fidelity amplitude: first-order averaged slow flow of the reduced equations.
+
+GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
+Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode')
+through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
+SymPy 1.14.0; input hash sha256:88ebdb97cda7fa885c77bc92825fdda2ecef377b0a703e7e2fb0a5e863a4eb47
+
+Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
+
+Tilts theta_i = A_i cos(psi_i), theta_i_dot = -omega_i A_i sin(psi_i), averaged
+over independent fast phases psi_i, leading order in (spin rate)/omega.
+Averaged phase drifts: d(beta_1)/dt = 0, d(beta_2)/dt = 0 (the phases do not enter the slow flow).
+
+State vector ``s``:
+    s[0] = A1           [rad]
+    s[1] = A2           [rad]
+    s[2] = A_phi        [rad/time]
+Parameter vector ``p``:
+    p[0] = g            [length/time^2]
+    p[1] = ell          [length]
+    p[2] = L            [length]
+    p[3] = D            [length]
+    p[4] = alpha        [rad]
+Slow flow:
+    dA1/dt = -A1*A_phi*D*sin(2*alpha)/(4*ell)
+    dA2/dt = A2*A_phi*D*ell*sin(2*alpha)/(4*(L**2 + ell**2))
+    dA_phi/dt = D*g*(A1**2*(L**2 + ell**2) - A2**2*ell**2)*sin(2*alpha)/(4*L**2*(L**2 + ell**2))
+Invariants (conserved by the slow flow):
+    energy: A1**2*ell*g/2 + A2**2*ell*g/2 + A_phi**2*L**2/2
+    log_A1_A2: ell**2*log(A1)/(L**2 + ell**2) + log(A2)
+No pose and no multipliers at this fidelity.
+"""
+import math
+
+import numpy as np
+from numba import njit
+
+MODEL = 'two_mode'
+FIDELITY = 'amplitude'
+STATE_NAMES = ('A1', 'A2', 'A_phi')
+POSE_NAMES = ()
+PARAM_NAMES = ('g', 'ell', 'L', 'D', 'alpha')
+TILT_NAMES = ('A1', 'A2')
+#: the slow spin rate, whose zero crossings are the spin reversals
+SPIN_NAME = 'A_phi'
+MULTIPLIER_NAMES = ()
+#: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
+INVARIANT_NAMES = ('energy', 'log_A1_A2')
+INPUT_HASH = '88ebdb97cda7fa885c77bc92825fdda2ecef377b0a703e7e2fb0a5e863a4eb47'
+SYMPY_VERSION = '1.14.0'
+#: floating-point operation counts of each function body (SymPy count_ops after CSE)
+OP_COUNTS = {'rhs': 24, 'energy': 12, 'invariants': 19, 'frequencies': 12, 'growth_rates': 11, 'drive_rates': 12}
+
+
+@njit(cache=True)
+def rhs_into(t, s, p, ds):
+    """Write d(state)/dt into ``ds`` (24 operations)."""
+    A1 = s[0]
+    A2 = s[1]
+    A_phi = s[2]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+    _c0 = ((1.0/4.0))*D*math.sin(2*alpha)
+    _c1 = A_phi*_c0
+    _c2 = L*L
+    _c3 = ell*ell
+    _c4 = _c2 + _c3
+    _c5 = (1.0/(_c4))
+    ds[0] = -A1*_c1/ell
+    ds[1] = A2*_c1*_c5*ell
+    ds[2] = _c0*_c5*g*(A1*A1*_c4 - A2*A2*_c3)/_c2
+
+
+@njit(cache=True)
+def rhs(t, s, p):
+    """Return d(state)/dt as a new array of length 3."""
+    ds = np.empty(3)
+    rhs_into(t, s, p, ds)
+    return ds
+
+
+@njit(cache=True)
+def energy(s, p):
+    """Averaged energy per unit mass, a conserved quantity of the slow flow (12 operations)."""
+    A1 = s[0]
+    A2 = s[1]
+    A_phi = s[2]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+    _c0 = ((1.0/2.0))*ell*g
+    energy = A1*A1*_c0 + A2*A2*_c0 + ((1.0/2.0))*A_phi*A_phi*L*L
+    return energy
+
+
+@njit(cache=True)
+def invariants(s, p):
+    """Conserved quantities ['energy', 'log_A1_A2'] (19 operations)."""
+    out = np.empty(2)
+    A1 = s[0]
+    A2 = s[1]
+    A_phi = s[2]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+    _c0 = ((1.0/2.0))*ell*g
+    _c1 = L*L
+    _c2 = ell*ell
+    out[0] = A1*A1*_c0 + A2*A2*_c0 + ((1.0/2.0))*A_phi*A_phi*_c1
+    out[1] = _c2*math.log(A1)/(_c1 + _c2) + math.log(A2)
+    return out
+
+
+@njit(cache=True)
+def frequencies(p):
+    """Angular frequencies omega_i of the tilts theta1, theta2 at zero spin (12 operations)."""
+    out = np.empty(2)
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+    _c0 = math.sqrt(ell)
+    _c1 = math.sqrt(g)
+    out[0] = _c1/_c0
+    out[1] = _c0*_c1/math.sqrt(L*L + ell*ell)
+    return out
+
+
+@njit(cache=True)
+def growth_rates(p):
+    """c_i in d(A_i)/dt = c_i A_phi A_i [dimensionless] (11 operations)."""
+    out = np.empty(2)
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+    _c0 = ((1.0/4.0))*D*math.sin(2*alpha)
+    out[0] = -_c0/ell
+    out[1] = _c0*ell/(L*L + ell*ell)
+    return out
+
+
+@njit(cache=True)
+def drive_rates(p):
+    """k_i in d(A_phi)/dt = sum_i k_i A_i^2 [1/time^2] (12 operations)."""
+    out = np.empty(2)
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+    _c0 = L*L
+    _c1 = ((1.0/4.0))*D*g*math.sin(2*alpha)/_c0
+    _c2 = ell*ell
+    out[0] = _c1
+    out[1] = -_c1*_c2/(_c0 + _c2)
+    return out
