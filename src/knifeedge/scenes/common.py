@@ -52,3 +52,11 @@ def fit_power_law(x, y) -> tuple:
     s2 = float(resid @ resid) / (n - 2)
     se = math.sqrt(s2 / float(((lx - lx.mean()) ** 2).sum()))
     return float(b), se, float(a)
+
+
+def label_log_ticks(ax, x) -> None:
+    """Label a log-scaled x axis at the data values only (no crowded minor labels)."""
+    from matplotlib.ticker import NullFormatter
+
+    ax.xaxis.set_minor_formatter(NullFormatter())
+    ax.set_xticks(list(x), [f"{v:g}" for v in x], fontsize=8)

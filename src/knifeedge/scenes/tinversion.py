@@ -18,7 +18,7 @@ import math
 import numpy as np
 
 from .base import Scene, SceneResult
-from .common import fit_power_law
+from .common import fit_power_law, label_log_ticks
 from .numerical2 import RUN as TWO_MODE_RUN
 
 RUN = TWO_MODE_RUN.with_(rtol=1e-10, atol=1e-14, n_eval=None, t_end=3600.0)
@@ -97,8 +97,6 @@ def compute(scene: Scene, progress) -> SceneResult:
 
 
 def draw(res: SceneResult, fig) -> None:
-    from matplotlib.ticker import NullFormatter
-
     axes = fig.subplots(1, 2)
     labels = {"phi_dot": (r"$\dot\phi_0\ [\sqrt{g/\ell}]$", "(a)  $D/\\ell=1/2$"),
               "D": (r"$D/\ell$", r"(b)  $\dot\phi_0=0.1\sqrt{g/\ell}$")}
@@ -112,8 +110,7 @@ def draw(res: SceneResult, fig) -> None:
         ax.loglog(xx, c / xx, "--", color="k", lw=1, label="exponent $-1$ (Eq. tr)")
         if np.all(np.isfinite(s["theory"])):
             ax.loglog(x, s["theory"], "x", color="C3", ms=8, label="amplitude model")
-        ax.xaxis.set_minor_formatter(NullFormatter())
-        ax.set_xticks(x, [f"{v:g}" for v in x], fontsize=8)
+        label_log_ticks(ax, x)
         ax.set_xlabel(labels[key][0])
         ax.set_title(labels[key][1], fontsize=10)
         ax.legend(fontsize=7)
