@@ -15,7 +15,8 @@ from .models import FIDELITIES, MODEL_NAMES, Model, load
 from .simulate import METHODS, SimulationResult, simulate
 from .scenes import RunSpec, Scene, get_scene as scene, scene_names
 from .sweep import SweepTable, sweep
+from .reversal import ReversalPrediction, reversal_time
 
 __version__ = "0.1.0"
 __all__ = ["load", "simulate", "Model", "SimulationResult", "METHODS", "MODEL_NAMES", "FIDELITIES",
-           "sweep", "SweepTable", "scene", "scene_names", "Scene", "RunSpec"]
+           "sweep", "SweepTable", "scene", "scene_names", "Scene", "RunSpec", "reversal_time", "ReversalPrediction"]
