@@ -171,9 +171,10 @@ class _Well:
         return val / self.cp
 
 
-def _floor_state(well: _Well, u_turn: float, grow_p: bool, floor: float) -> tuple[np.ndarray, float]:
-    """Log amplitudes ``(ln A_p, ln A_m)`` at a reversal, the growing mode raised to ``floor``."""
+def _floor_state(well: _Well, u_turn: float, grow_p: bool, floors: np.ndarray) -> tuple[np.ndarray, float]:
+    """Log amplitudes ``(ln A_1, ln A_2)`` at a reversal, the growing mode raised to its floor."""
     lp, lm = u_turn, well.ln_am(u_turn)
+    floor = floors[well.p] if grow_p else floors[well.m]
     lf = math.log(floor) if floor > 0 else -np.inf
     if grow_p and lp < lf:
         lp = lf
@@ -186,7 +187,7 @@ def _floor_state(well: _Well, u_turn: float, grow_p: bool, floor: float) -> tupl
     return out, well.E
 
 
-def _two_modes(c, w, amps, spin, background: float, n_intervals: int):
+def _two_modes(c, w, amps, spin, background: np.ndarray, n_intervals: int):
     if np.any(amps <= 0):
         raise ValueError("initial state `y0`: both tilt amplitudes must be nonzero for the two-mode theory")
     well = _Well(c, w, np.log(amps), spin)
@@ -232,9 +233,11 @@ def reversal_time(model: Model, p, y0, background: float = 0.0, n_intervals: int
         ``two_mode``) at any fidelity; ``y0`` is a state of that model.
     p : parameter array or mapping (``model.params``).
     y0 : initial state, shape (n_state,) or mapping of names to values.
-    background : floor ``epsilon >= 0`` (rad) on the tilt amplitudes: at
-        each reversal the mode that starts to grow starts from at least
-        ``epsilon``.  ``0`` gives the deterministic slow flow.
+    background : floor ``epsilon >= 0`` (rad) on the tilt amplitudes, one
+        number or one per tilt: at each reversal the mode that starts to grow
+        starts from at least its ``epsilon``.  ``0`` gives the deterministic
+        slow flow.  :func:`knifeedge.background.noise_floor` converts a
+        random forcing into this level.
     n_intervals : number of successive intervals to predict (>= 2).
 
     Returns
@@ -243,15 +246,21 @@ def reversal_time(model: Model, p, y0, background: float = 0.0, n_intervals: int
     """
     if not isinstance(model, Model):
         raise TypeError(f"`model` must be a knifeedge Model (from knifeedge.load), got {type(model).__name__}")
-    if isinstance(background, bool) or not isinstance(background, (int, float, np.integer, np.floating)) \
-            or not (math.isfinite(background) and background >= 0):
-        raise ValueError(f"`background` must be a finite number >= 0, got {background!r}")
+    try:
+        floors = np.asarray(background, dtype=float)
+    except (TypeError, ValueError):
+        raise TypeError(f"`background` must be a number or an array of numbers, got {background!r}") from None
+    if isinstance(background, bool) or floors.ndim > 1 or not np.all(np.isfinite(floors)) or np.any(floors < 0):
+        raise ValueError(f"`background` must be finite and >= 0 (a number or one per tilt), got {background!r}")
     if isinstance(n_intervals, bool) or not isinstance(n_intervals, (int, np.integer)) or n_intervals < 2:
         raise ValueError(f"`n_intervals` must be an integer >= 2, got {n_intervals!r}")
     mod = _amplitude_module(model)
     p = model.check_params(p)
     y0 = model.check_state(y0)
     amps, spin = initial_amplitudes(model, p, y0)
+    floors = np.broadcast_to(floors, amps.shape) if floors.ndim == 0 or floors.shape == amps.shape else None
+    if floors is None:
+        raise ValueError(f"`background` must be a number or have one entry per tilt {model.tilt_names}")
     c, k = np.asarray(mod.growth_rates(p)), np.asarray(mod.drive_rates(p))
     if np.any(c == 0):
         raise ValueError("parameters `p`: a growth rate vanishes (no chirality); the spin never reverses")
@@ -259,7 +268,7 @@ def reversal_time(model: Model, p, y0, background: float = 0.0, n_intervals: int
     if len(c) == 1:
         first, intervals = _one_mode(c, w, amps, spin)
     elif len(c) == 2 and c[0] * c[1] < 0:
-        first, intervals = _two_modes(c, w, amps, spin, float(background), int(n_intervals))
+        first, intervals = _two_modes(c, w, amps, spin, floors, int(n_intervals))
     else:
         raise ValueError(f"`model` {model.name}: reversal theory needs one mode or two modes of opposite chirality")
     interval = float(np.mean(intervals[-2:]))
