@@ -58,3 +58,45 @@ def chaplygin_sleigh() -> ModelSpec:
         ),
         quasi_velocities=((v, x_dot, contact_vel.dot(axis)),),
     )
+
+
+def amplitude_analogy(sleigh_system, amplitude_system) -> dict:
+    """The exact map from the sleigh onto the single-mode amplitude equations (paper ``Chap3``).
+
+    With the same time and ``v = -kappa A_phi``, ``phi_dot = mu A_theta``
+    (sleigh speed and turning rate against the knife edge's spin rate and
+    tilt amplitude), the sleigh's equations become the slow flow exactly
+    when ``kappa`` and ``mu`` take the returned values.  The sign is forced:
+    the sleigh's speed only grows (``dv/dt = a phi_dot^2``) while ``Chap1``
+    makes ``A_phi`` only decrease.
+
+    Parameters
+    ----------
+    sleigh_system : the derived ``chaplygin_sleigh`` (state ``(v, phi_dot)``).
+    amplitude_system : a one-mode :class:`~derivation.averaging.AmplitudeSystem`.
+
+    Returns
+    -------
+    dict
+        ``{"kappa": expr, "mu": expr, "substitution": {v: ..., phi_dot: ...}}``
+        with ``kappa``, ``mu`` in the parameters of both models.
+    """
+    if len(amplitude_system.amplitudes) != 1:
+        raise ValueError("the sleigh analogy maps onto a single-mode amplitude system")
+    kappa, mu = sp.symbols("kappa mu", positive=True)
+    (A,), (S,) = amplitude_system.amplitudes, amplitude_system.spin_amplitudes
+    v_sym, w_sym = sleigh_system.state
+    sub = {v_sym: -kappa * S, w_sym: mu * A}
+    f_v, f_w = (e.subs(sub, simultaneous=True) for e in sleigh_system.explicit)
+    mapped = {S: -f_v / kappa, A: f_w / mu}
+    target = dict(zip(amplitude_system.state, amplitude_system.rates))
+    eqs = []
+    for var in (A, S):
+        num = sp.numer(sp.together(mapped[var] - target[var]))
+        eqs += sp.Poly(sp.expand(num), A, S).coeffs()
+    sol = sp.solve(eqs, [kappa, mu], dict=True)
+    if len(sol) != 1:
+        raise ValueError(f"no unique map of the sleigh onto the amplitude equations: {sol}")
+    sol = {k_: sp.factor(v_) for k_, v_ in sol[0].items()}
+    return {"kappa": sol[kappa], "mu": sol[mu],
+            "substitution": {v_sym: -sol[kappa] * S, w_sym: sol[mu] * A}}
