@@ -223,6 +223,8 @@ class Scene:
     compute : ``compute(scene, progress) -> SceneResult``.
     draw : ``draw(result, fig)``.
     settings : scene-specific knobs (scan values, comparison tolerances).
+    uses : every ``(model, fidelity, pose)`` the scene integrates (default:
+        the main run's only).
     """
 
     name: str
@@ -236,6 +238,11 @@ class Scene:
     draw: Callable = field(repr=False)
     settings: Mapping[str, Any] = field(default_factory=dict)
     figsize: tuple[float, float] = (7.5, 5.5)
+    uses: tuple = ()
+
+    def __post_init__(self):
+        if not self.uses:
+            object.__setattr__(self, "uses", ((self.run.model, self.run.fidelity, self.run.pose),))
 
     def with_(self, **changes: Any) -> "Scene":
         """A copy whose main run has some values changed (see :meth:`RunSpec.with_`)."""

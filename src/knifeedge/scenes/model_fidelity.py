@@ -159,5 +159,7 @@ SCENE = Scene(
     compute=compute,
     draw=draw,
     settings={"phi_dot0_over_omega": (0.025, 0.05, 0.1, 0.2, 0.4, 0.8), "good_enough": 0.01},
+    uses=(("single_mode", "full", False), ("single_mode", "reduced", False), ("single_mode", "amplitude", False),
+          ("two_mode", "full", False), ("two_mode", "reduced", False), ("two_mode", "amplitude", False)),
     figsize=(13.0, 4.6),
 )

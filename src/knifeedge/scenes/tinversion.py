@@ -135,5 +135,6 @@ SCENE = Scene(
     draw=draw,
     settings={"phi_dot0": (0.05, 0.075, 0.1, 0.15, 0.2, 0.3, 0.4), "D_over_ell": (0.25, 0.35, 0.5, 0.7, 1.0, 1.4, 2.0),
               "exponent_tolerance": 0.05},
+    uses=(("two_mode", "reduced", False), ("two_mode", "amplitude", False)),
     figsize=(10.0, 4.5),
 )

@@ -1,0 +1,192 @@
+"""Every figure of the paper from one call: :func:`make_figures` (``knifeedge figures --out DIR``).
+
+Writes one PNG per scene and an ``index.html`` and ``index.md`` that put
+each figure beside the paper's caption, the model the scene used and why,
+and the numbers that support or contradict the caption.  Scenes run in
+parallel processes; progress goes to stderr.
+"""
+from __future__ import annotations
+
+import concurrent.futures as cf
+import html
+import os
+import sys
+import time
+from pathlib import Path
+
+from .scenes import SCENE_NAMES, get_scene
+from .scenes.base import format_number
+
+#: heaviest first, so that the parallel run ends sooner
+_ORDER = ("numerical2", "model_fidelity", "tinversion", "table_path", "ellipses", "amplitudes", "numerical")
+
+
+def render_scene(name: str, out_dir: str) -> dict:
+    """Compute one scene and write its PNG; returns plain data (runs in a worker)."""
+    t0 = time.perf_counter()
+    scene = get_scene(name)
+    try:
+        result = scene()
+        png = result.savefig(Path(out_dir) / f"{name}.png")
+        return {"name": name, "ok": True, "png": png.name, "numbers": result.numbers, "claims": result.claims,
+                "seconds": time.perf_counter() - t0}
+    except Exception as exc:  # noqa: BLE001 - reported in the index, the other scenes go on
+        return {"name": name, "ok": False, "error": f"{type(exc).__name__}: {exc}", "numbers": {}, "claims": [],
+                "seconds": time.perf_counter() - t0}
+
+
+def warm(model: str, fidelity: str, pose: bool, method: str) -> str:
+    """Compile (or load from the cache) one model's integrator by a tiny run; returns a label."""
+    from .models import load
+    from .simulate import simulate
+
+    try:
+        m = load(model, fidelity=fidelity, pose=pose)
+    except ValueError:
+        return f"{model}/{fidelity}: not available"
+    y0 = {n: 1e-3 for n in m.state_names}
+    y0[m.spin_name] = 0.1
+    simulate(m, y0, (0.0, 0.01), {n: 1.0 for n in m.param_names}, method=method)
+    return f"{model}/{fidelity}{'+pose' if pose else ''}/{method}"
+
+
+def _schedule(pool, workers: int, order: list, out: Path, report, progress, t0: float) -> None:
+    """Run the scenes on ``pool``, compiling each integrator once and first.
+
+    The first integrator compiles alone (it also compiles the helpers every
+    kernel shares, which later processes then load from the cache); after
+    that at most ``workers`` tasks run at once, a scene as soon as all its
+    integrators are compiled, otherwise the next compilation.
+    """
+    needs = {n: {(*u, get_scene(n).run.method) for u in get_scene(n).uses} for n in order}
+    warms = sorted(set().union(*needs.values()), key=lambda k: -sum(k in v for v in needs.values()))
+    compiled: set = set()
+    scenes = list(order)
+    running: dict = {}
+    n_warm = len(warms)
+    while scenes or running:
+        while len(running) < workers:
+            ready = [n for n in scenes if needs[n] <= compiled]
+            if ready:
+                scenes.remove(ready[0])
+                running[pool.submit(render_scene, ready[0], str(out))] = ("scene", ready[0])
+            elif warms and (compiled or not any(kind == "warm" for kind, _ in running.values())):
+                k = warms.pop(0)
+                running[pool.submit(warm, *k)] = ("warm", k)
+            else:
+                break
+        done, _ = cf.wait(list(running), return_when=cf.FIRST_COMPLETED)
+        for fut in done:
+            kind, what = running.pop(fut)
+            if kind == "scene":
+                report(fut.result())
+                continue
+            try:
+                label = fut.result()
+            except Exception as exc:  # noqa: BLE001 - the scenes that need it will report the error
+                label = f"{what}: {type(exc).__name__}: {exc}"
+            compiled.add(what)
+            if progress:
+                print(f"figures: compiled [{len(compiled)}/{n_warm}] {label}; {time.perf_counter() - t0:.1f} s elapsed",
+                      file=sys.stderr, flush=True)
+
+
+def make_figures(out: str | Path, names=None, max_workers: int | None = None, progress: bool = True) -> list:
+    """Compute the scenes ``names`` (default: all) and write PNGs and the index into ``out``.
+
+    Returns the list of per-scene records (``name``, ``ok``, ``png``,
+    ``numbers``, ``claims``, ``seconds`` or ``error``).
+    """
+    names = list(SCENE_NAMES if names is None else names)
+    for n in names:
+        get_scene(n)  # unknown names fail here, before any work
+    out = Path(out)
+    out.mkdir(parents=True, exist_ok=True)
+    order = sorted(names, key=lambda n: _ORDER.index(n) if n in _ORDER else len(_ORDER))
+    t0 = time.perf_counter()
+    records: dict = {}
+    workers = max_workers or min(len(order), os.cpu_count() or 1)
+
+    def report(rec: dict) -> None:
+        records[rec["name"]] = rec
+        if progress:
+            state = f"{rec['seconds']:.1f} s" if rec["ok"] else f"FAILED: {rec['error']}"
+            print(f"figures: [{len(records)}/{len(order)}] {rec['name']} ({state}); "
+                  f"{time.perf_counter() - t0:.1f} s elapsed", file=sys.stderr, flush=True)
+
+    if progress:
+        print(f"figures: {len(order)} scenes on {workers} process(es) -> {out}/", file=sys.stderr, flush=True)
+    if workers <= 1:
+        for n in order:
+            report(render_scene(n, str(out)))
+    else:
+        with cf.ProcessPoolExecutor(max_workers=workers) as pool:
+            _schedule(pool, workers, order, out, report, progress, t0)
+    recs = [records[n] for n in names]
+    (out / "index.md").write_text(index_markdown(recs))
+    (out / "index.html").write_text(index_html(recs))
+    if progress:
+        print(f"figures: done in {time.perf_counter() - t0:.1f} s; open {out / 'index.html'}", file=sys.stderr)
+    return recs
+
+
+def _verdict_mark(verdict: str) -> str:
+    return {"supports": "supports", "contradicts": "CONTRADICTS", "n/a": "finding"}[verdict]
+
+
+def index_markdown(records: list) -> str:
+    """The index as Markdown."""
+    lines = ["# knifeedge: the figures of the paper", "",
+             "Jagla & Rojo, *The chiral knife edge* (arXiv:2309.06154). Each figure is recomputed by a scene "
+             "(`knifeedge scene NAME`); the errata are in docs/errata.md, the models in docs/models.md.", ""]
+    for rec in records:
+        scene = get_scene(rec["name"])
+        lines += [f"## {rec['name']}: {scene.title}", ""]
+        if rec["ok"]:
+            lines += [f"![{rec['name']}]({rec['png']})", ""]
+        else:
+            lines += [f"**This scene failed:** {rec['error']}", ""]
+        lines += [f"**Paper's caption.** {scene.caption}", "",
+                  f"**Model.** {scene.run.describe()}  ", f"**Why this model.** {scene.why}", ""]
+        if rec["claims"]:
+            lines += ["| the paper says | verdict | evidence |", "|---|---|---|"]
+            lines += [f"| {c} | {_verdict_mark(v)} | {e} |" for c, v, e in rec["claims"]]
+            lines.append("")
+        if rec["numbers"]:
+            lines += ["| number | value |", "|---|---|"]
+            lines += [f"| {k} | {format_number(v)} |" for k, v in rec["numbers"].items()]
+            lines.append("")
+        lines += [f"*computed in {rec['seconds']:.1f} s*", ""]
+    return "\n".join(lines)
+
+
+def index_html(records: list) -> str:
+    """The index as a self-contained HTML page (figures beside captions)."""
+    e = html.escape
+    parts = ["<!doctype html><html><head><meta charset='utf-8'><title>knifeedge figures</title><style>",
+             "body{font-family:sans-serif;max-width:1500px;margin:auto;padding:1em}"
+             ".scene{display:flex;gap:1.5em;border-top:1px solid #ccc;padding:1em 0}"
+             ".fig{flex:0 0 55%}.fig img{max-width:100%}.text{flex:1;font-size:14px}"
+             "table{border-collapse:collapse;font-size:12px}td,th{border:1px solid #ddd;padding:2px 6px;vertical-align:top}"
+             ".supports{color:#060}.contradicts{color:#b00;font-weight:bold}.na{color:#555}",
+             "</style></head><body><h1>knifeedge: the figures of the paper</h1>",
+             "<p>Jagla &amp; Rojo, <i>The chiral knife edge</i> (arXiv:2309.06154). Each figure is recomputed by a scene "
+             "(<code>knifeedge scene NAME</code>); errata in docs/errata.md, models in docs/models.md.</p>"]
+    for rec in records:
+        scene = get_scene(rec["name"])
+        fig = (f"<img src='{e(rec['png'])}' alt='{e(rec['name'])}'>" if rec["ok"]
+               else f"<p class='contradicts'>This scene failed: {e(rec['error'])}</p>")
+        claims = "".join(
+            f"<tr><td>{e(c)}</td><td class='{'na' if v == 'n/a' else v}'>{e(_verdict_mark(v))}</td><td>{e(ev)}</td></tr>"
+            for c, v, ev in rec["claims"])
+        numbers = "".join(f"<tr><td>{e(k)}</td><td>{e(format_number(v))}</td></tr>" for k, v in rec["numbers"].items())
+        parts.append(
+            f"<div class='scene' id='{e(rec['name'])}'><div class='fig'>{fig}</div><div class='text'>"
+            f"<h2>{e(rec['name'])}: {e(scene.title)}</h2>"
+            f"<p><b>Paper's caption.</b> {e(scene.caption)}</p>"
+            f"<p><b>Model.</b> {e(scene.run.describe())}<br><b>Why this model.</b> {e(scene.why)}</p>"
+            + (f"<table><tr><th>the paper says</th><th>verdict</th><th>evidence</th></tr>{claims}</table>" if claims else "")
+            + (f"<p></p><table><tr><th>number</th><th>value</th></tr>{numbers}</table>" if numbers else "")
+            + f"<p><i>computed in {rec['seconds']:.1f} s</i></p></div></div>")
+    parts.append("</body></html>")
+    return "\n".join(parts)
