@@ -18,8 +18,14 @@ from .base import RunSpec, Scene, SceneResult
 from .common import envelope, omega
 
 RUN = RunSpec(
-    model="single_mode", fidelity="reduced",
+    model="single_mode", fidelity="amplitude",
     params={"g": 1.0, "ell": 1.0, "L": 0.5, "D": 1.0},
+    y0={"A_theta": 1e-4, "A_phi": 0.1},
+    t_span=(0.0, 300.0), method="DOP853", rtol=1e-10, atol=1e-14, n_eval=2001,
+)
+#: the check against the real dynamics: the reduced model from a tilt of 1e-3
+CHECK = RunSpec(
+    model="single_mode", fidelity="reduced", params=RUN.params,
     y0={"theta": 1e-3, "theta_dot": 0.0, "phi_dot": 0.1},
     t_span=(0.0, 250.0), method="DOP853", rtol=1e-10, atol=1e-12, n_eval=6001,
 )
@@ -39,10 +45,19 @@ def _period_mean(t, amp, phi_dot, period):
 
 
 def compute(scene: Scene, progress) -> SceneResult:
-    run = scene.run
-    p = run.params
+    orbit_run = scene.run
+    p = orbit_run.params
+    run = CHECK.with_(**p)
     w = omega(p)
     res = SceneResult(scene)
+    orbits = []
+    for a0 in scene.settings["ellipse_A0"]:
+        progress(f"integrating the amplitude equations from A_phi = {a0:g}")
+        t_r = th.first_reversal_time(a0, orbit_run.y0["A_theta"], p["g"], p["ell"], p["L"], p["D"])
+        o = orbit_run.with_(A_phi=a0, t_end=2.2 * t_r).simulate()
+        if not o.success:
+            raise RuntimeError(f"scene {scene.name}: integration failed: {o.message}")
+        orbits.append((o["A_theta"], o["A_phi"]))
     sims = []
     for a0 in scene.settings["simulated_A0"]:
         progress(f"integrating the single-mode equations from phi_dot = {a0:g}")
@@ -81,24 +96,23 @@ def compute(scene: Scene, progress) -> SceneResult:
               f"near A_phi = {s['phi_dot_early']:+.3f} the tilt amplitude grows at rate {s['growth_rate']:+.4f} "
               f"(theory {predicted_growth:+.4f}): unstable; near A_phi = {s['phi_dot_late']:+.3f} it decays at "
               f"{s['decay_rate']:+.4f} (theory {predicted_decay:+.4f}): stable -- the paper's statement is reversed")
-    res.data.update(sims=sims, params=dict(p))
+    res.data.update(sims=sims, orbits=orbits, params=dict(p))
     return res
 
 
 def draw(res: SceneResult, fig) -> None:
-    p = res.data["params"]
-    k = math.sqrt(p["g"] * p["ell"]) / p["L"]  # A_theta semi-axis = A0 / k
     ax = fig.subplots()
     levels = res.scene.settings["ellipse_A0"]
-    s = np.linspace(-np.pi / 2, np.pi / 2, 400)
-    for i, a0 in enumerate(levels):
+    for i, (a_theta, a_phi) in enumerate(res.data["orbits"]):
         for side in (1, -1):
-            x, y = side * a0 / k * np.cos(s), a0 * np.sin(s)
-            ax.plot(x, y, color="k", lw=1.2, label="orbits of Eqs. Chap3 (ellipses)" if (i == 0 and side == 1) else None)
-            # arrows: the flow runs from A_phi = +A0 down to A_phi = -A0
+            x, y = side * a_theta, a_phi
+            ax.plot(x, y, color="k", lw=1.2,
+                    label="orbits of the amplitude equations (Chap3)" if (i == 0 and side == 1) else None)
+            # arrows along the flow (from A_phi = +A0 down to A_phi = -A0)
             for frac in (0.3, 0.7):
-                j = int(frac * len(s))
-                ax.annotate("", xy=(x[len(s) - j - 1], y[len(s) - j - 1]), xytext=(x[len(s) - j + 4], y[len(s) - j + 4]),
+                j = int(np.argmin(np.abs(y - (1 - 2 * frac) * levels[i])))
+                j = min(j, len(x) - 6)
+                ax.annotate("", xy=(x[j + 5], y[j + 5]), xytext=(x[j], y[j]),
                             arrowprops=dict(arrowstyle="-|>", color="k", lw=1.0))
     for i, sim in enumerate(res.data["sims"]):
         ax.plot(sim["amp"], sim["phi_dot"], color=f"C{i + 1}", lw=2.5, alpha=0.6,
@@ -112,16 +126,16 @@ def draw(res: SceneResult, fig) -> None:
     ax.set_ylabel(r"$\dot\phi \equiv A_\phi\ [\sqrt{g/\ell}]$")
     ax.set_title(r"phase portrait of the amplitude equations, $\ell/L=2$, $D/\ell=1$", fontsize=10)
     ax.set_aspect("equal")
-    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
-    fig.tight_layout()
+    fig.legend(fontsize=8, loc="lower center", ncol=2)
+    fig.tight_layout(rect=(0, 0.12, 1, 1))
 
 
 SCENE = Scene(
     name="ellipses",
     title="phase portrait of the amplitude equations",
     caption="Phase portrait of the motion amplitudes of the single mode rattleback.",
-    why=("closed-form orbits of the amplitude equations (2 amplitudes, no integration) for the portrait; two reduced "
-         "single-mode runs (3 states) only to check the ellipses and the stability against the real dynamics"),
+    why=("the single-mode amplitude model (2 amplitudes, no fast oscillation) draws the portrait; two reduced "
+         "single-mode runs (3 states) only check the ellipses and the stability against the real dynamics"),
     run=RUN,
     plots="ellipses A_phi^2 + (g ell/L^2) A_theta^2 = A0^2 with the flow direction, equilibria open (unstable) / filled "
           "(stable), simulated envelopes on top",
@@ -130,6 +144,7 @@ SCENE = Scene(
              "max_relative_deviation_from_ellipse"),
     compute=compute,
     draw=draw,
+    uses=(("single_mode", "amplitude", False), ("single_mode", "reduced", False)),
     settings={"ellipse_A0": (0.05, 0.1, 0.15, 0.2), "simulated_A0": (0.1, 0.2)},
-    figsize=(9.0, 5.5),
+    figsize=(7.0, 7.5),
 )

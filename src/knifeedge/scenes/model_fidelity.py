@@ -128,7 +128,6 @@ def draw(res: SceneResult, fig) -> None:
     a1.set_title("(a) single mode: cost", fontsize=9)
     a1.legend(fontsize=8)
     two = res.data["two"]
-    ref = two[0][1]
     names = [f for f, *_ in two]
     a2.bar(range(len(two)), [t * 1e3 for _, _, t, _ in two], color=[colors[f] for f in names])
     a2.set_xticks(range(len(two)), names)
@@ -138,7 +137,7 @@ def draw(res: SceneResult, fig) -> None:
         txt = "\n".join(f"$t_{k + 1}$={v:.1f}" for k, v in enumerate(rev[:2]))
         a2.text(i, t * 1e3 * 1.15, txt, ha="center", va="bottom", fontsize=7)
     a2.set_ylim(top=max(t for *_, t, _ in two) * 1e3 * 20)
-    a2.set_title(f"(b) two mode (Fig. Numerical2): cost;\nfirst reversal $t_1$ (well conditioned),\nsecond $t_2$ (ill-conditioned except amplitude)", fontsize=9)
+    a2.set_title("(b) two mode (Fig. Numerical2): cost;\nfirst reversal $t_1$ (well conditioned),\nsecond $t_2$ (ill-conditioned except amplitude)", fontsize=9)
     fig.suptitle("model fidelity: which model each scene may use", fontsize=10)
     fig.tight_layout()
 

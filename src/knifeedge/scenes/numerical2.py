@@ -44,6 +44,9 @@ def compute(scene: Scene, progress) -> SceneResult:
     intervals = np.diff(rev)
     tol = scene.settings["converged_below"]
     converged = bool(len(rev) == len(rev2) and np.all(diff <= tol * rev[:n]))
+    from ..reversal import reversal_time
+
+    theory = reversal_time(run.load(), dict(run.params), dict(run.y0))
     res = SceneResult(scene)
     res.numbers.update({
         "reversal_times": [float(t) for t in rev],
@@ -53,6 +56,8 @@ def compute(scene: Scene, progress) -> SceneResult:
         "intervals_between_reversals": [float(d) for d in intervals],
         "mean_interval": float(np.mean(intervals)) if len(intervals) else math.nan,
         "converged": converged,
+        "first_reversal_amplitude_theory": theory.first,
+        "interval_amplitude_theory": theory.interval,
         "nfev": r.nfev,
     })
     sign = np.sign(r["phi_dot"])
@@ -63,6 +68,11 @@ def compute(scene: Scene, progress) -> SceneResult:
     res.claim("the reversals are driven alternately by theta1 and theta2",
               len(active) >= 2 and all(a != b for a, b in zip(active, active[1:])),
               "largest tilt amplitude around each reversal: " + ", ".join(active))
+    if len(intervals):
+        dev = float(np.max(np.abs(intervals - theory.interval)) / theory.interval)
+        res.claim("t_R (the interval) matches the amplitude equations", dev < 0.01,
+                  f"simulated intervals within {dev:.2%} of {theory.interval:.1f} (knifeedge.reversal_time); "
+                  f"first reversal {rev[0]:.2f} vs {theory.first:.2f}")
     res.claim("the reversal times are converged in the tolerance", converged,
               f"rtol {run.rtol:g} vs {check.rtol:g}: differences " + ", ".join(f"{d:.3g}" for d in diff)
               + f" (first reversal {diff[0]:.1e}; criterion {tol:g} relative)" if n else "no reversal")
@@ -119,7 +129,8 @@ SCENE = Scene(
     run=RUN,
     plots="theta1(t), theta2(t) and phi_dot(t), reversals marked, t_R (interval) and the first reversal indicated",
     reports=("reversal_times", "reversal_times_at_rtol_1e-13", "reversal_time_differences", "first_reversal_time",
-             "intervals_between_reversals", "mean_interval", "converged", "nfev"),
+             "intervals_between_reversals", "mean_interval", "converged", "first_reversal_amplitude_theory",
+             "interval_amplitude_theory", "nfev"),
     compute=compute,
     draw=draw,
     settings={"check_rtol": 1e-13, "converged_below": 1e-3},
