@@ -55,7 +55,9 @@ class ReversalPrediction:
     ----------
     first : float
         Time of the first reversal after ``t = 0`` (``inf`` if the spin never
-        reverses, e.g. a single mode spun the way it decays).
+        reverses, e.g. a single mode spun the way it decays; a start with
+        zero spin counts as a reversal at ``t = 0`` for a single mode, and is
+        not counted for two modes, whose first reversal is then the next).
     interval : float
         Time between consecutive reversals (``inf`` for a single mode).  With
         a background level, the mean of the two alternating intervals.
@@ -201,9 +203,9 @@ def _two_modes(c, w, amps, spin, background: np.ndarray, n_intervals: int):
     elif spin < 0:
         first = well.time(u_lo, u0, True, False)
         turn, grow_p = u_lo, True
-    else:
-        first = 0.0
-        turn, grow_p = (u_hi, False) if abs(u0 - u_hi) <= abs(u0 - u_lo) else (u_lo, True)
+    else:  # starting at a turning point: the first reversal is at the other one
+        first = well.time(u_lo, u_hi, True, True)
+        turn, grow_p = (u_lo, True) if abs(u0 - u_hi) <= abs(u0 - u_lo) else (u_hi, False)
     intervals = []
     for _ in range(n_intervals):
         ln_a, _ = _floor_state(well, turn, grow_p, background)
