@@ -27,6 +27,7 @@ from typing import Any
 import numpy as np
 
 from .scenes.base import RUN_SETTINGS, RunSpec
+from .simulate import METHODS
 
 #: outcome columns, after the input columns
 RESULT_COLUMNS = ("status", "message", "nfev", "n_reversals", "first_reversal", "mean_interval", "reversal_times")
@@ -235,9 +236,17 @@ def _expand(run: RunSpec, points: list) -> list:
         if bad:
             raise ValueError(
                 f"`grid` name(s) {bad} are not parameters {tuple(run.params)}, initial states {tuple(run.y0)} "
-                "or one of method, rtol, atol, t_end"
+                "or one of method, rtol, atol, t_end, max_steps"
             )
         spec = run.with_(**pt)
+        if not isinstance(spec.method, str) or spec.method not in METHODS:
+            raise ValueError(f"unknown `method` {spec.method!r} in `grid`; accepted: {', '.join(sorted(METHODS))}")
+        for name in ("rtol", "atol"):
+            v = getattr(spec, name)
+            if isinstance(v, bool) or not isinstance(v, (int, float)) or not (math.isfinite(v) and v > 0):
+                raise ValueError(f"`{name}` must be positive and finite, got {v!r}")
+        if not spec.t_span[1] > spec.t_span[0]:
+            raise ValueError(f"`t_end` must exceed the start time {spec.t_span[0]:g}, got {spec.t_span[1]!r}")
         model = spec.load()
         model.check_params(dict(spec.params))  # bad values fail here, before any work
         model.check_state(dict(spec.y0))
@@ -253,6 +262,8 @@ def _columns(run: RunSpec) -> tuple:
 def _inputs(spec: RunSpec) -> dict:
     d = spec.to_dict()
     d.pop("n_eval")
+    if d["max_steps"] is None:
+        d.pop("max_steps")
     key = json.dumps(d, sort_keys=True)
     run_id = hashlib.sha1(key.encode()).hexdigest()[:16]
     return {"run_id": run_id, "model": spec.model, "fidelity": spec.fidelity, "method": spec.method,
@@ -379,7 +390,7 @@ def sweep(
     grid : mapping ``{name: values}`` (Cartesian product, first name slowest)
         or sequence of mappings (explicit points).  Names are parameter names
         (``"D"``), initial-state names (``"phi_dot"``) or ``"method"``,
-        ``"rtol"``, ``"atol"``, ``"t_end"``.
+        ``"rtol"``, ``"atol"``, ``"t_end"``, ``"max_steps"``.
     params, y0 : mappings; for a scene, values that replace the scene's.
     t_span, method, rtol, atol : replace the base run's settings.
     executor : ``concurrent.futures.Executor``, ``"serial"`` or None

@@ -22,7 +22,7 @@ from typing import Any
 import numpy as np
 
 #: run settings that :meth:`RunSpec.with_` and sweeps accept besides parameter and state names
-RUN_SETTINGS = ("fidelity", "method", "rtol", "atol", "t_end", "pose", "n_eval")
+RUN_SETTINGS = ("fidelity", "method", "rtol", "atol", "t_end", "pose", "n_eval", "max_steps")
 
 
 def _frozen(mapping: Mapping | None) -> Mapping:
@@ -44,6 +44,8 @@ class RunSpec:
     method, rtol, atol : integrator and tolerances (see ``knifeedge.METHODS``).
     n_eval : number of equally spaced output samples; ``None`` keeps the
         solver's own steps.
+    max_steps : step budget of the integrator (``None``: its default); a run
+        that needs more fails with a message saying so.
     """
 
     model: str
@@ -56,6 +58,7 @@ class RunSpec:
     rtol: float = 1e-10
     atol: float = 1e-12
     n_eval: int | None = 4001
+    max_steps: int | None = None
 
     def __post_init__(self):
         object.__setattr__(self, "params", _frozen(self.params))
@@ -75,8 +78,9 @@ class RunSpec:
 
         m = self.load()
         t_eval = None if self.n_eval is None else np.linspace(*self.t_span, int(self.n_eval))
+        extra = {} if self.max_steps is None else {"max_steps": int(self.max_steps)}
         return simulate(m, dict(self.y0), self.t_span, dict(self.params), method=self.method,
-                        rtol=self.rtol, atol=self.atol, t_eval=t_eval)
+                        rtol=self.rtol, atol=self.atol, t_eval=t_eval, **extra)
 
     # -- variations ----------------------------------------------------------
     def with_(self, **changes: Any) -> "RunSpec":
@@ -84,7 +88,7 @@ class RunSpec:
 
         Keys may be parameter names (``D=0.5``), state names (``phi_dot=0.2``)
         or run settings (``fidelity``, ``method``, ``rtol``, ``atol``,
-        ``t_end``, ``pose``, ``n_eval``).
+        ``t_end``, ``pose``, ``n_eval``, ``max_steps``).
         """
         params, y0 = dict(self.params), dict(self.y0)
         settings: dict = {}
@@ -113,6 +117,7 @@ class RunSpec:
             "model": self.model, "fidelity": self.fidelity, "pose": self.pose,
             "params": dict(self.params), "y0": dict(self.y0), "t_span": list(self.t_span),
             "method": self.method, "rtol": self.rtol, "atol": self.atol, "n_eval": self.n_eval,
+            "max_steps": self.max_steps,
         }
 
     @classmethod
