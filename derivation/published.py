@@ -178,6 +178,39 @@ PUBLISHED: tuple = (
               "theta_alpha_dot phi_dot from eqmot1 and from lambda2 cancel exactly.)"),
 )
 
+
+# ---------------------------------------------------------------- amplitude-level claims
+# Checked against the machine-averaged slow flows (derivation/averaging.py) by
+# derivation/amplitude_checks.py; evidence in docs/amplitude.md.
+PUBLISHED = PUBLISHED + (
+    Published("Elipses", "single_mode", A_phi**2 + g * ell / L**2 * A_theta**2, A0**2, "invariant", "agrees",
+              "Fig. Elipses: the solution curves are ellipses. The averaged energy per unit mass, "
+              "(L^2/2) (A_phi^2 + (g ell/L^2) A_theta^2), is conserved by the derived slow flow and is a "
+              "positive-definite quadratic form; its level sets are ellipses with semi-axes A0 (spin) and "
+              "A0 L/sqrt(g ell) (tilt), the values the corrected an1/an2 run through. (The paper prints no "
+              "equation for them; with the printed Chap1 the tilt semi-axis would be A0 L/(ell sqrt(g)).)"),
+    Published("Chap3.stability", "single_mode", A_theta_dot, -D / (2 * ell) * A_phi * A_theta, "stability",
+              "erratum",
+              "The paper: linearizing about (A_theta = 0, A_phi != 0) gives 'a negative eigenvalue if "
+              "A_phi > 0 (the stable case) and a positive eigenvalue if A_phi < 0'. The derived slow flow "
+              "linearizes to d(A_theta)/dt = (D/(2 ell)) A_phi A_theta: the eigenvalue has the sign of "
+              "A_phi, so A_phi > 0 is the unstable half (the spin from which the tilt grows and which then "
+              "reverses, as in Fig. numerical) and A_phi < 0 the stable one. The same holds for the sleigh "
+              "under the exact map v = -kappa A_phi (docs/amplitude.md): its stable motions have v > 0.",
+              corrected=(A_theta_dot, D / (2 * ell) * A_phi * A_theta)),
+    Published("tr.factor", "two_mode", t_R * D * phi_dot0 / ell, sp.S.One, "reversal", "erratum",
+              "Eq. tr drops 'a factor that depends weakly (logarithmically) on the parameters'. The "
+              "averaged two-mode flow is integrable and gives that factor: with a background theta0 on "
+              "the inactive (fast) mode, t_R D phi_dot0/ell = (4/sin 2 alpha) [ln(2 theta_max/theta0) + "
+              "((L^2 + ell^2)/ell^2) ln 2], theta_max = phi_dot0 L/sqrt(g ell). The prefactor 4/sin(2 alpha) "
+              "is algebraic in the chiral angle, not logarithmic, and the factor is large: about 144 in the "
+              "scene of Fig. Numerical2, where the noise-free background theta0 ~ 3e-15 is set by the first "
+              "growth (t_R = 2875.8 against 2877 measured).",
+              corrected=(t_R * D * phi_dot0 / ell,
+                         4 / sp.sin(2 * alpha) * (sp.log(2 * theta_max / theta0)
+                                                  + (L**2 + ell**2) / ell**2 * sp.log(2)))),
+)
+
 BY_LABEL = {e.label: e for e in PUBLISHED}
 
 

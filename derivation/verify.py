@@ -168,6 +168,9 @@ def _estimate(lhs, rhs, system) -> Evidence:
 
 _CHECKS = {"constraint": _constraint, "exact": _exact, "order": _order, "amplitude": _amplitude,
            "closed_form": _closed_form, "estimate": _estimate}
+from .amplitude_checks import CHECKS as _AMPLITUDE_CHECKS  # noqa: E402  (invariant, stability, reversal)
+
+_CHECKS.update(_AMPLITUDE_CHECKS)
 
 
 def evaluate(entry: pub.Published, systems: dict, corrected: bool = False) -> Evidence:
