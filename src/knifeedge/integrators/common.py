@@ -19,7 +19,7 @@ DENSE_POWER = 1
 _EPS = np.finfo(np.float64).eps
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def dense_component(kind, F, y_old, x, i):
     """Interpolant of component ``i`` at ``x`` in [0, 1]."""
     m = F.shape[0]
@@ -37,14 +37,14 @@ def dense_component(kind, F, y_old, x, i):
     return y_old[i] + y
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def dense_state(kind, F, y_old, x, out):
     """Interpolated state at ``x`` in [0, 1], written into ``out``."""
     for i in range(y_old.size):
         out[i] = dense_component(kind, F, y_old, x, i)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def hermite_coefficients(y_old, y_new, f_old, f_new, h, F):
     """Cubic Hermite interpolant of one step in the ``DENSE_POWER`` form (``F`` is 3 x n)."""
     for i in range(y_old.size):
@@ -56,7 +56,7 @@ def hermite_coefficients(y_old, y_new, f_old, f_new, h, F):
         F[2, i] = -2.0 * dy + a + b
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def locate_root(kind, F, y_old, i, g0, g1):
     """``x`` in [0, 1] where component ``i`` of the interpolant crosses zero.
 
@@ -90,7 +90,7 @@ def locate_root(kind, F, y_old, i, g0, g1):
     return x
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def grow_rows(ts, ys):
     """Double the capacity of the output arrays (times ``ts`` and rows ``ys``)."""
     cap = max(2 * ts.size, 16)
@@ -101,7 +101,7 @@ def grow_rows(ts, ys):
     return nts, nys
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def push_row(ts, ys, n, t, y):
     """Append ``(t, y)`` as row ``n``; returns the (maybe reallocated) arrays and ``n + 1``."""
     if n >= ts.size:
@@ -111,7 +111,7 @@ def push_row(ts, ys, n, t, y):
     return ts, ys, n + 1
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def push_time(ev, n, t):
     """Append the event time ``t``; returns the (maybe reallocated) array and ``n + 1``."""
     if n >= ev.size:
@@ -122,7 +122,7 @@ def push_time(ev, n, t):
     return ev, n + 1
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def crossing(g_old, g_new):
     """True when a step from ``g_old`` to ``g_new`` crosses zero (a zero at the start is not counted)."""
     if g_old == 0.0:
@@ -130,7 +130,7 @@ def crossing(g_old, g_new):
     return g_new == 0.0 or (g_old > 0.0) != (g_new > 0.0)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def needs_dense(spin, y_old, y_new, t_eval, ie, t_new):
     """Whether the accepted step needs its interpolant (an event, or an output time strictly inside)."""
     if spin >= 0 and crossing(y_old[spin], y_new[spin]):
@@ -138,7 +138,7 @@ def needs_dense(spin, y_old, y_new, t_eval, ie, t_new):
     return ie < t_eval.size and t_eval[ie] < t_new
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def record_step(kind, F, y_old, y_new, t_old, t_new, spin, t_eval, ie, every, ts, ys, n_out, ev, n_ev, work):
     """Store what an accepted step from ``t_old`` to ``t_new`` produced.
 
@@ -166,7 +166,7 @@ def record_step(kind, F, y_old, y_new, t_old, t_new, spin, t_eval, ie, every, ts
     return ie, ts, ys, n_out, ev, n_ev
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def all_finite(y):
     for v in y:
         if not np.isfinite(v):
@@ -174,7 +174,7 @@ def all_finite(y):
     return True
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def compensated_add(y, dy, comp, out):
     """``out = y + dy`` with Kahan compensation carried in ``comp`` (updated in place)."""
     for i in range(y.size):

@@ -54,7 +54,7 @@ MIN_FACTOR = 0.2
 MAX_FACTOR = 10.0
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _rms(v):
     s = 0.0
     for x in v:
@@ -62,7 +62,7 @@ def _rms(v):
     return np.sqrt(s / v.size)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _scale(y, y_new, rtol, atol, pair, mode_scaled, out):
     for i in range(y.size):
         m = max(abs(y[i]), abs(y_new[i]))
@@ -72,7 +72,7 @@ def _scale(y, y_new, rtol, atol, pair, mode_scaled, out):
         out[i] = atol[i] + rtol * m
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def initial_step(t0, y0, f0, p, t1, max_step, rtol, atol, work):
     """Hairer, Norsett & Wanner I, Sect. II.4 (as SciPy's ``select_initial_step``); one rhs call."""
     n = y0.size
@@ -87,6 +87,8 @@ def initial_step(t0, y0, f0, p, t1, max_step, rtol, atol, work):
     d1 = np.sqrt(d1 / n)
     h0 = 1e-6 if (d0 < 1e-5 or d1 < 1e-5) else 0.01 * d0 / d1
     h0 = min(h0, interval)
+    if not h0 > 0.0:  # the derivative overflows the scale: start at the smallest step
+        return 0.0
     y1 = y0 + h0 * f0
     _rhs(t0 + h0, y1, p, work)
     d2 = 0.0
@@ -101,7 +103,7 @@ def initial_step(t0, y0, f0, p, t1, max_step, rtol, atol, work):
     return min(100 * h0, h1, interval, max_step)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _stage_state(K, s, y, h, out):
     for i in range(y.size):
         acc = 0.0
@@ -112,7 +114,7 @@ def _stage_state(K, s, y, h, out):
         out[i] = y[i] + h * acc
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _error_norm(K, h, scale, work5, work3):
     n = scale.size
     for i in range(n):
@@ -135,7 +137,7 @@ def _error_norm(K, h, scale, work5, work3):
     return abs(h) * _rms(work5)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _dense(K, y_old, y_new, t_old, h, p, F, work):
     """Interpolant coefficients of the accepted step; returns the rhs calls it made."""
     n = y_old.size
@@ -163,7 +165,7 @@ def _dense(K, y_old, y_new, t_old, h, p, F, work):
     return 0
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def solve(t0, t1, y0, p, rtol, atol, h_init, max_step, t_eval, every, spin, max_steps, pair, mode_scaled):
     """Integrate from ``t0`` to ``t1 > t0``.
 

@@ -1,0 +1,226 @@
+"""Compiled integrators: same algorithm as SciPy's, classical orders, reversibility, event location.
+
+Scenes (units g = ell = 1): the single-mode scene of the paper's Fig.
+'numerical' (L = D = ell, theta(0) = 1e-3, phi_dot(0) = 0.1) and the two-mode
+scene of Fig. 'Numerical2' (ell/L = 1/2, D/ell = 1/2, alpha = pi/4, tilts 1e-3,
+phi_dot(0) = 0.1).
+"""
+import math
+import os
+
+import numpy as np
+import pytest
+
+import knifeedge as ke
+from knifeedge.integrators import COMPILED_METHODS, Status, specialize
+from knifeedge.integrators import dop853_tableau as t8
+from knifeedge.integrators import rk_tableaus as tb
+
+SINGLE = dict(g=1.0, ell=1.0, L=1.0, D=1.0)
+SINGLE_Y0 = dict(theta=1e-3, theta_dot=0.0, phi_dot=0.1)
+TWO = dict(g=1.0, ell=1.0, L=2.0, D=0.5, alpha=math.pi / 4)
+TWO_Y0 = dict(theta1=1e-3, theta2=1e-3, theta1_dot=0.0, theta2_dot=0.0, phi_dot=0.1)
+
+
+def _single(pose=False):
+    m = ke.load("single_mode", "full", pose=pose)
+    return m, m.params(**SINGLE)
+
+
+def _two():
+    m = ke.load("two_mode", "full")
+    return m, m.params(**TWO)
+
+
+# -- coefficient tables ---------------------------------------------------------
+def test_explicit_tableaus_are_consistent():
+    """Row sums of A equal the nodes C; weights sum to 1; error estimators annihilate constants."""
+    np.testing.assert_allclose(t8.A.sum(axis=1), t8.C, atol=1e-14)
+    assert math.isclose(t8.B.sum(), 1.0, abs_tol=1e-14)
+    assert abs(t8.E3.sum()) < 1e-14 and abs(t8.E5.sum()) < 1e-14
+    np.testing.assert_allclose(tb.DP54_A.sum(axis=1), tb.DP54_C, atol=1e-15)
+    assert math.isclose(tb.DP54_B.sum(), 1.0, abs_tol=1e-15)
+    assert abs(tb.DP54_E.sum()) < 1e-15
+    assert math.isclose(tb.RK4_B.sum(), 1.0)
+
+
+@pytest.mark.parametrize("s", [1, 2, 3])
+def test_gauss_tableaus_satisfy_collocation_conditions(s):
+    """Hairer-Lubich-Wanner GNI Sect. II.1.3: B(2s) (b.c^(k-1) = 1/k, k <= 2s) and C(s) (A c^(k-1) = c^k/k)."""
+    A, b, c = tb.GAUSS[s]
+    for k in range(1, 2 * s + 1):
+        assert math.isclose(b @ c ** (k - 1), 1.0 / k, rel_tol=1e-14), k
+    for k in range(1, s + 1):
+        np.testing.assert_allclose(A @ c ** (k - 1), c**k / k, rtol=1e-14, atol=1e-15)
+
+
+# -- the compiled adaptive methods are SciPy's algorithms ------------------------
+@pytest.mark.parametrize("ours,theirs", [("DOP853", "scipy:DOP853"), ("DP54", "scipy:RK45"), ("RK45", "scipy:RK45")])
+def test_adaptive_methods_take_scipys_steps(ours, theirs):
+    """Same tableau, initial step and controller: the same steps and evaluations, and the same answer up to
+    round-off (the error norms are summed in a different order, which moves step sizes by ~1e-10)."""
+    m, p = _single()
+    a = ke.simulate(m, SINGLE_Y0, (0.0, 300.0), p, method=ours, rtol=1e-8, atol=1e-11)
+    b = ke.simulate(m, SINGLE_Y0, (0.0, 300.0), p, method=theirs, rtol=1e-8, atol=1e-11)
+    assert a.success and b.success
+    assert a.nfev == b.nfev and a.t.size == b.t.size
+    np.testing.assert_allclose(a.t, b.t, rtol=1e-6)
+    np.testing.assert_allclose(a.y, b.y, rtol=1e-7, atol=1e-10)
+    np.testing.assert_allclose(a.reversal_times, b.reversal_times, rtol=1e-9)
+
+
+def test_single_mode_reversal_located_as_scipy_and_an_implicit_method():
+    """The reversal of Fig. 'numerical' at t = 106.361: dense output + root finding agrees with
+    SciPy's event location (same steps) to 1e-10 and with Radau (different method) to 1e-7."""
+    m, p = _single()
+    ours = ke.simulate(m, SINGLE_Y0, (0.0, 300.0), p, method="DOP853", rtol=1e-10, atol=1e-12)
+    scipy_same = ke.simulate(m, SINGLE_Y0, (0.0, 300.0), p, method="scipy:DOP853", rtol=1e-10, atol=1e-12)
+    radau = ke.simulate(m, SINGLE_Y0, (0.0, 300.0), p, method="scipy:Radau", rtol=1e-10, atol=1e-14)
+    assert ours.reversal_times.size == 1
+    t_r = ours.reversal_times[0]
+    assert round(t_r, 3) == 106.361
+    assert math.isclose(t_r, scipy_same.reversal_times[0], rel_tol=1e-10)
+    assert math.isclose(t_r, radau.reversal_times[0], rel_tol=1e-7)
+    # phi_dot really vanishes there: interpolate with t_eval at the located time
+    at = ke.simulate(m, SINGLE_Y0, (0.0, 300.0), p, method="DOP853", rtol=1e-10, atol=1e-12, t_eval=[t_r])
+    assert abs(at["phi_dot"][0]) < 1e-12
+
+
+def test_dense_output_at_t_eval_matches_scipy():
+    m, p = _two()
+    te = np.linspace(0.0, 3000.0, 37)
+    a = ke.simulate(m, TWO_Y0, (0.0, 3000.0), p, method="DOP853", rtol=1e-10, atol=1e-13, t_eval=te)
+    b = ke.simulate(m, TWO_Y0, (0.0, 3000.0), p, method="scipy:DOP853", rtol=1e-10, atol=1e-13, t_eval=te)
+    np.testing.assert_array_equal(a.t, te)
+    np.testing.assert_allclose(a.y, b.y, rtol=1e-9, atol=1e-13)
+
+
+def test_every_step_is_stored_without_t_eval():
+    m, p = _single()
+    r = ke.simulate(m, SINGLE_Y0, (0.0, 50.0), p, method="RK4", h=0.1)
+    assert r.t.size == r.nsteps + 1 == 501
+    assert r.t[0] == 0.0 and r.t[-1] == 50.0 and np.all(np.diff(r.t) > 0)
+
+
+def test_pose_model_matches_scipy():
+    """With the pose, the path on the table (phi, x, y) agrees with SciPy's DOP853."""
+    m, p = _single(pose=True)
+    a = ke.simulate(m, SINGLE_Y0, (0.0, 200.0), p, method="DOP853", rtol=1e-10, atol=1e-13, t_eval=[200.0])
+    b = ke.simulate(m, SINGLE_Y0, (0.0, 200.0), p, method="scipy:DOP853", rtol=1e-10, atol=1e-13, t_eval=[200.0])
+    assert a.y.shape == (6, 1)
+    np.testing.assert_allclose(a.y, b.y, rtol=1e-8, atol=1e-13)
+
+
+# -- fixed-step methods: orders and reversibility --------------------------------
+@pytest.mark.parametrize("method,h,order", [("RK4", 0.05, 4), ("implicit_midpoint", 0.025, 2),
+                                            ("gauss4", 0.1, 4), ("gauss6", 0.2, 6)])
+def test_fixed_step_order(method, h, order):
+    """Halving the step divides the global error by 2^order (single mode, large tilt: nonlinear)."""
+    m, p = _single()
+    y0 = dict(theta=0.3, theta_dot=0.0, phi_dot=0.5)
+    ref = ke.simulate(m, y0, (0.0, 20.0), p, method="DOP853", rtol=1e-13, atol=1e-16, t_eval=[20.0]).y[:, -1]
+    e1, e2 = (np.abs(ke.simulate(m, y0, (0.0, 20.0), p, method=method, h=hh, t_eval=[20.0]).y[:, -1] - ref).max()
+              for hh in (h, h / 2))
+    assert COMPILED_METHODS[method].order == order
+    assert 2 ** order * 0.85 < e1 / e2 < 2 ** order * 1.2, (e1, e2)
+
+
+def test_gauss_energy_has_no_drift_where_rk4_drifts():
+    """Energy is conserved by the knife edge (ideal constraints do no work).  A symmetric method on a
+    reversible system keeps the energy error bounded (Hairer-Lubich-Wanner GNI, Ch. XI); RK4 at the
+    same step drifts secularly.  Two-mode scene with large tilts 0.1, 20000 time units, h = 0.2."""
+    m, p = _two()
+    y0 = dict(TWO_Y0, theta1=0.1, theta2=0.1)
+    te = np.arange(0.0, 20000.0 + 1e-9, 1000.0)  # on the step grid: no interpolation error
+    drift = {}
+    for method in ("gauss4", "RK4"):
+        r = ke.simulate(m, y0, (0.0, 20000.0), p, method=method, h=0.2, t_eval=te)
+        assert r.success, r.message
+        e = r.energy
+        drift[method] = np.abs(e - e[0]) / abs(e[0])
+    g, k = drift["gauss4"], drift["RK4"]
+    assert g.max() < 1e-8
+    assert g[11:].max() < 3 * g[:11].max() + 1e-12  # no growth from the first half to the second
+    assert k[-1] > 1e-4 and k[-1] > 3 * k[5]  # RK4: secular drift, linear in t (4x from t = 5000 to 20000)
+    assert k[-1] > 1e4 * g.max()
+
+
+# -- reversal times of the two-mode scene ---------------------------------------
+def test_first_two_mode_reversal():
+    """First reversal of the two-mode scene at t = 2396.685 (DOP853, rtol 1e-10), to 1e-6 relative,
+    cross-checked with LSODA (a different method family, SciPy)."""
+    m, p = _two()
+    r = ke.simulate(m, TWO_Y0, (0.0, 2500.0), p, method="DOP853", rtol=1e-10, atol=1e-12, t_eval=[2500.0])
+    lsoda = ke.simulate(m, TWO_Y0, (0.0, 2500.0), p, method="scipy:LSODA", rtol=1e-11, atol=1e-14, t_eval=[2500.0])
+    assert r.reversal_times.size == 1 and lsoda.reversal_times.size == 1
+    assert abs(r.reversal_times[0] / 2396.685 - 1) < 1e-6
+    assert abs(r.reversal_times[0] / lsoda.reversal_times[0] - 1) < 1e-6
+
+
+def test_later_reversals_need_the_small_mode_kept_accurate():
+    """Between reversals the inactive tilt mode decays by ~12 orders of magnitude, so later reversal
+    times depend on how accurately it is kept.  Two independent converged answers agree to 3e-4
+    (Gauss6 with a fixed step, DOP853 at rtol 3e-14 with no absolute floor), while DOP853 at the
+    common setting rtol 1e-10, atol 1e-12 is off by more than 1 % on the second reversal."""
+    m, p = _two()
+    span, te = (0.0, 12000.0), [12000.0]
+    gauss = ke.simulate(m, TWO_Y0, span, p, method="gauss6", h=0.05, t_eval=te)
+    tight = ke.simulate(m, TWO_Y0, span, p, method="DOP853", rtol=3e-14, atol=1e-30, t_eval=te)
+    common = ke.simulate(m, TWO_Y0, span, p, method="DOP853", rtol=1e-10, atol=1e-12, t_eval=te)
+    assert gauss.reversal_times.size == tight.reversal_times.size == 4
+    np.testing.assert_allclose(gauss.reversal_times, tight.reversal_times, rtol=3e-4)
+    assert abs(common.reversal_times[1] / gauss.reversal_times[1] - 1) > 1e-2
+
+
+# -- input validation -------------------------------------------------------------
+@pytest.mark.parametrize("over,match", [
+    (dict(method="RK4"), "pass the step `h`"),
+    (dict(method="DOP853", h=0.1), "`h`"),
+    (dict(method="RK4", h=-0.1), "`h`"),
+    (dict(method="gauss4", h="big"), "`h`"),
+    (dict(rtol=1e-15), "`rtol` must be at least"),
+    (dict(atol=np.ones(2)), r"`atol` must be a number or have shape \(3,\)"),
+    (dict(atol=np.array([1e-9, 0.0, 1e-9])), "`atol`"),
+    (dict(max_steps=0), "`max_steps`"),
+    (dict(max_steps=1.5), "`max_steps`"),
+    (dict(error_control="global"), "`error_control`"),
+    (dict(method="scipy:DOP853", error_control="mode"), "`error_control"),
+])
+def test_simulate_rejects_bad_integrator_options(over, match):
+    m, p = _single()
+    with pytest.raises((ValueError, TypeError), match=match):
+        ke.simulate(m, SINGLE_Y0, (0.0, 1.0), p, **over)
+
+
+def test_per_component_atol_and_mode_error_control_run():
+    m, p = _two()
+    r = ke.simulate(m, TWO_Y0, (0.0, 100.0), p, rtol=1e-8, atol=np.full(5, 1e-20), error_control="mode")
+    assert r.success and r.t[-1] == 100.0
+
+
+# -- the kernel cache ------------------------------------------------------------
+def test_kernel_source_imports_the_models_rhs(tmp_path):
+    src = specialize.kernel_source("erk", 1, "knifeedge.generated.two_mode_full", "rhs_pose_into")
+    assert "from knifeedge.generated.two_mode_full import rhs_pose_into as _rhs" in src
+    assert "VARIANT = 1" in src and "templates._stub" not in src
+    with pytest.raises(ValueError, match="unknown kernel template"):
+        specialize.kernel_source("euler", 0, "x", "y")
+
+
+def test_cache_dir_follows_the_environment(tmp_path, monkeypatch):
+    monkeypatch.setenv("KNIFEEDGE_CACHE_DIR", str(tmp_path / "kc"))
+    assert specialize.cache_dir() == tmp_path / "kc"
+    assert (tmp_path / "kc" / "kernels").is_dir()
+    if os.getuid() != 0:  # root can write anywhere
+        ro = tmp_path / "ro"
+        ro.mkdir()
+        ro.chmod(0o500)
+        monkeypatch.setenv("KNIFEEDGE_CACHE_DIR", str(ro / "sub"))
+        assert specialize.cache_dir() != ro / "sub"
+
+
+def test_status_messages_name_the_remedy():
+    codes = [s.code for s in Status]
+    assert len(set(codes)) == len(codes) and Status.SUCCESS.code == 0 and all(c < 0 for c in codes[1:])
+    assert "`max_steps`" in Status.MAX_STEPS.value and "`h`" in Status.IMPLICIT_NOT_CONVERGED.value
+    assert "`rtol`" in Status.STEP_SIZE_UNDERFLOW.value
