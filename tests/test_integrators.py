@@ -58,15 +58,18 @@ def test_gauss_tableaus_satisfy_collocation_conditions(s):
 @pytest.mark.parametrize("ours,theirs", [("DOP853", "scipy:DOP853"), ("DP54", "scipy:RK45"), ("RK45", "scipy:RK45")])
 def test_adaptive_methods_take_scipys_steps(ours, theirs):
     """Same tableau, initial step and controller: the same steps and evaluations, and the same answer up to
-    round-off (the error norms are summed in a different order, which moves step sizes by ~1e-10)."""
+    round-off (the error norms are summed in a different order, which moves step sizes by ~1e-7 for DP54)."""
     m, p = _single()
     a = ke.simulate(m, SINGLE_Y0, (0.0, 300.0), p, method=ours, rtol=1e-8, atol=1e-11)
     b = ke.simulate(m, SINGLE_Y0, (0.0, 300.0), p, method=theirs, rtol=1e-8, atol=1e-11)
     assert a.success and b.success
     assert a.nfev == b.nfev and a.t.size == b.t.size
     np.testing.assert_allclose(a.t, b.t, rtol=1e-6)
-    np.testing.assert_allclose(a.y, b.y, rtol=1e-7, atol=1e-10)
     np.testing.assert_allclose(a.reversal_times, b.reversal_times, rtol=1e-9)
+    te = np.linspace(0.0, 300.0, 31)
+    a = ke.simulate(m, SINGLE_Y0, (0.0, 300.0), p, method=ours, rtol=1e-8, atol=1e-11, t_eval=te)
+    b = ke.simulate(m, SINGLE_Y0, (0.0, 300.0), p, method=theirs, rtol=1e-8, atol=1e-11, t_eval=te)
+    np.testing.assert_allclose(a.y, b.y, rtol=1e-7, atol=1e-11)
 
 
 def test_single_mode_reversal_located_as_scipy_and_an_implicit_method():
