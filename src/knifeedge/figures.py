@@ -134,6 +134,10 @@ def _verdict_mark(verdict: str) -> str:
     return {"supports": "supports", "contradicts": "CONTRADICTS", "n/a": "finding"}[verdict]
 
 
+def _md(text) -> str:
+    return str(text).replace("|", "\\|")
+
+
 def index_markdown(records: list) -> str:
     """The index as Markdown."""
     lines = ["# knifeedge: the figures of the paper", "",
@@ -150,11 +154,11 @@ def index_markdown(records: list) -> str:
                   f"**Model.** {scene.run.describe()}  ", f"**Why this model.** {scene.why}", ""]
         if rec["claims"]:
             lines += ["| the paper says | verdict | evidence |", "|---|---|---|"]
-            lines += [f"| {c} | {_verdict_mark(v)} | {e} |" for c, v, e in rec["claims"]]
+            lines += [f"| {_md(c)} | {_verdict_mark(v)} | {_md(e)} |" for c, v, e in rec["claims"]]
             lines.append("")
         if rec["numbers"]:
             lines += ["| number | value |", "|---|---|"]
-            lines += [f"| {k} | {format_number(v)} |" for k, v in rec["numbers"].items()]
+            lines += [f"| {_md(k)} | {_md(format_number(v))} |" for k, v in rec["numbers"].items()]
             lines.append("")
         lines += [f"*computed in {rec['seconds']:.1f} s*", ""]
     return "\n".join(lines)
