@@ -157,5 +157,5 @@ def test_model_fidelity_finds_where_the_cheaper_models_stop_being_good_enough():
     errs = n["single_mode_reduced_errors"]
     assert errs[0] < 1e-3 and errs[-1] > 0.01  # good at small phi_dot0/omega, not at 0.8
     assert 0.05 <= n["single_mode_reduced_good_enough_up_to"] < 0.8
-    assert n["two_mode_amplitude_seconds"] < n["two_mode_full_seconds"]
+    assert n["two_mode_amplitude_nfev"] < n["two_mode_full_nfev"] / 10  # no fast oscillation to resolve
     r.savefig(__import__("tempfile").mkdtemp() + "/mf.png")
