@@ -464,7 +464,13 @@ def sweep(
                 for fut in futures:
                     fut.cancel()
                 if own:
-                    pool.shutdown(wait=True, cancel_futures=True)
-    finally:
+                    pool.shutdown(wait=False, cancel_futures=True)
+    except KeyboardInterrupt:
         bar.close()
+        if progress is True:
+            saved = f"; the {bar.done} finished runs are in {store.path}: run the same sweep again to resume" \
+                if store.path is not None else ""
+            print(f"sweep: interrupted after {bar.done}/{bar.total} runs{saved}", file=sys.stderr, flush=True)
+        raise
+    bar.close()
     return SweepTable(columns, rows, n_computed=len(todo), n_reused=n_reused)
