@@ -10,9 +10,8 @@ def median_time(fn, repeats: int = 5, min_seconds: float = 0.02) -> float:
 
     Each repeat calls ``fn`` as many times as needed to last ``min_seconds``.
     """
-    fn()  # warm-up (compilation, caches)
     t = time.perf_counter()
-    fn()
+    fn()  # warm-up (caches), also the calibration
     single = time.perf_counter() - t
     inner = max(1, int(min_seconds / max(single, 1e-9)))
     samples = []

@@ -49,11 +49,17 @@ COMPILED_METHODS = {
 ALIASES = {"RK45": "DP54"}
 
 
+_KERNELS: dict = {}
+
+
 def kernel(model, method: str):
     """The compiled ``solve`` function of ``method`` for ``model`` (a :class:`knifeedge.Model`)."""
     spec = COMPILED_METHODS[ALIASES.get(method, method)]
     rhs_name = "rhs_pose_into" if model.pose else "rhs_into"
-    return load_kernel(spec.template, spec.variant, model.module, rhs_name).solve
+    key = (model.module.__name__, rhs_name, spec.template, spec.variant)
+    if key not in _KERNELS:
+        _KERNELS[key] = load_kernel(spec.template, spec.variant, model.module, rhs_name).solve
+    return _KERNELS[key]
 
 
 __all__ = ["COMPILED_METHODS", "ALIASES", "CompiledMethod", "Status", "from_code", "kernel", "cache_dir"]

@@ -54,7 +54,7 @@ MIN_FACTOR = 0.2
 MAX_FACTOR = 10.0
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline="always")
 def _rms(v):
     s = 0.0
     for x in v:
@@ -62,7 +62,7 @@ def _rms(v):
     return np.sqrt(s / v.size)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline="always")
 def _scale(y, y_new, rtol, atol, pair, mode_scaled, out):
     for i in range(y.size):
         m = max(abs(y[i]), abs(y_new[i]))
@@ -103,7 +103,7 @@ def initial_step(t0, y0, f0, p, t1, max_step, rtol, atol, work):
     return min(100 * h0, h1, interval, max_step)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline="always")
 def _stage_state(K, s, y, h, out):
     for i in range(y.size):
         acc = 0.0
@@ -114,7 +114,7 @@ def _stage_state(K, s, y, h, out):
         out[i] = y[i] + h * acc
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline="always")
 def _error_norm(K, h, scale, work5, work3):
     n = scale.size
     for i in range(n):
@@ -261,11 +261,13 @@ def solve(t0, t1, y0, p, rtol, atol, h_init, max_step, t_eval, every, spin, max_
         if status != 0:
             break
         n_acc += 1
-        if _c.needs_dense(spin, y, y_new, t_eval, ie, t_new):
-            nfev += _dense(K, y, y_new, t, h, p, F, work)
-        ie, ts, ys, n_out, ev, n_ev = _c.record_step(
-            DENSE_KIND, F, y, y_new, t, t_new, spin, t_eval, ie, every, ts, ys, n_out, ev, n_ev, work
-        )
+        crossed = spin >= 0 and _c.crossing(y[spin], y_new[spin])
+        if crossed or every or (ie < t_eval.size and t_eval[ie] <= t_new):
+            if crossed or (ie < t_eval.size and t_eval[ie] < t_new):
+                nfev += _dense(K, y, y_new, t, h, p, F, work)
+            ie, ts, ys, n_out, ev, n_ev = _c.record_step(
+                DENSE_KIND, F, y, y_new, t, t_new, spin, t_eval, ie, every, ts, ys, n_out, ev, n_ev, work
+            )
         y[:] = y_new
         K[0, :] = K[N_STAGES, :]
         t = t_new

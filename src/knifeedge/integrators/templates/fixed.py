@@ -204,11 +204,13 @@ def solve(t0, t1, y0, p, h_req, atol, t_eval, every, spin, max_steps, pair):
             break
         comp[:] = comp_trial
         n_acc += 1
-        if _c.needs_dense(spin, y, y_new, t_eval, ie, t_new):
-            _c.hermite_coefficients(y, y_new, f_old, f_new, t_new - t, F)
-        ie, ts, ys, n_out, ev, n_ev = _c.record_step(
-            _c.DENSE_POWER, F, y, y_new, t, t_new, spin, t_eval, ie, every, ts, ys, n_out, ev, n_ev, work
-        )
+        crossed = spin >= 0 and _c.crossing(y[spin], y_new[spin])
+        if crossed or every or (ie < t_eval.size and t_eval[ie] <= t_new):
+            if crossed or (ie < t_eval.size and t_eval[ie] < t_new):
+                _c.hermite_coefficients(y, y_new, f_old, f_new, t_new - t, F)
+            ie, ts, ys, n_out, ev, n_ev = _c.record_step(
+                _c.DENSE_POWER, F, y, y_new, t, t_new, spin, t_eval, ie, every, ts, ys, n_out, ev, n_ev, work
+            )
         if VARIANT > 0:
             # start the next stage iteration from this step's collocation polynomial
             for k in range(S):

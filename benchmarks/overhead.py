@@ -1,0 +1,93 @@
+"""Cost per right-hand-side evaluation against its floor, and the warm start of a second process."""
+from __future__ import annotations
+
+import json
+import statistics
+import subprocess
+import sys
+
+import numpy as np
+from numba import njit
+
+import knifeedge as ke
+from knifeedge.integrators import kernel
+
+from . import peers
+from .timing import median_time
+
+
+def _floor_loop(rhs_into):
+    @njit
+    def floor(n, y, p, dy):
+        # a compiled loop calling only the right-hand side; the tiny feedback keeps it from being hoisted
+        for _ in range(n):
+            rhs_into(0.0, y, p, dy)
+            y[0] += 1e-300 * dy[0]
+        return dy[0]
+
+    return floor
+
+
+def per_evaluation(scene, rtol=1e-10, repeats=7) -> dict:
+    """Seconds per rhs evaluation: the floor, the compiled DOP853 kernel, ``ke.simulate``, numbalsoda."""
+    m, p, y0 = scene.model, scene.p, scene.y
+    n = m.n_state
+    solve = kernel(m, "DOP853")
+    atol = np.full(n, rtol * 1e-6)
+    te = np.array([scene.t_end])
+    pair = np.full(n, -1, dtype=np.int64)
+    spin = m.index(m.spin_name)
+
+    def run_kernel():
+        return solve(0.0, scene.t_end, y0, p, rtol, atol, 0.0, np.inf, te, False, spin, 10**8, pair, False)
+
+    nfev = run_kernel()[4]
+    t_kernel = median_time(run_kernel, repeats)
+    t_api = median_time(lambda: ke.simulate(m, y0, (0.0, scene.t_end), p, rtol=rtol, atol=rtol * 1e-6, t_eval=te),
+                        repeats)
+    floor = _floor_loop(m.rhs_into)
+    y, dy = y0.copy(), np.empty(n)
+    t_floor = median_time(lambda: floor(nfev, y, p, dy), repeats)
+    out = {
+        "scene": scene.key, "rtol": rtol, "nfev": int(nfev),
+        "floor_ns": 1e9 * t_floor / nfev,
+        "dop853_kernel_ns": 1e9 * t_kernel / nfev,
+        "dop853_simulate_ns": 1e9 * t_api / nfev,
+    }
+    out["dop853_overhead_ns"] = out["dop853_kernel_ns"] - out["floor_ns"]
+    nb = peers.numbalsoda_runner(scene)
+    if nb is not None:
+        nb_nfev = nb(rtol, rtol * 1e-6)[2]
+        out["numbalsoda_nfev"] = int(nb_nfev)
+        out["numbalsoda_ns"] = 1e9 * median_time(lambda: nb(rtol, rtol * 1e-6), repeats) / nb_nfev
+        out["numbalsoda_overhead_ns"] = out["numbalsoda_ns"] - out["floor_ns"]
+    return out
+
+
+_WARM = r"""
+import json, time
+t0 = time.perf_counter()
+import knifeedge as ke
+t1 = time.perf_counter()
+m = ke.load("{model}")
+r = ke.simulate(m, {y0!r}, (0.0, {t_end!r}), {params!r}, method="{method}", {extra})
+t2 = time.perf_counter()
+print(json.dumps({{"import_s": t1 - t0, "simulate_s": t2 - t1, "success": bool(r.success)}}))
+"""
+
+
+def warm_start(scene, method="DOP853", extra="rtol=1e-10", runs=5) -> dict:
+    """A fresh Python process imports knifeedge and runs one simulation (cache already warm)."""
+    code = _WARM.format(model=scene.model_name, y0=scene.y0, t_end=scene.t_end, params=scene.params,
+                        method=method, extra=extra)
+    samples = []
+    for i in range(runs + 1):
+        out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+        if i:  # the first run may compile and fill the cache
+            samples.append(json.loads(out.stdout.strip().splitlines()[-1]))
+    return {
+        "scene": scene.key, "method": method, "runs": runs,
+        "import_s": statistics.median(s["import_s"] for s in samples),
+        "simulate_after_import_s": statistics.median(s["simulate_s"] for s in samples),
+        "success": all(s["success"] for s in samples),
+    }
