@@ -70,7 +70,7 @@ def draw(res: SceneResult, fig) -> None:
     a2.legend(fontsize=8)
     fig.suptitle(r"two-mode knife edge on the table: $\ell/L=1/2$, $D/\ell=1/2$, $\alpha=\pi/4$, "
                  r"$\dot\phi_0=0.1\sqrt{g/\ell}$", fontsize=10)
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, 0, 1, 0.92))
 
 
 SCENE = Scene(
