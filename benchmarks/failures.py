@@ -64,6 +64,7 @@ def largest_right_step(rows) -> dict:
 CONDITIONING = (
     [("DOP853", dict(rtol=r, atol=1e-12)) for r in (1e-8, 1e-9, 1e-10, 1e-11, 1e-12, 1e-13, 3e-14)]
     + [("DOP853", dict(rtol=r, atol=1e-30, error_control="mode")) for r in (1e-9, 1e-10, 1e-11, 1e-12, 1e-13, 3e-14)]
+    + [("DOP853", dict(rtol=1e-6, atol=1e-12, max_step=s)) for s in (1.0, 0.7, 0.5, 0.3, 0.2)]
     + [("DP54", dict(rtol=r, atol=1e-30)) for r in (1e-10, 1e-11, 1e-12, 1e-13)]
     + [("gauss6", dict(h=h)) for h in (0.4, 0.3, 0.2, 0.15, 0.1, 0.07, 0.05)]
     + [("gauss4", dict(h=h)) for h in (0.2, 0.1, 0.05, 0.03, 0.02)]
@@ -76,6 +77,8 @@ def _label(method, kw):
     if "h" in kw:
         return f"{method} h={kw['h']:g}"
     tail = ", mode" if kw.get("error_control") == "mode" else ""
+    if "max_step" in kw:
+        tail += f", max_step={kw['max_step']:g}"
     return f"{method} rtol={kw['rtol']:g}, atol={kw['atol']:g}{tail}"
 
 
@@ -101,11 +104,21 @@ def later_reversals(ref, t_end=12000.0, progress=print) -> list:
     return rows
 
 
+def variant(q) -> str:
+    """The method and how its steps are chosen: ``DOP853``, ``DOP853 mode``, ``DOP853 capped step``."""
+    s = q["settings"]
+    if s.get("error_control") == "mode":
+        return f"{q['method']} (mode error control)"
+    if "max_step" in s:
+        return f"{q['method']} (capped step, rtol 1e-6)"
+    return q["method"]
+
+
 def cheapest_converged(rows, tol=1e-3) -> dict:
-    """Per method: the cheapest setting keeping every later reversal within ``tol`` (relative)."""
+    """Per method variant: the cheapest setting keeping every later reversal within ``tol`` (relative)."""
     out = {}
-    for method in sorted({q["method"] for q in rows}):
-        ok = [q for q in rows if q["method"] == method and q["later_max_error"] <= tol]
+    for method in sorted({variant(q) for q in rows}):
+        ok = [q for q in rows if variant(q) == method and q["later_max_error"] <= tol]
         if ok:
             q = min(ok, key=lambda q: q["nfev"])
             out[method] = {"label": q["label"], "nfev": q["nfev"], "seconds": q["seconds"],

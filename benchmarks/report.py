@@ -121,16 +121,15 @@ def failures_chart(stab, wp_rows, later, ref_times_later, long, path: Path) -> N
     b.legend(fontsize=6)
     # (c) later reversals
     c = ax[1, 0]
-    for method, color in (("DOP853", "C0"), ("DP54", "C1"), ("RK4", "C2"), ("gauss4", "C3"), ("gauss6", "C4"),
-                          ("implicit_midpoint", "C5")):
-        for mode in (False, True):
-            pts = sorted((q["nfev"], q["later_max_error"]) for q in later if q["method"] == method
-                         and (q["settings"].get("error_control") == "mode") == mode)
-            if not pts:
-                continue
-            ys = [min(p[1], 1.0) for p in pts]
-            label = method + (" (mode error control, atol 1e-30)" if mode else "")
-            c.loglog([p[0] for p in pts], ys, marker="o", ms=4, color=color, ls="--" if mode else "-", label=label)
+    from .failures import variant
+
+    colors = {"DOP853": "C0", "DP54": "C1", "RK4": "C2", "gauss4": "C3", "gauss6": "C4", "implicit_midpoint": "C5"}
+    for name in sorted({variant(q) for q in later}):
+        pts = sorted((q["nfev"], q["later_max_error"]) for q in later if variant(q) == name)
+        base = name.split(" ")[0]
+        ls = "--" if "mode" in name else (":" if "capped" in name else "-")
+        c.loglog([p[0] for p in pts], [min(p[1], 1.0) for p in pts], marker="o", ms=4, color=colors[base], ls=ls,
+                 label=name)
     c.axhline(1e-3, color="k", lw=0.6, ls=":")
     c.set_xlabel("right-hand-side evaluations (two-mode scene, t = 0..12000)")
     c.set_ylabel("worst relative error of reversals 2..4 (1 = count wrong)")
