@@ -173,6 +173,10 @@ def test_later_reversals_need_the_small_mode_kept_accurate():
     assert gauss.reversal_times.size == tight.reversal_times.size == 4
     np.testing.assert_allclose(gauss.reversal_times, tight.reversal_times, rtol=3e-4)
     assert abs(common.reversal_times[1] / gauss.reversal_times[1] - 1) > 1e-2
+    # the setting docs/integrators.md recommends: loose rtol, step capped near T/9
+    capped = ke.simulate(m, TWO_Y0, span, p, method="DOP853", rtol=1e-6, max_step=0.7, t_eval=te)
+    assert capped.reversal_times.size == 4
+    np.testing.assert_allclose(capped.reversal_times, gauss.reversal_times, rtol=1e-3)
 
 
 # -- input validation -------------------------------------------------------------
