@@ -210,6 +210,9 @@ def test_kernel_source_imports_the_models_rhs(tmp_path):
     src = specialize.kernel_source("erk", 1, "knifeedge.generated.two_mode_full", "rhs_pose_into")
     assert "from knifeedge.generated.two_mode_full import rhs_pose_into as _rhs" in src
     assert "VARIANT = 1" in src and "templates._stub" not in src
+    # stage sums unrolled with the Dormand-Prince coefficients as literals (a21 = 1/5, b1 = 35/384)
+    assert "out[i] = y[i] + h * (0.2 * K[0, i])" in src and f"{35 / 384!r} * K[0, i]" in src
+    assert "elif s == 15:" in specialize.kernel_source("erk", 0, "m", "rhs_into")  # DOP853 + 3 dense stages
     with pytest.raises(ValueError, match="unknown kernel template"):
         specialize.kernel_source("euler", 0, "x", "y")
 

@@ -31,6 +31,7 @@ TEMPLATES = ("erk", "fixed")
 _DEPENDENCIES = ("common.py", "dop853_tableau.py", "rk_tableaus.py", "specialize.py")
 RHS_MARK = "# knifeedge:rhs"
 VARIANT_MARK = "# knifeedge:variant"
+STAGES_MARK = "# knifeedge:stages"
 _LOADED: dict = {}
 
 
@@ -74,8 +75,46 @@ def kernel_source(template: str, variant: int, rhs_module: str, rhs_name: str) -
         out.append(line)
     if seen != {RHS_MARK, VARIANT_MARK}:
         raise RuntimeError(f"kernel template {template}.py lacks its {RHS_MARK!r} or {VARIANT_MARK!r} line")
+    if template == "erk":
+        out = _unroll_stages(out, _erk_matrix(variant))
     header = f'# Specialized kernel: template {template}.py, variant {variant}, rhs {rhs_module}.{rhs_name}.\n'
     return header + "\n".join(out) + "\n"
+
+
+def _erk_matrix(variant: int):
+    """The stage matrix the ``erk`` template uses for ``variant`` (row ``N_STAGES`` holds the weights)."""
+    import numpy as np
+
+    from . import dop853_tableau, rk_tableaus
+
+    if variant == 0:
+        return dop853_tableau.A
+    A = np.zeros((7, 7))
+    A[:6, :5] = rk_tableaus.DP54_A
+    A[6, :6] = rk_tableaus.DP54_B
+    return A
+
+
+def _unroll_stages(lines: list, A) -> list:
+    """Replace the body of the function marked ``# knifeedge:stages`` by one branch per stage.
+
+    Each branch sums the nonzero ``A[s, j] * K[j, i]`` left to right with the
+    coefficients as literals (``repr`` round-trips), so the result is bit for
+    bit the generic loop's, without its branches and table loads.
+    """
+    start = next(k for k, line in enumerate(lines) if line.rstrip().endswith(STAGES_MARK))
+    end = start + 1
+    while end < len(lines) and (lines[end].startswith(" ") or not lines[end].strip()):
+        end += 1
+    while not lines[end - 1].strip():
+        end -= 1
+    body = ["    n = y.size"]
+    for s in range(1, A.shape[0]):
+        terms = [f"{float(A[s, j])!r} * K[{j}, i]" for j in range(s) if A[s, j] != 0.0]
+        body.append(f"    {'if' if s == 1 else 'elif'} s == {s}:")
+        body.append("        for i in range(n):")
+        body.append(f"            out[i] = y[i] + h * ({' + '.join(terms) if terms else '0.0'})")
+    return lines[: start + 1] + body + lines[end:]
 
 
 def _key(source: str, rhs_file: str) -> str:
