@@ -42,6 +42,16 @@ def _as_published(amp: averaging.AmplitudeSystem) -> dict:
     return {amp.amplitudes[0]: pub.A_theta, amp.spin_amplitudes[0]: pub.A_phi}
 
 
+def published_flow(system: ReducedSystem) -> dict:
+    """The single-mode slow flow in the paper's symbols: ``{A_theta_dot: ..., A_phi_dot: ...}``."""
+    from . import published as pub
+
+    amp = amplitude_system(system)
+    rename = _as_published(amp)
+    dots = {pub.A_theta: pub.A_theta_dot, pub.A_phi: pub.A_phi_dot}
+    return {dots[rename[s]]: r.subs(rename, simultaneous=True) for s, r in zip(amp.state, amp.rates)}
+
+
 def _invariant(lhs, rhs, system):
     from .verify import Evidence
 
