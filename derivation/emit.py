@@ -25,28 +25,19 @@ from .engine import ReducedSystem
 GENERATOR = "derivation/emit.py (make derive)"
 
 class _Printer(PythonCodePrinter):
-    """Python printer with bare ``math`` names and integer powers as products."""
+    """Python printer with bare ``math`` names and small integer powers as products.
+
+    A power printed as a product is always parenthesized, ``(L*L)``, so that
+    it keeps its precedence wherever the printer of the enclosing expression
+    places it (``x/(L*L)``, never ``x/L*L``).
+    """
 
     def _print_Pow(self, expr, rational=False):
         b, e = expr.args
-        if e.is_Integer and 1 < int(e) <= 4:
-            base = self.parenthesize(b, 100)
-            return "*".join([base] * int(e))
-        if e.is_Integer and -4 <= int(e) < 0:
-            base = self.parenthesize(b, 100)
-            return "(1.0/(" + "*".join([base] * -int(e)) + "))"
+        if e.is_Integer and 1 < abs(int(e)) <= 4:
+            product = "(" + "*".join([self.parenthesize(b, 100)] * abs(int(e))) + ")"
+            return product if int(e) > 0 else f"(1.0/{product})"
         return super()._print_Pow(expr, rational=rational)
-
-    def _print_Mul(self, expr):
-        # A single denominator printed by _print_Pow as a product needs parentheses:
-        # x/L**2 must print as x/(L*L), not x/L*L.
-        out = super()._print_Mul(expr)
-        den = [f for f in sp.Mul.make_args(expr) if f.is_Pow and f.exp.is_Rational and f.exp.is_negative]
-        if len(den) == 1 and den[0].exp.is_Integer and -4 <= int(den[0].exp) <= -2:
-            tail = "/" + self._print(sp.Pow(den[0].base, -den[0].exp, evaluate=False))
-            if out.endswith(tail):
-                out = out[: -len(tail)] + "/(" + tail[1:] + ")"
-        return out
 
     def _print_Rational(self, expr):
         return f"({float(expr.p)!r}/{float(expr.q)!r})"

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'chaplygin_sleigh',
 constraints knife_edge) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:bcd03e4c2c3c4747e1ca0b4945076faadc0fa8e67e93fad7327d057f437b73d0
+SymPy 1.14.0; input hash sha256:d97294ddd232181fd6e915440970836b878fb403a5fc744f09adb1417e0e24d1
 
 Chaplygin sleigh: a rigid body on the plane with a knife edge at its rear contact point (x, y) that forbids sideways motion; heading phi, centre of mass at distance a ahead of the contact, radius of gyration k about the centre of mass; v is the speed along the axis.
 
@@ -34,7 +34,7 @@ TILT_NAMES = ()
 #: the spin rate, whose zero crossings are the spin reversals
 SPIN_NAME = "phi_dot"
 MULTIPLIER_NAMES = ('knife_edge',)
-INPUT_HASH = 'bcd03e4c2c3c4747e1ca0b4945076faadc0fa8e67e93fad7327d057f437b73d0'
+INPUT_HASH = 'd97294ddd232181fd6e915440970836b878fb403a5fc744f09adb1417e0e24d1'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {"rhs": 9, "rhs_pose": 13, "pose_rates": 4, "energy": 9, "multipliers": 6}
@@ -47,8 +47,8 @@ def rhs_into(t, s, p, ds):
     phi_dot = s[1]
     a = p[0]
     k = p[1]
-    ds[0] = a*phi_dot*phi_dot
-    ds[1] = -a*phi_dot*v/(a*a + k*k)
+    ds[0] = a*(phi_dot*phi_dot)
+    ds[1] = -a*phi_dot*v/((a*a) + (k*k))
 
 
 @njit(cache=True)
@@ -69,8 +69,8 @@ def rhs_pose_into(t, s, p, ds):
     y = s[4]
     a = p[0]
     k = p[1]
-    ds[0] = a*phi_dot*phi_dot
-    ds[1] = -a*phi_dot*v/(a*a + k*k)
+    ds[0] = a*(phi_dot*phi_dot)
+    ds[1] = -a*phi_dot*v/((a*a) + (k*k))
     ds[2] = phi_dot
     ds[3] = v*math.cos(phi)
     ds[4] = v*math.sin(phi)
@@ -108,7 +108,7 @@ def energy(s, p):
     phi_dot = s[1]
     a = p[0]
     k = p[1]
-    energy = ((1.0/2.0))*phi_dot*phi_dot*(a*a + k*k) + ((1.0/2.0))*v*v
+    energy = ((1.0/2.0))*(phi_dot*phi_dot)*((a*a) + (k*k)) + ((1.0/2.0))*(v*v)
     return energy
 
 
@@ -120,6 +120,6 @@ def multipliers(s, p):
     phi_dot = s[1]
     a = p[0]
     k = p[1]
-    _c0 = k*k
-    out[0] = _c0*phi_dot*v/(_c0 + a*a)
+    _c0 = (k*k)
+    out[0] = _c0*phi_dot*v/(_c0 + (a*a))
     return out

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:674962c667da7217fa1ccccf1a9a950ea87fde480f4244a3c7677ea9a514bf1e
+SymPy 1.14.0; input hash sha256:ace92e545e857afc9c931ffcf138852c2e6f86e2eccf4b16521d1b70987b5372
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -42,7 +42,7 @@ SPIN_NAME = 'A_phi'
 MULTIPLIER_NAMES = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy',)
-INPUT_HASH = '674962c667da7217fa1ccccf1a9a950ea87fde480f4244a3c7677ea9a514bf1e'
+INPUT_HASH = 'ace92e545e857afc9c931ffcf138852c2e6f86e2eccf4b16521d1b70987b5372'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 10, 'energy': 9, 'invariants': 9, 'frequencies': 5, 'growth_rates': 2, 'drive_rates': 5}
@@ -59,7 +59,7 @@ def rhs_into(t, s, p, ds):
     D = p[3]
     _c0 = ((1.0/2.0))*D
     ds[0] = A_phi*A_theta*_c0/ell
-    ds[1] = -A_theta*A_theta*_c0*g/(L*L)
+    ds[1] = -(A_theta*A_theta)*_c0*g/(L*L)
 
 
 @njit(cache=True)
@@ -79,7 +79,7 @@ def energy(s, p):
     ell = p[1]
     L = p[2]
     D = p[3]
-    energy = ((1.0/2.0))*A_phi*A_phi*L*L + ((1.0/2.0))*A_theta*A_theta*ell*g
+    energy = ((1.0/2.0))*(A_phi*A_phi)*(L*L) + ((1.0/2.0))*(A_theta*A_theta)*ell*g
     return energy
 
 
@@ -93,7 +93,7 @@ def invariants(s, p):
     ell = p[1]
     L = p[2]
     D = p[3]
-    out[0] = ((1.0/2.0))*A_phi*A_phi*L*L + ((1.0/2.0))*A_theta*A_theta*ell*g
+    out[0] = ((1.0/2.0))*(A_phi*A_phi)*(L*L) + ((1.0/2.0))*(A_theta*A_theta)*ell*g
     return out
 
 

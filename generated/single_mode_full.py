@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:a9857091bfd469c737490ac6d1a3591a66fb1348f54a11e7fa0a6e7be4f06860
+SymPy 1.14.0; input hash sha256:9d8deab671ab243f81f800e078d5598aca7565d9d2ada8b7f63156862d77a0c4
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -37,7 +37,7 @@ TILT_NAMES = ('theta',)
 #: the spin rate, whose zero crossings are the spin reversals
 SPIN_NAME = "phi_dot"
 MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
-INPUT_HASH = 'a9857091bfd469c737490ac6d1a3591a66fb1348f54a11e7fa0a6e7be4f06860'
+INPUT_HASH = '9d8deab671ab243f81f800e078d5598aca7565d9d2ada8b7f63156862d77a0c4'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {"rhs": 20, "rhs_pose": 27, "pose_rates": 7, "energy": 23, "multipliers": 7}
@@ -53,11 +53,11 @@ def rhs_into(t, s, p, ds):
     ell = p[1]
     L = p[2]
     D = p[3]
-    _c0 = L*L
-    _c1 = (1.0/(_c0))
+    _c0 = (L*L)
+    _c1 = 1/_c0
     ds[0] = theta_dot
-    ds[1] = _c1*(-D*D*g*theta*theta*theta + D*_c0*phi_dot*theta_dot - _c0*g*theta)/ell
-    ds[2] = -D*_c1*g*theta*theta
+    ds[1] = _c1*(-(D*D)*g*(theta*theta*theta) + D*_c0*phi_dot*theta_dot - _c0*g*theta)/ell
+    ds[2] = -D*_c1*g*(theta*theta)
 
 
 @njit(cache=True)
@@ -81,12 +81,12 @@ def rhs_pose_into(t, s, p, ds):
     ell = p[1]
     L = p[2]
     D = p[3]
-    _c0 = L*L
-    _c1 = (1.0/(_c0))
+    _c0 = (L*L)
+    _c1 = 1/_c0
     _c2 = D*phi_dot*theta
     ds[0] = theta_dot
-    ds[1] = _c1*(-D*D*g*theta*theta*theta + D*_c0*phi_dot*theta_dot - _c0*g*theta)/ell
-    ds[2] = -D*_c1*g*theta*theta
+    ds[1] = _c1*(-(D*D)*g*(theta*theta*theta) + D*_c0*phi_dot*theta_dot - _c0*g*theta)/ell
+    ds[2] = -D*_c1*g*(theta*theta)
     ds[3] = phi_dot
     ds[4] = _c2*math.sin(phi)
     ds[5] = -_c2*math.cos(phi)
@@ -131,9 +131,9 @@ def energy(s, p):
     ell = p[1]
     L = p[2]
     D = p[3]
-    _c0 = theta*theta
-    _c1 = ((1.0/2.0))*phi_dot*phi_dot
-    energy = D*D*_c0*_c1 - D*ell*phi_dot*theta*theta_dot + L*L*_c1 + ((1.0/2.0))*_c0*ell*g + ((1.0/2.0))*ell*ell*theta_dot*theta_dot
+    _c0 = (theta*theta)
+    _c1 = ((1.0/2.0))*(phi_dot*phi_dot)
+    energy = (D*D)*_c0*_c1 - D*ell*phi_dot*theta*theta_dot + (L*L)*_c1 + ((1.0/2.0))*_c0*ell*g + ((1.0/2.0))*(ell*ell)*(theta_dot*theta_dot)
     return energy
 
 

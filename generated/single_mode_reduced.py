@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py and derivation/truncation.py.
-SymPy 1.14.0; input hash sha256:052244cd26be30b2b7ce25450e48eb96433b41bf103789aadd41e688dedf48e5
+SymPy 1.14.0; input hash sha256:f628b50197bd17e48ca2a2efe3ea3b92117e0f26cb67b5cd8abda3d59c2c8d2e
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -37,7 +37,7 @@ TILT_NAMES = ('theta',)
 #: the spin rate, whose zero crossings are the spin reversals
 SPIN_NAME = "phi_dot"
 MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
-INPUT_HASH = '052244cd26be30b2b7ce25450e48eb96433b41bf103789aadd41e688dedf48e5'
+INPUT_HASH = 'f628b50197bd17e48ca2a2efe3ea3b92117e0f26cb67b5cd8abda3d59c2c8d2e'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {"rhs": 11, "rhs_pose": 17, "pose_rates": 7, "energy": 23, "multipliers": 7}
@@ -55,7 +55,7 @@ def rhs_into(t, s, p, ds):
     D = p[3]
     ds[0] = theta_dot
     ds[1] = (D*phi_dot*theta_dot - g*theta)/ell
-    ds[2] = -D*g*theta*theta/(L*L)
+    ds[2] = -D*g*(theta*theta)/(L*L)
 
 
 @njit(cache=True)
@@ -83,7 +83,7 @@ def rhs_pose_into(t, s, p, ds):
     _c1 = _c0*theta
     ds[0] = theta_dot
     ds[1] = (_c0*theta_dot - g*theta)/ell
-    ds[2] = -D*g*theta*theta/(L*L)
+    ds[2] = -D*g*(theta*theta)/(L*L)
     ds[3] = phi_dot
     ds[4] = _c1*math.sin(phi)
     ds[5] = -_c1*math.cos(phi)
@@ -128,9 +128,9 @@ def energy(s, p):
     ell = p[1]
     L = p[2]
     D = p[3]
-    _c0 = theta*theta
-    _c1 = ((1.0/2.0))*phi_dot*phi_dot
-    energy = D*D*_c0*_c1 - D*ell*phi_dot*theta*theta_dot + L*L*_c1 + ((1.0/2.0))*_c0*ell*g + ((1.0/2.0))*ell*ell*theta_dot*theta_dot
+    _c0 = (theta*theta)
+    _c1 = ((1.0/2.0))*(phi_dot*phi_dot)
+    energy = (D*D)*_c0*_c1 - D*ell*phi_dot*theta*theta_dot + (L*L)*_c1 + ((1.0/2.0))*_c0*ell*g + ((1.0/2.0))*(ell*ell)*(theta_dot*theta_dot)
     return energy
 
 

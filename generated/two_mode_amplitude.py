@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:88ebdb97cda7fa885c77bc92825fdda2ecef377b0a703e7e2fb0a5e863a4eb47
+SymPy 1.14.0; input hash sha256:e0474eca9462cf4356ac10e71c142211bd9079d0361a86d74342abb00a7d7ecb
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -46,7 +46,7 @@ SPIN_NAME = 'A_phi'
 MULTIPLIER_NAMES = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy', 'log_A1_A2')
-INPUT_HASH = '88ebdb97cda7fa885c77bc92825fdda2ecef377b0a703e7e2fb0a5e863a4eb47'
+INPUT_HASH = 'e0474eca9462cf4356ac10e71c142211bd9079d0361a86d74342abb00a7d7ecb'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 24, 'energy': 12, 'invariants': 19, 'frequencies': 12, 'growth_rates': 11, 'drive_rates': 12}
@@ -65,13 +65,13 @@ def rhs_into(t, s, p, ds):
     alpha = p[4]
     _c0 = ((1.0/4.0))*D*math.sin(2*alpha)
     _c1 = A_phi*_c0
-    _c2 = L*L
-    _c3 = ell*ell
+    _c2 = (L*L)
+    _c3 = (ell*ell)
     _c4 = _c2 + _c3
-    _c5 = (1.0/(_c4))
+    _c5 = 1/_c4
     ds[0] = -A1*_c1/ell
     ds[1] = A2*_c1*_c5*ell
-    ds[2] = _c0*_c5*g*(A1*A1*_c4 - A2*A2*_c3)/_c2
+    ds[2] = _c0*_c5*g*((A1*A1)*_c4 - (A2*A2)*_c3)/_c2
 
 
 @njit(cache=True)
@@ -94,7 +94,7 @@ def energy(s, p):
     D = p[3]
     alpha = p[4]
     _c0 = ((1.0/2.0))*ell*g
-    energy = A1*A1*_c0 + A2*A2*_c0 + ((1.0/2.0))*A_phi*A_phi*L*L
+    energy = (A1*A1)*_c0 + (A2*A2)*_c0 + ((1.0/2.0))*(A_phi*A_phi)*(L*L)
     return energy
 
 
@@ -111,9 +111,9 @@ def invariants(s, p):
     D = p[3]
     alpha = p[4]
     _c0 = ((1.0/2.0))*ell*g
-    _c1 = L*L
-    _c2 = ell*ell
-    out[0] = A1*A1*_c0 + A2*A2*_c0 + ((1.0/2.0))*A_phi*A_phi*_c1
+    _c1 = (L*L)
+    _c2 = (ell*ell)
+    out[0] = (A1*A1)*_c0 + (A2*A2)*_c0 + ((1.0/2.0))*(A_phi*A_phi)*_c1
     out[1] = _c2*math.log(A1)/(_c1 + _c2) + math.log(A2)
     return out
 
@@ -130,7 +130,7 @@ def frequencies(p):
     _c0 = math.sqrt(ell)
     _c1 = math.sqrt(g)
     out[0] = _c1/_c0
-    out[1] = _c0*_c1/math.sqrt(L*L + ell*ell)
+    out[1] = _c0*_c1/math.sqrt((L*L) + (ell*ell))
     return out
 
 
@@ -145,7 +145,7 @@ def growth_rates(p):
     alpha = p[4]
     _c0 = ((1.0/4.0))*D*math.sin(2*alpha)
     out[0] = -_c0/ell
-    out[1] = _c0*ell/(L*L + ell*ell)
+    out[1] = _c0*ell/((L*L) + (ell*ell))
     return out
 
 
@@ -158,9 +158,9 @@ def drive_rates(p):
     L = p[2]
     D = p[3]
     alpha = p[4]
-    _c0 = L*L
+    _c0 = (L*L)
     _c1 = ((1.0/4.0))*D*g*math.sin(2*alpha)/_c0
-    _c2 = ell*ell
+    _c2 = (ell*ell)
     out[0] = _c1
     out[1] = -_c1*_c2/(_c0 + _c2)
     return out

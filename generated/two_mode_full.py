@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:d0323514d096f17fef208d68c0f0b20cab745250bb34305892c85a2b474b71ea
+SymPy 1.14.0; input hash sha256:bf4b98d2a0bf51aafa6a5cc63d90be9ff8a3a3d431788eae7e4c6418ef64c067
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -40,7 +40,7 @@ TILT_NAMES = ('theta1', 'theta2')
 #: the spin rate, whose zero crossings are the spin reversals
 SPIN_NAME = "phi_dot"
 MULTIPLIER_NAMES = ('Const22', 'Const23')
-INPUT_HASH = 'd0323514d096f17fef208d68c0f0b20cab745250bb34305892c85a2b474b71ea'
+INPUT_HASH = 'bf4b98d2a0bf51aafa6a5cc63d90be9ff8a3a3d431788eae7e4c6418ef64c067'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {"rhs": 152, "rhs_pose": 166, "pose_rates": 13, "energy": 58, "multipliers": 166}
@@ -59,33 +59,33 @@ def rhs_into(t, s, p, ds):
     L = p[2]
     D = p[3]
     alpha = p[4]
-    _c0 = L*L
+    _c0 = (L*L)
     _c1 = 2*_c0
-    _c2 = ell*ell
+    _c2 = (ell*ell)
     _c3 = _c0 + _c2
     _c4 = _c3*g
     _c5 = math.sin(2*alpha)
     _c6 = D*phi_dot
     _c7 = _c6*theta1_dot
-    _c8 = D*D
+    _c8 = (D*D)
     _c9 = math.cos(alpha)
     _c10 = math.sin(alpha)
     _c11 = 2*_c2
-    _c12 = theta2*theta2*theta2
-    _c13 = _c9*_c9
-    _c14 = _c10*_c10
+    _c12 = (theta2*theta2*theta2)
+    _c13 = (_c9*_c9)
+    _c14 = (_c10*_c10)
     _c15 = _c13*_c2
-    _c16 = _c8*g*theta1*theta1*theta1
+    _c16 = _c8*g*(theta1*theta1*theta1)
     _c17 = 3*_c15
-    _c18 = theta2*theta2
+    _c18 = (theta2*theta2)
     _c19 = _c18*g
     _c20 = _c8*theta1
-    _c21 = theta1*theta1
+    _c21 = (theta1*theta1)
     _c22 = -_c2
     _c23 = 8*_c0
-    _c24 = _c10*_c10*_c10*_c10
+    _c24 = (_c10*_c10*_c10*_c10)
     _c25 = 8*_c21*_c8
-    _c26 = _c10*_c10*_c10*_c9
+    _c26 = (_c10*_c10*_c10)*_c9
     _c27 = _c26*theta2
     _c28 = math.cos(4*alpha) - 1
     _c29 = 1/(_c0*(-_c18*_c28*_c8 + 8*_c2 - 16*_c20*_c27 + _c23 + _c24*_c25))
@@ -96,7 +96,7 @@ def rhs_into(t, s, p, ds):
     _c34 = _c6*theta2_dot
     ds[0] = theta1_dot
     ds[1] = theta2_dot
-    ds[2] = 4*_c29*(2*D*_c0*_c13*_c3*phi_dot*theta2_dot - _c0*_c3*_c5*_c7 - _c1*_c4*theta1 - _c10*_c11*_c12*_c8*_c9*_c9*_c9*g - 2*_c13*_c19*_c20*(_c0 - _c11 + _c17) - 2*_c14*_c16*(_c0 + _c15) + _c21*_c5*_c8*g*theta2*(_c1 + _c17 + _c22))/ell
+    ds[2] = 4*_c29*(2*D*_c0*_c13*_c3*phi_dot*theta2_dot - _c0*_c3*_c5*_c7 - _c1*_c4*theta1 - _c10*_c11*_c12*_c8*(_c9*_c9*_c9)*g - 2*_c13*_c19*_c20*(_c0 - _c11 + _c17) - 2*_c14*_c16*(_c0 + _c15) + _c21*_c5*_c8*g*theta2*(_c1 + _c17 + _c22))/ell
     ds[3] = _c29*ell*(4*D*_c0*_c5*phi_dot*theta2_dot + _c12*_c28*_c8*g - _c14*_c25*_c30*(3*_c14 - 2) - _c14*_c31 - 8*_c16*_c26 - _c20*_c33*(3*_c13 - 2) - _c23*_c30)
     ds[4] = D*_c29*(_c0*_c28*_c34*theta2 - _c2*_c33 + _c21*_c32*_c4 + _c23*_c26*_c34*theta1 - _c24*_c31*theta1 + _c27*_c31 - 8*_c30*theta1*(_c0*_c13 + 2*_c15 + _c22))
 
@@ -125,34 +125,34 @@ def rhs_pose_into(t, s, p, ds):
     L = p[2]
     D = p[3]
     alpha = p[4]
-    _c0 = L*L
+    _c0 = (L*L)
     _c1 = 2*_c0
-    _c2 = ell*ell
+    _c2 = (ell*ell)
     _c3 = _c0 + _c2
     _c4 = _c3*g
     _c5 = math.sin(2*alpha)
     _c6 = D*phi_dot
     _c7 = _c6*theta1_dot
     _c8 = math.sin(alpha)
-    _c9 = D*D
+    _c9 = (D*D)
     _c10 = math.cos(alpha)
     _c11 = 2*_c2
-    _c12 = theta2*theta2*theta2
-    _c13 = _c10*_c10
-    _c14 = _c8*_c8
+    _c12 = (theta2*theta2*theta2)
+    _c13 = (_c10*_c10)
+    _c14 = (_c8*_c8)
     _c15 = _c13*_c2
-    _c16 = g*theta1*theta1*theta1
+    _c16 = g*(theta1*theta1*theta1)
     _c17 = 2*_c9
     _c18 = 3*_c15
-    _c19 = theta2*theta2
+    _c19 = (theta2*theta2)
     _c20 = _c19*g
-    _c21 = theta1*theta1
+    _c21 = (theta1*theta1)
     _c22 = -_c2
     _c23 = 8*_c0
-    _c24 = _c8*_c8*_c8*_c8
+    _c24 = (_c8*_c8*_c8*_c8)
     _c25 = 8*_c21*_c9
     _c26 = _c10*theta2
-    _c27 = _c8*_c8*_c8
+    _c27 = (_c8*_c8*_c8)
     _c28 = _c27*_c9
     _c29 = math.cos(4*alpha) - 1
     _c30 = 1/(_c0*(-_c19*_c29*_c9 + 8*_c2 + _c23 + _c24*_c25 - 16*_c26*_c28*theta1))
@@ -165,7 +165,7 @@ def rhs_pose_into(t, s, p, ds):
     _c37 = _c6*(_c10*theta2 - _c8*theta1)
     ds[0] = theta1_dot
     ds[1] = theta2_dot
-    ds[2] = 4*_c30*(2*D*_c0*_c13*_c3*phi_dot*theta2_dot - _c0*_c3*_c5*_c7 - _c1*_c4*theta1 - _c10*_c10*_c10*_c11*_c12*_c8*_c9*g - _c13*_c17*_c20*theta1*(_c0 - _c11 + _c18) - _c14*_c16*_c17*(_c0 + _c15) + _c21*_c5*_c9*g*theta2*(_c1 + _c18 + _c22))/ell
+    ds[2] = 4*_c30*(2*D*_c0*_c13*_c3*phi_dot*theta2_dot - _c0*_c3*_c5*_c7 - _c1*_c4*theta1 - (_c10*_c10*_c10)*_c11*_c12*_c8*_c9*g - _c13*_c17*_c20*theta1*(_c0 - _c11 + _c18) - _c14*_c16*_c17*(_c0 + _c15) + _c21*_c5*_c9*g*theta2*(_c1 + _c18 + _c22))/ell
     ds[3] = _c30*ell*(4*D*_c0*_c5*phi_dot*theta2_dot - 8*_c10*_c16*_c28 + _c12*_c29*_c9*g - _c14*_c25*_c31*(3*_c14 - 2) - _c14*_c32 - _c23*_c31 - _c34*_c9*theta1*(3*_c13 - 2))
     ds[4] = D*_c30*(_c0*_c29*_c35*theta2 + _c10*_c23*_c27*_c35*theta1 - _c2*_c34 + _c21*_c33*_c4 - _c24*_c32*theta1 + _c26*_c27*_c32 - 8*_c31*theta1*(_c0*_c13 + 2*_c15 + _c22))
     ds[5] = phi_dot
@@ -219,22 +219,22 @@ def energy(s, p):
     L = p[2]
     D = p[3]
     alpha = p[4]
-    _c0 = theta1*theta1
+    _c0 = (theta1*theta1)
     _c1 = ((1.0/2.0))*ell
     _c2 = _c1*g
-    _c3 = theta2*theta2
-    _c4 = L*L
-    _c5 = ((1.0/2.0))*phi_dot*phi_dot
-    _c6 = ell*ell
-    _c7 = (math.sin(alpha))*(math.sin(alpha))
+    _c3 = (theta2*theta2)
+    _c4 = (L*L)
+    _c5 = ((1.0/2.0))*(phi_dot*phi_dot)
+    _c6 = (ell*ell)
+    _c7 = ((math.sin(alpha))*(math.sin(alpha)))
     _c8 = D*phi_dot
     _c9 = _c8*ell
     _c10 = math.sin(2*alpha)
     _c11 = _c10*theta1
     _c12 = _c1*_c8
-    _c13 = (math.cos(alpha))*(math.cos(alpha))
-    _c14 = D*D*_c5
-    energy = _c0*_c14*_c7 + _c0*_c2 - _c10*_c12*theta2*theta2_dot + _c11*_c12*theta1_dot - _c11*_c14*theta2 + _c13*_c14*_c3 - _c13*_c9*theta1_dot*theta2 + _c2*_c3 + _c4*_c5 + ((1.0/2.0))*_c6*theta1_dot*theta1_dot + _c7*_c9*theta1*theta2_dot + ((1.0/2.0))*theta2_dot*theta2_dot*(_c4 + _c6)
+    _c13 = ((math.cos(alpha))*(math.cos(alpha)))
+    _c14 = (D*D)*_c5
+    energy = _c0*_c14*_c7 + _c0*_c2 - _c10*_c12*theta2*theta2_dot + _c11*_c12*theta1_dot - _c11*_c14*theta2 + _c13*_c14*_c3 - _c13*_c9*theta1_dot*theta2 + _c2*_c3 + _c4*_c5 + ((1.0/2.0))*_c6*(theta1_dot*theta1_dot) + _c7*_c9*theta1*theta2_dot + ((1.0/2.0))*(theta2_dot*theta2_dot)*(_c4 + _c6)
     return energy
 
 
@@ -252,36 +252,36 @@ def multipliers(s, p):
     L = p[2]
     D = p[3]
     alpha = p[4]
-    _c0 = L*L
-    _c1 = ell*ell
+    _c0 = (L*L)
+    _c1 = (ell*ell)
     _c2 = 8*_c1
-    _c3 = D*D
+    _c3 = (D*D)
     _c4 = 8*_c3
-    _c5 = theta1*theta1
+    _c5 = (theta1*theta1)
     _c6 = math.sin(alpha)
-    _c7 = _c6*_c6*_c6*_c6
+    _c7 = (_c6*_c6*_c6*_c6)
     _c8 = _c5*_c7
     _c9 = _c4*_c8
     _c10 = math.cos(alpha)
     _c11 = _c10*theta2
-    _c12 = _c6*_c6*_c6
+    _c12 = (_c6*_c6*_c6)
     _c13 = _c3*theta1
     _c14 = 16*_c13
     _c15 = _c12*_c14
     _c16 = math.cos(4*alpha) - 1
-    _c17 = theta2*theta2
+    _c17 = (theta2*theta2)
     _c18 = _c17*_c3
     _c19 = _c16*_c18
-    _c20 = (1.0/((8*_c0 - _c11*_c15 - _c19 + _c2 + _c9)))
+    _c20 = 1/(8*_c0 - _c11*_c15 - _c19 + _c2 + _c9)
     _c21 = _c10*g
     _c22 = _c2*theta2
-    _c23 = theta1*theta1*theta1
+    _c23 = (theta1*theta1*theta1)
     _c24 = _c6*g
     _c25 = 8*_c0 + 8*_c1
     _c26 = _c25*theta1
     _c27 = _c6**5
-    _c28 = phi_dot*phi_dot
-    _c29 = D*D*D*_c28
+    _c28 = (phi_dot*phi_dot)
+    _c29 = (D*D*D)*_c28
     _c30 = _c4*_c5
     _c31 = ell*phi_dot
     _c32 = D*_c28
@@ -293,12 +293,12 @@ def multipliers(s, p):
     _c38 = _c31*_c9
     _c39 = _c19*_c31
     _c40 = _c6*theta2_dot
-    _c41 = _c10*_c10
+    _c41 = (_c10*_c10)
     _c42 = _c16*_c29
-    _c43 = _c0*ell + ell*ell*ell
-    _c44 = D*_c0*_c6*_c6 + _c43
+    _c43 = _c0*ell + (ell*ell*ell)
+    _c44 = D*_c0*(_c6*_c6) + _c43
     _c45 = 8*phi_dot
     _c46 = _c44*_c45
-    out[0] = _c20*(-_c10*_c42*theta2*theta2*theta2 + _c11*_c25*_c32 + 24*_c11*_c29*_c8 - _c12*_c23*_c4*g + _c15*_c35*_c41*theta1_dot + 3*_c17*_c42*_c6*theta1 - 4*_c18*_c21*_c33*theta1 + _c21*_c22 - 8*_c23*_c27*_c29 - _c24*_c26 + _c24*_c30*_c33*theta2 - _c26*_c32*_c6 - _c27*_c30*_c31*theta2_dot + _c34*_c36 - _c37*_c38 + _c37*_c39 - _c37*_c46 + _c39*_c40 + _c40*_c45*(D*_c0*_c41 - _c43))
+    out[0] = _c20*(-_c10*_c42*(theta2*theta2*theta2) + _c11*_c25*_c32 + 24*_c11*_c29*_c8 - _c12*_c23*_c4*g + _c15*_c35*_c41*theta1_dot + 3*_c17*_c42*_c6*theta1 - 4*_c18*_c21*_c33*theta1 + _c21*_c22 - 8*_c23*_c27*_c29 - _c24*_c26 + _c24*_c30*_c33*theta2 - _c26*_c32*_c6 - _c27*_c30*_c31*theta2_dot + _c34*_c36 - _c37*_c38 + _c37*_c39 - _c37*_c46 + _c39*_c40 + _c40*_c45*(D*_c0*_c41 - _c43))
     out[1] = _c20*(_c10*_c16*_c17*_c3*ell*phi_dot*theta2_dot - 2*_c13*_c16*_c35*_c40 - _c21*_c26 - _c22*_c24 + 8*_c27*_c3*_c5*ell*phi_dot*theta1_dot - _c34*_c38 - _c34*_c46 - _c36*_c37 - _c39*_c6*theta1_dot + 8*_c44*_c6*phi_dot*theta1_dot)
     return out

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py and derivation/truncation.py.
-SymPy 1.14.0; input hash sha256:6db8ad1df61a861cfb605a385b8a0eb5b755ad592cab097441a1c4ec830d2455
+SymPy 1.14.0; input hash sha256:4c3e77b466cdbfb769fffeaa5f31cf3511a8c131429e42768db6415b6e33c206
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -40,7 +40,7 @@ TILT_NAMES = ('theta1', 'theta2')
 #: the spin rate, whose zero crossings are the spin reversals
 SPIN_NAME = "phi_dot"
 MULTIPLIER_NAMES = ('Const22', 'Const23')
-INPUT_HASH = '6db8ad1df61a861cfb605a385b8a0eb5b755ad592cab097441a1c4ec830d2455'
+INPUT_HASH = '4c3e77b466cdbfb769fffeaa5f31cf3511a8c131429e42768db6415b6e33c206'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {"rhs": 80, "rhs_pose": 91, "pose_rates": 13, "energy": 58, "multipliers": 56}
@@ -63,23 +63,23 @@ def rhs_into(t, s, p, ds):
     _c1 = math.sin(2*alpha)
     _c2 = D*phi_dot
     _c3 = math.cos(alpha)
-    _c4 = _c3*_c3
-    _c5 = L*L
-    _c6 = ell*ell
+    _c4 = (_c3*_c3)
+    _c5 = (L*L)
+    _c6 = (ell*ell)
     _c7 = _c5 + _c6
-    _c8 = (1.0/(_c7))
+    _c8 = 1/_c7
     _c9 = math.sin(alpha)
     _c10 = _c2*theta1_dot
     _c11 = 4*_c1*g
     _c12 = 8*theta1
     _c13 = _c10*_c5
     _c14 = _c2*_c5*theta2_dot
-    _c15 = _c3*_c9*_c9*_c9
+    _c15 = _c3*(_c9*_c9*_c9)
     ds[0] = theta1_dot
     ds[1] = theta2_dot
     ds[2] = ((1.0/2.0))*(2*D*_c4*phi_dot*theta2_dot - _c0*theta1 - _c1*_c2*theta1_dot)/ell
-    ds[3] = ((1.0/2.0))*_c8*ell*(D*_c1*phi_dot*theta2_dot - _c0*theta2 - 2*_c10*_c9*_c9)
-    ds[4] = ((1.0/8.0))*D*_c8*(-_c11*_c6*theta2*theta2 + _c11*_c7*theta1*theta1 - _c12*_c13*_c9*_c9*_c9*_c9 + _c12*_c14*_c15 - _c12*g*theta2*(_c4*_c5 + 2*_c4*_c6 - _c6) + 8*_c13*_c15*theta2 + _c14*theta2*(math.cos(4*alpha) - 1))/_c5
+    ds[3] = ((1.0/2.0))*_c8*ell*(D*_c1*phi_dot*theta2_dot - _c0*theta2 - 2*_c10*(_c9*_c9))
+    ds[4] = ((1.0/8.0))*D*_c8*(-_c11*_c6*(theta2*theta2) + _c11*_c7*(theta1*theta1) - _c12*_c13*(_c9*_c9*_c9*_c9) + _c12*_c14*_c15 - _c12*g*theta2*(_c4*_c5 + 2*_c4*_c6 - _c6) + 8*_c13*_c15*theta2 + _c14*theta2*(math.cos(4*alpha) - 1))/_c5
 
 
 @njit(cache=True)
@@ -110,25 +110,25 @@ def rhs_pose_into(t, s, p, ds):
     _c1 = math.sin(2*alpha)
     _c2 = D*phi_dot
     _c3 = math.cos(alpha)
-    _c4 = _c3*_c3
-    _c5 = L*L
-    _c6 = ell*ell
+    _c4 = (_c3*_c3)
+    _c5 = (L*L)
+    _c6 = (ell*ell)
     _c7 = _c5 + _c6
-    _c8 = (1.0/(_c7))
+    _c8 = 1/_c7
     _c9 = math.sin(alpha)
     _c10 = _c2*theta1_dot
     _c11 = 4*_c1*g
     _c12 = 8*theta1
     _c13 = _c10*_c5
     _c14 = _c2*_c5*theta2_dot
-    _c15 = _c9*_c9*_c9
+    _c15 = (_c9*_c9*_c9)
     _c16 = alpha + phi
     _c17 = _c2*(_c3*theta2 - _c9*theta1)
     ds[0] = theta1_dot
     ds[1] = theta2_dot
     ds[2] = ((1.0/2.0))*(2*D*_c4*phi_dot*theta2_dot - _c0*theta1 - _c1*_c2*theta1_dot)/ell
-    ds[3] = ((1.0/2.0))*_c8*ell*(D*_c1*phi_dot*theta2_dot - _c0*theta2 - 2*_c10*_c9*_c9)
-    ds[4] = ((1.0/8.0))*D*_c8*(-_c11*_c6*theta2*theta2 + _c11*_c7*theta1*theta1 - _c12*_c13*_c9*_c9*_c9*_c9 + _c12*_c14*_c15*_c3 - _c12*g*theta2*(_c4*_c5 + 2*_c4*_c6 - _c6) + 8*_c13*_c15*_c3*theta2 + _c14*theta2*(math.cos(4*alpha) - 1))/_c5
+    ds[3] = ((1.0/2.0))*_c8*ell*(D*_c1*phi_dot*theta2_dot - _c0*theta2 - 2*_c10*(_c9*_c9))
+    ds[4] = ((1.0/8.0))*D*_c8*(-_c11*_c6*(theta2*theta2) + _c11*_c7*(theta1*theta1) - _c12*_c13*(_c9*_c9*_c9*_c9) + _c12*_c14*_c15*_c3 - _c12*g*theta2*(_c4*_c5 + 2*_c4*_c6 - _c6) + 8*_c13*_c15*_c3*theta2 + _c14*theta2*(math.cos(4*alpha) - 1))/_c5
     ds[5] = phi_dot
     ds[6] = _c17*math.sin(_c16)
     ds[7] = -_c17*math.cos(_c16)
@@ -180,22 +180,22 @@ def energy(s, p):
     L = p[2]
     D = p[3]
     alpha = p[4]
-    _c0 = theta1*theta1
+    _c0 = (theta1*theta1)
     _c1 = ((1.0/2.0))*ell
     _c2 = _c1*g
-    _c3 = theta2*theta2
-    _c4 = L*L
-    _c5 = ((1.0/2.0))*phi_dot*phi_dot
-    _c6 = ell*ell
-    _c7 = (math.sin(alpha))*(math.sin(alpha))
+    _c3 = (theta2*theta2)
+    _c4 = (L*L)
+    _c5 = ((1.0/2.0))*(phi_dot*phi_dot)
+    _c6 = (ell*ell)
+    _c7 = ((math.sin(alpha))*(math.sin(alpha)))
     _c8 = D*phi_dot
     _c9 = _c8*ell
     _c10 = math.sin(2*alpha)
     _c11 = _c10*theta1
     _c12 = _c1*_c8
-    _c13 = (math.cos(alpha))*(math.cos(alpha))
-    _c14 = D*D*_c5
-    energy = _c0*_c14*_c7 + _c0*_c2 - _c10*_c12*theta2*theta2_dot + _c11*_c12*theta1_dot - _c11*_c14*theta2 + _c13*_c14*_c3 - _c13*_c9*theta1_dot*theta2 + _c2*_c3 + _c4*_c5 + ((1.0/2.0))*_c6*theta1_dot*theta1_dot + _c7*_c9*theta1*theta2_dot + ((1.0/2.0))*theta2_dot*theta2_dot*(_c4 + _c6)
+    _c13 = ((math.cos(alpha))*(math.cos(alpha)))
+    _c14 = (D*D)*_c5
+    energy = _c0*_c14*_c7 + _c0*_c2 - _c10*_c12*theta2*theta2_dot + _c11*_c12*theta1_dot - _c11*_c14*theta2 + _c13*_c14*_c3 - _c13*_c9*theta1_dot*theta2 + _c2*_c3 + _c4*_c5 + ((1.0/2.0))*_c6*(theta1_dot*theta1_dot) + _c7*_c9*theta1*theta2_dot + ((1.0/2.0))*(theta2_dot*theta2_dot)*(_c4 + _c6)
     return energy
 
 
@@ -213,18 +213,18 @@ def multipliers(s, p):
     L = p[2]
     D = p[3]
     alpha = p[4]
-    _c0 = L*L
-    _c1 = ell*ell
+    _c0 = (L*L)
+    _c1 = (ell*ell)
     _c2 = _c0 + _c1
-    _c3 = (1.0/(_c2))
+    _c3 = 1/_c2
     _c4 = math.cos(alpha)
     _c5 = _c2*theta1
     _c6 = math.sin(alpha)
     _c7 = _c6*g
-    _c8 = phi_dot*phi_dot
-    _c9 = _c0*ell + ell*ell*ell
-    _c10 = D*_c0*_c6*_c6 + _c9
+    _c8 = (phi_dot*phi_dot)
+    _c9 = _c0*ell + (ell*ell*ell)
+    _c10 = D*_c0*(_c6*_c6) + _c9
     _c11 = _c4*phi_dot
-    out[0] = _c3*(D*_c2*_c4*_c8*theta2 - D*_c5*_c6*_c8 + _c1*_c4*g*theta2 - _c10*_c11*theta1_dot - _c5*_c7 + _c6*phi_dot*theta2_dot*(D*_c0*_c4*_c4 - _c9))
+    out[0] = _c3*(D*_c2*_c4*_c8*theta2 - D*_c5*_c6*_c8 + _c1*_c4*g*theta2 - _c10*_c11*theta1_dot - _c5*_c7 + _c6*phi_dot*theta2_dot*(D*_c0*(_c4*_c4) - _c9))
     out[1] = _c3*(-_c1*_c7*theta2 - _c10*_c11*theta2_dot + _c10*_c6*phi_dot*theta1_dot - _c4*_c5*g)
     return out
