@@ -112,6 +112,28 @@ def push_row(ts, ys, n, t, y):
 
 
 @njit(cache=True, error_model="numpy")
+def start_output(t0, y, t_eval, every):
+    """Output buffers holding the initial point.
+
+    Returns ``(ts, ys, n_out, ie)``: with ``every`` the row ``(t0, y)``;
+    otherwise a row for each requested time ``t_eval[i] <= t0``, and ``ie``
+    the index of the first requested time still ahead.
+    """
+    cap = 64 if every else max(t_eval.size, 1)
+    ts = np.empty(cap)
+    ys = np.empty((cap, y.size))
+    n_out = 0
+    ie = 0
+    if every:
+        ts, ys, n_out = push_row(ts, ys, n_out, t0, y)
+    else:
+        while ie < t_eval.size and t_eval[ie] <= t0:
+            ts, ys, n_out = push_row(ts, ys, n_out, t_eval[ie], y)
+            ie += 1
+    return ts, ys, n_out, ie
+
+
+@njit(cache=True, error_model="numpy")
 def push_time(ev, n, t):
     """Append the event time ``t``; returns the (maybe reallocated) array and ``n + 1``."""
     if n >= ev.size:

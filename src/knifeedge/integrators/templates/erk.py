@@ -193,19 +193,9 @@ def solve(t0, t1, y0, p, rtol, atol, h_init, max_step, t_eval, every, spin, max_
     work3 = np.empty(n)
     scale = np.empty(n)
     F = np.empty((DENSE_ROWS, n))
-    cap = 64 if every else max(t_eval.size, 1)
-    ts = np.empty(cap)
-    ys = np.empty((cap, n))
-    n_out = 0
+    ts, ys, n_out, ie = _c.start_output(t0, y, t_eval, every)
     ev = np.empty(8)
     n_ev = 0
-    ie = 0
-    if every:
-        ts, ys, n_out = _c.push_row(ts, ys, n_out, t0, y)
-    else:
-        while ie < t_eval.size and t_eval[ie] <= t0:
-            ts, ys, n_out = _c.push_row(ts, ys, n_out, t_eval[ie], y)
-            ie += 1
     _rhs(t0, y, p, K[0])
     nfev = 1
     if h_init > 0.0:
