@@ -13,8 +13,6 @@ import platform
 import time
 from pathlib import Path
 
-import numpy as np
-
 from . import failures, overhead, peers, report, work_precision
 from .reference import reference
 from .scenes import SINGLE, TWO

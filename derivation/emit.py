@@ -20,7 +20,6 @@ from sympy.printing.pycode import PythonCodePrinter
 
 from . import averaging, engine, models, truncation
 from .averaging import AmplitudeSystem
-from .engine import ReducedSystem
 
 GENERATOR = "derivation/emit.py (make derive)"
 
@@ -86,6 +85,26 @@ def _dims(name: str, extra: dict | None = None) -> str:
     if time < 0:
         return (num or "rad") + "/time" + ("^2" if time == -2 else "")
     return num or "rad"
+
+
+def _rhs_source(state, params, rhs_lines, rhs_ops) -> str:
+    """Source of the jitted ``rhs_into`` and ``rhs`` shared by every generated module."""
+    nl = "\n"
+    return f'''@njit(cache=True)
+def rhs_into(t, s, p, ds):
+    """Write d(state)/dt into ``ds`` ({rhs_ops} operations)."""
+{nl.join(_unpack(state, "s"))}
+{nl.join(_unpack(params, "p"))}
+{nl.join(rhs_lines)}
+
+
+@njit(cache=True)
+def rhs(t, s, p):
+    """Return d(state)/dt as a new array of length {len(state)}."""
+    ds = np.empty({len(state)})
+    rhs_into(t, s, p, ds)
+    return ds
+'''
 
 
 def module_source(system, fidelity: str) -> str:
@@ -160,21 +179,7 @@ SYMPY_VERSION = {sp.__version__!r}
 OP_COUNTS = {{"rhs": {rhs_ops}, "rhs_pose": {rhsp_ops}, "pose_rates": {pose_ops}, "energy": {energy_ops}, "multipliers": {lam_ops}}}
 
 
-@njit(cache=True)
-def rhs_into(t, s, p, ds):
-    """Write d(state)/dt into ``ds`` ({rhs_ops} operations)."""
-{nl.join(unpack_s)}
-{nl.join(unpack_p)}
-{nl.join(rhs_lines)}
-
-
-@njit(cache=True)
-def rhs(t, s, p):
-    """Return d(state)/dt as a new array of length {n}."""
-    ds = np.empty({n})
-    rhs_into(t, s, p, ds)
-    return ds
-
+{_rhs_source(state, params, rhs_lines, rhs_ops)}
 
 @njit(cache=True)
 def rhs_pose_into(t, s, p, ds):
@@ -323,21 +328,7 @@ SYMPY_VERSION = {sp.__version__!r}
 OP_COUNTS = {ops!r}
 
 
-@njit(cache=True)
-def rhs_into(t, s, p, ds):
-    """Write d(state)/dt into ``ds`` ({rhs_ops} operations)."""
-{nl.join(_unpack(state, "s"))}
-{nl.join(_unpack(params, "p"))}
-{nl.join(rhs_lines)}
-
-
-@njit(cache=True)
-def rhs(t, s, p):
-    """Return d(state)/dt as a new array of length {n}."""
-    ds = np.empty({n})
-    rhs_into(t, s, p, ds)
-    return ds
-
+{_rhs_source(state, params, rhs_lines, rhs_ops)}
 
 @njit(cache=True)
 def energy(s, p):

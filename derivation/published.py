@@ -28,7 +28,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from .models import (
-    D, L, alpha, ell, g, phi, phi_ddot, phi_dot, theta, theta1, theta1_ddot, theta1_dot, theta2,
+    D, L, alpha, ell, g, phi_ddot, phi_dot, theta, theta1, theta1_ddot, theta1_dot, theta2,
     theta2_ddot, theta2_dot, theta_alpha, theta_ddot, theta_dot, u_alpha, u_phi, v_alpha, v_phi,
     x_ddot, x_dot, y_ddot, y_dot,
 )

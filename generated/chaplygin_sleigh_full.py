@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'chaplygin_sleigh',
 constraints knife_edge) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:d97294ddd232181fd6e915440970836b878fb403a5fc744f09adb1417e0e24d1
+SymPy 1.14.0; input hash sha256:1dc7e57a0fdd12d7e4d783b00beea385fce04e4a367ae089a087de9ae8abb0ac
 
 Chaplygin sleigh: a rigid body on the plane with a knife edge at its rear contact point (x, y) that forbids sideways motion; heading phi, centre of mass at distance a ahead of the contact, radius of gyration k about the centre of mass; v is the speed along the axis.
 
@@ -34,7 +34,7 @@ TILT_NAMES = ()
 #: the spin rate, whose zero crossings are the spin reversals
 SPIN_NAME = "phi_dot"
 MULTIPLIER_NAMES = ('knife_edge',)
-INPUT_HASH = 'd97294ddd232181fd6e915440970836b878fb403a5fc744f09adb1417e0e24d1'
+INPUT_HASH = '1dc7e57a0fdd12d7e4d783b00beea385fce04e4a367ae089a087de9ae8abb0ac'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {"rhs": 9, "rhs_pose": 13, "pose_rates": 4, "energy": 9, "multipliers": 6}

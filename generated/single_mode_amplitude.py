@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:ace92e545e857afc9c931ffcf138852c2e6f86e2eccf4b16521d1b70987b5372
+SymPy 1.14.0; input hash sha256:6d6035d60fc92f8034ff11ad090a4310f376b5b23fc945992f45761adfdb3f11
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -42,7 +42,7 @@ SPIN_NAME = 'A_phi'
 MULTIPLIER_NAMES = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy',)
-INPUT_HASH = 'ace92e545e857afc9c931ffcf138852c2e6f86e2eccf4b16521d1b70987b5372'
+INPUT_HASH = '6d6035d60fc92f8034ff11ad090a4310f376b5b23fc945992f45761adfdb3f11'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 10, 'energy': 9, 'invariants': 9, 'frequencies': 5, 'growth_rates': 2, 'drive_rates': 5}

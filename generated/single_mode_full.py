@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:9d8deab671ab243f81f800e078d5598aca7565d9d2ada8b7f63156862d77a0c4
+SymPy 1.14.0; input hash sha256:5f2683a3b62d8ae2b0adb0fc3e3d29e3af15cd03dfb1bfb7142f7cb992deafca
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -37,7 +37,7 @@ TILT_NAMES = ('theta',)
 #: the spin rate, whose zero crossings are the spin reversals
 SPIN_NAME = "phi_dot"
 MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
-INPUT_HASH = '9d8deab671ab243f81f800e078d5598aca7565d9d2ada8b7f63156862d77a0c4'
+INPUT_HASH = '5f2683a3b62d8ae2b0adb0fc3e3d29e3af15cd03dfb1bfb7142f7cb992deafca'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {"rhs": 20, "rhs_pose": 27, "pose_rates": 7, "energy": 23, "multipliers": 7}

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py and derivation/truncation.py.
-SymPy 1.14.0; input hash sha256:f628b50197bd17e48ca2a2efe3ea3b92117e0f26cb67b5cd8abda3d59c2c8d2e
+SymPy 1.14.0; input hash sha256:defaf0e09f33bdea68998b01cf4c1e8afe0510d78b75ce2875a5ea194fa68584
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -37,7 +37,7 @@ TILT_NAMES = ('theta',)
 #: the spin rate, whose zero crossings are the spin reversals
 SPIN_NAME = "phi_dot"
 MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
-INPUT_HASH = 'f628b50197bd17e48ca2a2efe3ea3b92117e0f26cb67b5cd8abda3d59c2c8d2e'
+INPUT_HASH = 'defaf0e09f33bdea68998b01cf4c1e8afe0510d78b75ce2875a5ea194fa68584'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {"rhs": 11, "rhs_pose": 17, "pose_rates": 7, "energy": 23, "multipliers": 7}

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:e0474eca9462cf4356ac10e71c142211bd9079d0361a86d74342abb00a7d7ecb
+SymPy 1.14.0; input hash sha256:727812d87256e584891ab123205600c5ad4dde0efe68cbabc406b4050529cec7
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -46,7 +46,7 @@ SPIN_NAME = 'A_phi'
 MULTIPLIER_NAMES = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy', 'log_A1_A2')
-INPUT_HASH = 'e0474eca9462cf4356ac10e71c142211bd9079d0361a86d74342abb00a7d7ecb'
+INPUT_HASH = '727812d87256e584891ab123205600c5ad4dde0efe68cbabc406b4050529cec7'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 24, 'energy': 12, 'invariants': 19, 'frequencies': 12, 'growth_rates': 11, 'drive_rates': 12}

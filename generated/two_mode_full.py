@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:bf4b98d2a0bf51aafa6a5cc63d90be9ff8a3a3d431788eae7e4c6418ef64c067
+SymPy 1.14.0; input hash sha256:56b2cd58f46ed35c04126d3f500e5375c2f4e8969b175156e212db9116b3a462
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -40,7 +40,7 @@ TILT_NAMES = ('theta1', 'theta2')
 #: the spin rate, whose zero crossings are the spin reversals
 SPIN_NAME = "phi_dot"
 MULTIPLIER_NAMES = ('Const22', 'Const23')
-INPUT_HASH = 'bf4b98d2a0bf51aafa6a5cc63d90be9ff8a3a3d431788eae7e4c6418ef64c067'
+INPUT_HASH = '56b2cd58f46ed35c04126d3f500e5375c2f4e8969b175156e212db9116b3a462'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {"rhs": 152, "rhs_pose": 166, "pose_rates": 13, "energy": 58, "multipliers": 166}

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py and derivation/truncation.py.
-SymPy 1.14.0; input hash sha256:4c3e77b466cdbfb769fffeaa5f31cf3511a8c131429e42768db6415b6e33c206
+SymPy 1.14.0; input hash sha256:b7fd5eb3b344580bdb54ba49dcaefd879ceb9d63bb05e7619b012c5e47ff6bda
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -40,7 +40,7 @@ TILT_NAMES = ('theta1', 'theta2')
 #: the spin rate, whose zero crossings are the spin reversals
 SPIN_NAME = "phi_dot"
 MULTIPLIER_NAMES = ('Const22', 'Const23')
-INPUT_HASH = '4c3e77b466cdbfb769fffeaa5f31cf3511a8c131429e42768db6415b6e33c206'
+INPUT_HASH = 'b7fd5eb3b344580bdb54ba49dcaefd879ceb9d63bb05e7619b012c5e47ff6bda'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {"rhs": 80, "rhs_pose": 91, "pose_rates": 13, "energy": 58, "multipliers": 56}

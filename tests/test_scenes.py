@@ -1,7 +1,6 @@
 """Scenes: each figure of the paper recomputed, its numbers checked against independent calculations."""
 from __future__ import annotations
 
-import math
 
 import numpy as np
 import pytest
