@@ -80,6 +80,7 @@ def test_tolerance_below_round_off_is_refused(single):
         ke.simulate(m, Y0, (0.0, 300.0), p, method="DOP853", rtol=1e-15)
 
 
+@pytest.mark.filterwarnings("ignore::RuntimeWarning")  # SciPy's own overflow warnings, provoked on purpose
 def test_scipy_non_finite_state_is_cut_and_reported(single):
     m, p = single
     r = ke.simulate(m, dict(theta=1e100, theta_dot=1e100, phi_dot=1e100), (0.0, 10.0), p, method="scipy:DOP853")
