@@ -5,7 +5,7 @@ import numpy as np
 
 from . import amplitude_theory as th
 from .base import Scene, SceneResult
-from .common import RATE_LABEL, T_LABEL, envelope, omega
+from .common import RATE_LABEL, T_LABEL, envelope, omega, require_success
 from .numerical import RUN
 
 
@@ -13,9 +13,7 @@ def compute(scene: Scene, progress) -> SceneResult:
     run = scene.run
     p, y0 = run.params, run.y0
     progress("integrating the single-mode equations")
-    r = run.simulate()
-    if not r.success:
-        raise RuntimeError(f"scene {scene.name}: integration failed: {r.message}")
+    r = require_success(run.simulate(), scene)
     w = omega(p)
     a_theta0 = float(envelope(y0["theta"], y0["theta_dot"], w))
     a0 = th.asymptotic_spin(y0["phi_dot"], a_theta0, p["g"], p["ell"], p["L"])

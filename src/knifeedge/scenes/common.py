@@ -10,6 +10,13 @@ T_LABEL = r"$t\ [\sqrt{\ell/g}]$"
 RATE_LABEL = r"$\dot\phi\ [\sqrt{g/\ell}]$"
 
 
+def require_success(result, scene):
+    """Return ``result``; raise ``RuntimeError`` naming the scene if its integration failed."""
+    if not result.success:
+        raise RuntimeError(f"scene {scene.name}: integration failed: {result.message}")
+    return result
+
+
 def envelope(theta: np.ndarray, theta_dot: np.ndarray, omega: float) -> np.ndarray:
     """Oscillation amplitude ``sqrt(theta^2 + (theta_dot/omega)^2)``, shape of ``theta``.
 

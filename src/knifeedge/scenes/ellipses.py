@@ -15,7 +15,7 @@ import numpy as np
 
 from . import amplitude_theory as th
 from .base import RunSpec, Scene, SceneResult
-from .common import envelope, omega
+from .common import envelope, omega, require_success
 
 RUN = RunSpec(
     model="single_mode", fidelity="amplitude",
@@ -54,17 +54,13 @@ def compute(scene: Scene, progress) -> SceneResult:
     for a0 in scene.settings["ellipse_A0"]:
         progress(f"integrating the amplitude equations from A_phi = {a0:g}")
         t_r = th.first_reversal_time(a0, orbit_run.y0["A_theta"], p["g"], p["ell"], p["L"], p["D"])
-        o = orbit_run.with_(A_phi=a0, t_end=2.2 * t_r).simulate()
-        if not o.success:
-            raise RuntimeError(f"scene {scene.name}: integration failed: {o.message}")
+        o = require_success(orbit_run.with_(A_phi=a0, t_end=2.2 * t_r).simulate(), scene)
         orbits.append((o["A_theta"], o["A_phi"]))
     sims = []
     for a0 in scene.settings["simulated_A0"]:
         progress(f"integrating the single-mode equations from phi_dot = {a0:g}")
         t_r = th.first_reversal_time(a0, run.y0["theta"], p["g"], p["ell"], p["L"], p["D"])
-        r = run.with_(phi_dot=a0, t_end=2.4 * t_r).simulate()
-        if not r.success:
-            raise RuntimeError(f"scene {scene.name}: integration failed: {r.message}")
+        r = require_success(run.with_(phi_dot=a0, t_end=2.4 * t_r).simulate(), scene)
         t, amp, phi_dot = _period_mean(r.t, envelope(r["theta"], r["theta_dot"], w), r["phi_dot"], 2 * math.pi / w)
         inv = phi_dot**2 + p["g"] * p["ell"] / p["L"] ** 2 * amp**2
         rev = float(r.reversal_times[0])

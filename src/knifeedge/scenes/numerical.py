@@ -4,7 +4,7 @@ from __future__ import annotations
 import numpy as np
 
 from .base import RunSpec, Scene, SceneResult
-from .common import RATE_LABEL, T_LABEL, envelope, mark_reversals, omega, relative_energy_drift
+from .common import RATE_LABEL, T_LABEL, envelope, mark_reversals, omega, relative_energy_drift, require_success
 
 RUN = RunSpec(
     model="single_mode", fidelity="reduced",
@@ -18,8 +18,7 @@ def compute(scene: Scene, progress) -> SceneResult:
     progress("integrating the single-mode equations")
     r = scene.run.simulate()
     res = SceneResult(scene)
-    if not r.success:
-        raise RuntimeError(f"scene {scene.name}: integration failed: {r.message}")
+    require_success(r, scene)
     w = omega(scene.run.params)
     amp = envelope(r["theta"], r["theta_dot"], w)
     rev = r.reversal_times

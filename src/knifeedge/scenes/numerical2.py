@@ -18,7 +18,7 @@ import math
 import numpy as np
 
 from .base import RunSpec, Scene, SceneResult
-from .common import RATE_LABEL, T_LABEL, mark_reversals
+from .common import RATE_LABEL, T_LABEL, mark_reversals, require_success
 
 RUN = RunSpec(
     model="two_mode", fidelity="reduced",
@@ -36,8 +36,7 @@ def compute(scene: Scene, progress) -> SceneResult:
     progress(f"integrating again at rtol {check.rtol:g} (convergence of the later reversals)")
     r2 = check.simulate()
     for x in (r, r2):
-        if not x.success:
-            raise RuntimeError(f"scene {scene.name}: integration failed: {x.message}")
+        require_success(x, scene)
     rev, rev2 = r.reversal_times, r2.reversal_times
     n = min(len(rev), len(rev2))
     diff = np.abs(rev[:n] - rev2[:n])

@@ -12,7 +12,7 @@ import math
 import numpy as np
 
 from .base import Scene, SceneResult
-from .common import T_LABEL, mark_reversals
+from .common import T_LABEL, mark_reversals, require_success
 from .numerical2 import RUN as TWO_MODE_RUN
 
 RUN = TWO_MODE_RUN.with_(pose=True, rtol=1e-12, t_end=5600.0, n_eval=56001)
@@ -20,9 +20,7 @@ RUN = TWO_MODE_RUN.with_(pose=True, rtol=1e-12, t_end=5600.0, n_eval=56001)
 
 def compute(scene: Scene, progress) -> SceneResult:
     progress("integrating the two-mode equations with the pose")
-    r = scene.run.simulate()
-    if not r.success:
-        raise RuntimeError(f"scene {scene.name}: integration failed: {r.message}")
+    r = require_success(scene.run.simulate(), scene)
     x, y, phi = r["x"], r["y"], r["phi"]
     rev = r.reversal_times
     dist = np.hypot(x - x[0], y - y[0])
