@@ -74,6 +74,46 @@ def _cse_block(exprs, targets, allowed, indent="    "):
     return lines, int(ops)
 
 
+def hoist_parameters(exprs, params):
+    """Replace the parameter-only subexpressions of ``exprs`` by symbols ``_k0, _k1, ...``.
+
+    A subexpression is hoisted when it depends on parameters only and is
+    more than a bare symbol or number; inside a sum or a product the
+    parameter-only terms or factors are grouped and hoisted together
+    (``4*D*g*theta/L**2`` -> ``_k0*theta``).  Returns ``(constants, new)``:
+    the ``(symbol, expression)`` pairs in order of first appearance
+    (a deterministic preorder walk of SymPy's canonical argument order) and
+    the rewritten expressions.  Evaluating the constants once per
+    integration and the rewritten expressions at every step gives the same
+    values, computed with fewer operations per step.
+    """
+    params = set(params)
+    memo: dict = {}
+
+    def const(e):
+        if e.is_Atom:
+            return e
+        if e not in memo:
+            memo[e] = sp.Symbol(f"_k{len(memo)}")
+        return memo[e]
+
+    def walk(e):
+        if e.is_Atom:
+            return e
+        if e.free_symbols <= params:
+            return const(e)
+        if e.is_Add or e.is_Mul:
+            fixed = [a for a in e.args if a.free_symbols <= params]
+            rest = [walk(a) for a in e.args if not a.free_symbols <= params]
+            if len(fixed) > 1 or (fixed and not fixed[0].is_Atom):
+                fixed = [const(e.func(*fixed))]
+            return e.func(*fixed, *rest)
+        return e.func(*[walk(a) for a in e.args])
+
+    new = [walk(e) for e in exprs]
+    return [(symbol, e) for e, symbol in memo.items()], new
+
+
 def _unpack(names, array, indent="    "):
     return [f"{indent}{n} = {array}[{i}]" for i, n in enumerate(names)]
 
@@ -87,10 +127,30 @@ def _dims(name: str, extra: dict | None = None) -> str:
     return num or "rad"
 
 
-def _rhs_source(state, params, rhs_lines, rhs_ops) -> str:
-    """Source of the jitted ``rhs_into`` and ``rhs`` shared by every generated module."""
+def _rhs_source(syms_state, syms_par, rates, syms_pose=(), pose_rates=()) -> tuple[str, dict]:
+    """Source of the right-hand-side functions shared by every generated module.
+
+    ``rhs_into(t, s, p, ds)`` and ``rhs(t, s, p)`` take the parameters;
+    ``constants(p)`` returns ``q``: the parameters followed by the
+    parameter-only subexpressions (:func:`hoist_parameters`), and
+    ``rhs_q_into(t, s, q, ds)`` is the same right-hand side reading them
+    from ``q``, which the compiled integrators call at every stage.  With a
+    pose, ``rhs_pose_into``/``rhs_pose``/``rhs_pose_q_into`` likewise.
+    Returns the source and the operation count of each function body.
+    """
     nl = "\n"
-    return f'''@njit(cache=True)
+    state, pose, params = [str(x) for x in syms_state], [str(x) for x in syms_pose], [str(x) for x in syms_par]
+    n, npose = len(state), len(pose)
+    allowed = set(syms_state) | set(syms_par)
+    constants, hoisted = hoist_parameters(list(rates) + list(pose_rates), syms_par)
+    k_names = [str(k) for k, _ in constants]
+    q_names = list(params) + k_names
+    const_lines, const_ops = _cse_block([v for _, v in constants], [f"q[{len(params) + i}]" for i in
+                                                                    range(len(constants))], set(syms_par))
+    allowed_q = set(syms_state) | set(syms_par) | {k for k, _ in constants}
+    rhs_lines, rhs_ops = _cse_block(list(rates), [f"ds[{i}]" for i in range(n)], allowed)
+    q_lines, q_ops = _cse_block(hoisted[:n], [f"ds[{i}]" for i in range(n)], allowed_q)
+    out = f'''@njit(cache=True)
 def rhs_into(t, s, p, ds):
     """Write d(state)/dt into ``ds`` ({rhs_ops} operations)."""
 {nl.join(_unpack(state, "s"))}
@@ -100,11 +160,65 @@ def rhs_into(t, s, p, ds):
 
 @njit(cache=True)
 def rhs(t, s, p):
-    """Return d(state)/dt as a new array of length {len(state)}."""
-    ds = np.empty({len(state)})
+    """Return d(state)/dt as a new array of length {n}."""
+    ds = np.empty({n})
     rhs_into(t, s, p, ds)
     return ds
+
+
+@njit(cache=True)
+def constants(p):
+    """``q``: the parameters, then the {len(constants)} parameter-only subexpressions of the right-hand side ({const_ops} operations)."""
+    q = np.empty({len(q_names)})
+{nl.join(_unpack(params, "p"))}
+{nl.join(f"    q[{i}] = {x}" for i, x in enumerate(params))}
+{nl.join(const_lines)}
+    return q
+
+
+@njit(cache=True)
+def rhs_q_into(t, s, q, ds):
+    """``rhs_into`` with ``q = constants(p)`` in place of ``p`` ({q_ops} operations)."""
+{nl.join(_unpack(state, "s"))}
+{nl.join(_unpack(q_names, "q"))}
+{nl.join(q_lines)}
 '''
+    ops = {"rhs": rhs_ops, "constants": const_ops, "rhs_q": q_ops}
+    if not npose:
+        return out, ops
+    allowed_pose = allowed | set(syms_pose)
+    rhsp_lines, rhsp_ops = _cse_block(list(rates) + list(pose_rates), [f"ds[{i}]" for i in range(n + npose)],
+                                      allowed_pose)
+    qp_lines, qp_ops = _cse_block(hoisted, [f"ds[{i}]" for i in range(n + npose)], allowed_q | set(syms_pose))
+    unpack_pose = [f"    {x} = s[{n + i}]" for i, x in enumerate(pose)]
+    ops.update(rhs_pose=rhsp_ops, rhs_pose_q=qp_ops)
+    return out + f'''
+
+@njit(cache=True)
+def rhs_pose_into(t, s, p, ds):
+    """Write d(state, pose)/dt into ``ds`` ({rhsp_ops} operations)."""
+{nl.join(_unpack(state, "s"))}
+{nl.join(unpack_pose)}
+{nl.join(_unpack(params, "p"))}
+{nl.join(rhsp_lines)}
+
+
+@njit(cache=True)
+def rhs_pose(t, s, p):
+    """Return d(state, pose)/dt as a new array of length {n + npose}."""
+    ds = np.empty({n + npose})
+    rhs_pose_into(t, s, p, ds)
+    return ds
+
+
+@njit(cache=True)
+def rhs_pose_q_into(t, s, q, ds):
+    """``rhs_pose_into`` with ``q = constants(p)`` in place of ``p`` ({qp_ops} operations)."""
+{nl.join(_unpack(state, "s"))}
+{nl.join(unpack_pose)}
+{nl.join(_unpack(q_names, "q"))}
+{nl.join(qp_lines)}
+''', ops
 
 
 def module_source(system, fidelity: str) -> str:
@@ -118,12 +232,9 @@ def module_source(system, fidelity: str) -> str:
     n, npose = len(state), len(pose)
     rates = system.state_rhs()
     allowed = set(system.state) | set(spec.params)
-    rhs_lines, rhs_ops = _cse_block(rates, [f"ds[{i}]" for i in range(n)], allowed)
     pose_exprs = [system.pose_rates[q] for q in spec.pose]
     pose_lines, pose_ops = _cse_block(pose_exprs, [f"out[{i}]" for i in range(npose)], allowed | set(spec.pose))
-    rhsp_lines, rhsp_ops = _cse_block(
-        rates + pose_exprs, [f"ds[{i}]" for i in range(n + npose)], allowed | set(spec.pose)
-    )
+    rhs_src, rhs_ops = _rhs_source(system.state, spec.params, rates, spec.pose, pose_exprs)
     energy_lines, energy_ops = _cse_block([system.energy], ["energy"], allowed)
     lam = list(system.multipliers)
     lam_lines, lam_ops = _cse_block(lam, [f"out[{i}]" for i in range(len(lam))], allowed)
@@ -176,27 +287,10 @@ MULTIPLIER_NAMES = {tuple(spec.constraint_labels)!r}
 INPUT_HASH = {digest!r}
 SYMPY_VERSION = {sp.__version__!r}
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
-OP_COUNTS = {{"rhs": {rhs_ops}, "rhs_pose": {rhsp_ops}, "pose_rates": {pose_ops}, "energy": {energy_ops}, "multipliers": {lam_ops}}}
+OP_COUNTS = {dict(rhs_ops, pose_rates=pose_ops, energy=energy_ops, multipliers=lam_ops)!r}
 
 
-{_rhs_source(state, params, rhs_lines, rhs_ops)}
-
-@njit(cache=True)
-def rhs_pose_into(t, s, p, ds):
-    """Write d(state, pose)/dt into ``ds`` ({rhsp_ops} operations)."""
-{nl.join(unpack_s)}
-{nl.join(unpack_pose)}
-{nl.join(unpack_p)}
-{nl.join(rhsp_lines)}
-
-
-@njit(cache=True)
-def rhs_pose(t, s, p):
-    """Return d(state, pose)/dt as a new array of length {n + npose}."""
-    ds = np.empty({n + npose})
-    rhs_pose_into(t, s, p, ds)
-    return ds
-
+{rhs_src}
 
 @njit(cache=True)
 def pose_rates(s, p):
@@ -252,7 +346,7 @@ def amplitude_module_source(system: AmplitudeSystem, fidelity: str) -> str:
     params = [str(p) for p in spec.params]
     n, n_tilt = len(state), len(system.amplitudes)
     allowed = set(system.state) | set(spec.params)
-    rhs_lines, rhs_ops = _cse_block(system.rates, [f"ds[{i}]" for i in range(n)], allowed)
+    rhs_src, rhs_ops = _rhs_source(system.state, spec.params, system.rates)
     inv_names = list(system.invariants)
     inv_lines, inv_ops = _cse_block(list(system.invariants.values()), [f"out[{i}]" for i in range(len(inv_names))],
                                     allowed)
@@ -281,7 +375,7 @@ def amplitude_module_source(system: AmplitudeSystem, fidelity: str) -> str:
     flow_doc = "\n".join(f"    d{nm}/dt = {r}" for nm, r in zip(state, system.rates))
     inv_doc = "\n".join(f"    {k}: {v}" for k, v in system.invariants.items())
     phase_doc = ", ".join(f"d(beta_{i + 1})/dt = {r}" for i, r in enumerate(system.phase_rates))
-    ops = {"rhs": rhs_ops, "energy": energy_ops, "invariants": inv_ops, "frequencies": freq_ops, **extra_ops}
+    ops = {**rhs_ops, "energy": energy_ops, "invariants": inv_ops, "frequencies": freq_ops, **extra_ops}
     nl = "\n"
     return f'''"""{spec.name}, fidelity {fidelity}: first-order averaged slow flow of the reduced equations.
 
@@ -328,7 +422,7 @@ SYMPY_VERSION = {sp.__version__!r}
 OP_COUNTS = {ops!r}
 
 
-{_rhs_source(state, params, rhs_lines, rhs_ops)}
+{rhs_src}
 
 @njit(cache=True)
 def energy(s, p):

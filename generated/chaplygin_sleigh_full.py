@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'chaplygin_sleigh',
 constraints knife_edge) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:1dc7e57a0fdd12d7e4d783b00beea385fce04e4a367ae089a087de9ae8abb0ac
+SymPy 1.14.0; input hash sha256:0f4e8c36013ce88c98ef2aceb73b9a996ba8b5fa38343f32ba5873548f7a8ed4
 
 Chaplygin sleigh: a rigid body on the plane with a knife edge at its rear contact point (x, y) that forbids sideways motion; heading phi, centre of mass at distance a ahead of the contact, radius of gyration k about the centre of mass; v is the speed along the axis.
 
@@ -34,10 +34,10 @@ TILT_NAMES = ()
 #: the spin rate, whose zero crossings are the spin reversals
 SPIN_NAME = "phi_dot"
 MULTIPLIER_NAMES = ('knife_edge',)
-INPUT_HASH = '1dc7e57a0fdd12d7e4d783b00beea385fce04e4a367ae089a087de9ae8abb0ac'
+INPUT_HASH = '0f4e8c36013ce88c98ef2aceb73b9a996ba8b5fa38343f32ba5873548f7a8ed4'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
-OP_COUNTS = {"rhs": 9, "rhs_pose": 13, "pose_rates": 4, "energy": 9, "multipliers": 6}
+OP_COUNTS = {'rhs': 9, 'constants': 5, 'rhs_q': 4, 'rhs_pose': 13, 'rhs_pose_q': 8, 'pose_rates': 4, 'energy': 9, 'multipliers': 6}
 
 
 @njit(cache=True)
@@ -57,6 +57,30 @@ def rhs(t, s, p):
     ds = np.empty(2)
     rhs_into(t, s, p, ds)
     return ds
+
+
+@njit(cache=True)
+def constants(p):
+    """``q``: the parameters, then the 1 parameter-only subexpressions of the right-hand side (5 operations)."""
+    q = np.empty(3)
+    a = p[0]
+    k = p[1]
+    q[0] = a
+    q[1] = k
+    q[2] = -a/((a*a) + (k*k))
+    return q
+
+
+@njit(cache=True)
+def rhs_q_into(t, s, q, ds):
+    """``rhs_into`` with ``q = constants(p)`` in place of ``p`` (4 operations)."""
+    v = s[0]
+    phi_dot = s[1]
+    a = q[0]
+    k = q[1]
+    _k0 = q[2]
+    ds[0] = a*(phi_dot*phi_dot)
+    ds[1] = _k0*phi_dot*v
 
 
 @njit(cache=True)
@@ -82,6 +106,24 @@ def rhs_pose(t, s, p):
     ds = np.empty(5)
     rhs_pose_into(t, s, p, ds)
     return ds
+
+
+@njit(cache=True)
+def rhs_pose_q_into(t, s, q, ds):
+    """``rhs_pose_into`` with ``q = constants(p)`` in place of ``p`` (8 operations)."""
+    v = s[0]
+    phi_dot = s[1]
+    phi = s[2]
+    x = s[3]
+    y = s[4]
+    a = q[0]
+    k = q[1]
+    _k0 = q[2]
+    ds[0] = a*(phi_dot*phi_dot)
+    ds[1] = _k0*phi_dot*v
+    ds[2] = phi_dot
+    ds[3] = v*math.cos(phi)
+    ds[4] = v*math.sin(phi)
 
 
 @njit(cache=True)

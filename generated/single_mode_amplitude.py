@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:6d6035d60fc92f8034ff11ad090a4310f376b5b23fc945992f45761adfdb3f11
+SymPy 1.14.0; input hash sha256:c9c7f8220e6457ea9e40167b5d40940bf3b380cfc861987d0bc60fbe74313d77
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -42,10 +42,10 @@ SPIN_NAME = 'A_phi'
 MULTIPLIER_NAMES = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy',)
-INPUT_HASH = '6d6035d60fc92f8034ff11ad090a4310f376b5b23fc945992f45761adfdb3f11'
+INPUT_HASH = 'c9c7f8220e6457ea9e40167b5d40940bf3b380cfc861987d0bc60fbe74313d77'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
-OP_COUNTS = {'rhs': 10, 'energy': 9, 'invariants': 9, 'frequencies': 5, 'growth_rates': 2, 'drive_rates': 5}
+OP_COUNTS = {'rhs': 10, 'constants': 6, 'rhs_q': 4, 'energy': 9, 'invariants': 9, 'frequencies': 5, 'growth_rates': 2, 'drive_rates': 5}
 
 
 @njit(cache=True)
@@ -68,6 +68,39 @@ def rhs(t, s, p):
     ds = np.empty(2)
     rhs_into(t, s, p, ds)
     return ds
+
+
+@njit(cache=True)
+def constants(p):
+    """``q``: the parameters, then the 2 parameter-only subexpressions of the right-hand side (6 operations)."""
+    q = np.empty(6)
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    q[0] = g
+    q[1] = ell
+    q[2] = L
+    q[3] = D
+    _c0 = ((1.0/2.0))*D
+    q[4] = _c0/ell
+    q[5] = -_c0*g/(L*L)
+    return q
+
+
+@njit(cache=True)
+def rhs_q_into(t, s, q, ds):
+    """``rhs_into`` with ``q = constants(p)`` in place of ``p`` (4 operations)."""
+    A_theta = s[0]
+    A_phi = s[1]
+    g = q[0]
+    ell = q[1]
+    L = q[2]
+    D = q[3]
+    _k0 = q[4]
+    _k1 = q[5]
+    ds[0] = A_phi*A_theta*_k0
+    ds[1] = (A_theta*A_theta)*_k1
 
 
 @njit(cache=True)

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:5f2683a3b62d8ae2b0adb0fc3e3d29e3af15cd03dfb1bfb7142f7cb992deafca
+SymPy 1.14.0; input hash sha256:0bc254747a2bd65496237c833afe412beb6df22d0870b3d3bcc0e0b34f68ec9b
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -37,10 +37,10 @@ TILT_NAMES = ('theta',)
 #: the spin rate, whose zero crossings are the spin reversals
 SPIN_NAME = "phi_dot"
 MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
-INPUT_HASH = '5f2683a3b62d8ae2b0adb0fc3e3d29e3af15cd03dfb1bfb7142f7cb992deafca'
+INPUT_HASH = '0bc254747a2bd65496237c833afe412beb6df22d0870b3d3bcc0e0b34f68ec9b'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
-OP_COUNTS = {"rhs": 20, "rhs_pose": 27, "pose_rates": 7, "energy": 23, "multipliers": 7}
+OP_COUNTS = {'rhs': 20, 'constants': 13, 'rhs_q': 10, 'rhs_pose': 27, 'rhs_pose_q': 17, 'pose_rates': 7, 'energy': 23, 'multipliers': 7}
 
 
 @njit(cache=True)
@@ -66,6 +66,50 @@ def rhs(t, s, p):
     ds = np.empty(3)
     rhs_into(t, s, p, ds)
     return ds
+
+
+@njit(cache=True)
+def constants(p):
+    """``q``: the parameters, then the 6 parameter-only subexpressions of the right-hand side (13 operations)."""
+    q = np.empty(10)
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    q[0] = g
+    q[1] = ell
+    q[2] = L
+    q[3] = D
+    _c0 = (L*L)
+    _c1 = 1/_c0
+    q[4] = -_c0*g
+    q[5] = -(D*D)*g
+    q[6] = D*_c0
+    q[7] = _c1/ell
+    q[8] = -D*_c1*g
+    q[9] = -D
+    return q
+
+
+@njit(cache=True)
+def rhs_q_into(t, s, q, ds):
+    """``rhs_into`` with ``q = constants(p)`` in place of ``p`` (10 operations)."""
+    theta = s[0]
+    theta_dot = s[1]
+    phi_dot = s[2]
+    g = q[0]
+    ell = q[1]
+    L = q[2]
+    D = q[3]
+    _k0 = q[4]
+    _k1 = q[5]
+    _k2 = q[6]
+    _k3 = q[7]
+    _k4 = q[8]
+    _k5 = q[9]
+    ds[0] = theta_dot
+    ds[1] = _k3*(_k0*theta + _k1*(theta*theta*theta) + _k2*phi_dot*theta_dot)
+    ds[2] = _k4*(theta*theta)
 
 
 @njit(cache=True)
@@ -98,6 +142,34 @@ def rhs_pose(t, s, p):
     ds = np.empty(6)
     rhs_pose_into(t, s, p, ds)
     return ds
+
+
+@njit(cache=True)
+def rhs_pose_q_into(t, s, q, ds):
+    """``rhs_pose_into`` with ``q = constants(p)`` in place of ``p`` (17 operations)."""
+    theta = s[0]
+    theta_dot = s[1]
+    phi_dot = s[2]
+    phi = s[3]
+    x = s[4]
+    y = s[5]
+    g = q[0]
+    ell = q[1]
+    L = q[2]
+    D = q[3]
+    _k0 = q[4]
+    _k1 = q[5]
+    _k2 = q[6]
+    _k3 = q[7]
+    _k4 = q[8]
+    _k5 = q[9]
+    _c0 = phi_dot*theta
+    ds[0] = theta_dot
+    ds[1] = _k3*(_k0*theta + _k1*(theta*theta*theta) + _k2*phi_dot*theta_dot)
+    ds[2] = _k4*(theta*theta)
+    ds[3] = phi_dot
+    ds[4] = D*_c0*math.sin(phi)
+    ds[5] = _c0*_k5*math.cos(phi)
 
 
 @njit(cache=True)

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py and derivation/truncation.py.
-SymPy 1.14.0; input hash sha256:defaf0e09f33bdea68998b01cf4c1e8afe0510d78b75ce2875a5ea194fa68584
+SymPy 1.14.0; input hash sha256:b292bb08b34d2fd2a94029a653dba3c1f00b9b6144d86eb830b24eb140cf3293
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -37,10 +37,10 @@ TILT_NAMES = ('theta',)
 #: the spin rate, whose zero crossings are the spin reversals
 SPIN_NAME = "phi_dot"
 MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
-INPUT_HASH = 'defaf0e09f33bdea68998b01cf4c1e8afe0510d78b75ce2875a5ea194fa68584'
+INPUT_HASH = 'b292bb08b34d2fd2a94029a653dba3c1f00b9b6144d86eb830b24eb140cf3293'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
-OP_COUNTS = {"rhs": 11, "rhs_pose": 17, "pose_rates": 7, "energy": 23, "multipliers": 7}
+OP_COUNTS = {'rhs': 11, 'constants': 7, 'rhs_q': 7, 'rhs_pose': 17, 'rhs_pose_q': 14, 'pose_rates': 7, 'energy': 23, 'multipliers': 7}
 
 
 @njit(cache=True)
@@ -64,6 +64,44 @@ def rhs(t, s, p):
     ds = np.empty(3)
     rhs_into(t, s, p, ds)
     return ds
+
+
+@njit(cache=True)
+def constants(p):
+    """``q``: the parameters, then the 4 parameter-only subexpressions of the right-hand side (7 operations)."""
+    q = np.empty(8)
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    q[0] = g
+    q[1] = ell
+    q[2] = L
+    q[3] = D
+    q[4] = -g
+    q[5] = 1/ell
+    q[6] = -D*g/(L*L)
+    q[7] = -D
+    return q
+
+
+@njit(cache=True)
+def rhs_q_into(t, s, q, ds):
+    """``rhs_into`` with ``q = constants(p)`` in place of ``p`` (7 operations)."""
+    theta = s[0]
+    theta_dot = s[1]
+    phi_dot = s[2]
+    g = q[0]
+    ell = q[1]
+    L = q[2]
+    D = q[3]
+    _k0 = q[4]
+    _k1 = q[5]
+    _k2 = q[6]
+    _k3 = q[7]
+    ds[0] = theta_dot
+    ds[1] = _k1*(D*phi_dot*theta_dot + _k0*theta)
+    ds[2] = _k2*(theta*theta)
 
 
 @njit(cache=True)
@@ -95,6 +133,32 @@ def rhs_pose(t, s, p):
     ds = np.empty(6)
     rhs_pose_into(t, s, p, ds)
     return ds
+
+
+@njit(cache=True)
+def rhs_pose_q_into(t, s, q, ds):
+    """``rhs_pose_into`` with ``q = constants(p)`` in place of ``p`` (14 operations)."""
+    theta = s[0]
+    theta_dot = s[1]
+    phi_dot = s[2]
+    phi = s[3]
+    x = s[4]
+    y = s[5]
+    g = q[0]
+    ell = q[1]
+    L = q[2]
+    D = q[3]
+    _k0 = q[4]
+    _k1 = q[5]
+    _k2 = q[6]
+    _k3 = q[7]
+    _c0 = D*phi_dot
+    ds[0] = theta_dot
+    ds[1] = _k1*(_c0*theta_dot + _k0*theta)
+    ds[2] = _k2*(theta*theta)
+    ds[3] = phi_dot
+    ds[4] = _c0*theta*math.sin(phi)
+    ds[5] = _k3*phi_dot*theta*math.cos(phi)
 
 
 @njit(cache=True)

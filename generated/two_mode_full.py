@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:56b2cd58f46ed35c04126d3f500e5375c2f4e8969b175156e212db9116b3a462
+SymPy 1.14.0; input hash sha256:2f4c5bb144bb88f0389db397732be7e80f252d067417a072a7b2e41c829eb161
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -40,10 +40,10 @@ TILT_NAMES = ('theta1', 'theta2')
 #: the spin rate, whose zero crossings are the spin reversals
 SPIN_NAME = "phi_dot"
 MULTIPLIER_NAMES = ('Const22', 'Const23')
-INPUT_HASH = '56b2cd58f46ed35c04126d3f500e5375c2f4e8969b175156e212db9116b3a462'
+INPUT_HASH = '2f4c5bb144bb88f0389db397732be7e80f252d067417a072a7b2e41c829eb161'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
-OP_COUNTS = {"rhs": 152, "rhs_pose": 166, "pose_rates": 13, "energy": 58, "multipliers": 166}
+OP_COUNTS = {'rhs': 152, 'constants': 107, 'rhs_q': 65, 'rhs_pose': 166, 'rhs_pose_q': 76, 'pose_rates': 13, 'energy': 58, 'multipliers': 166}
 
 
 @njit(cache=True)
@@ -107,6 +107,142 @@ def rhs(t, s, p):
     ds = np.empty(5)
     rhs_into(t, s, p, ds)
     return ds
+
+
+@njit(cache=True)
+def constants(p):
+    """``q``: the parameters, then the 30 parameter-only subexpressions of the right-hand side (107 operations)."""
+    q = np.empty(35)
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+    q[0] = g
+    q[1] = ell
+    q[2] = L
+    q[3] = D
+    q[4] = alpha
+    _c0 = (D*D)
+    _c1 = math.cos(4*alpha) - 1
+    _c2 = _c0*_c1
+    _c3 = math.sin(alpha)
+    _c4 = (_c3*_c3*_c3*_c3)
+    _c5 = 8*_c0
+    _c6 = math.cos(alpha)
+    _c7 = (_c3*_c3*_c3)*_c6
+    _c8 = (L*L)
+    _c9 = 8*_c8
+    _c10 = (ell*ell)
+    _c11 = 2*_c8
+    _c12 = _c10 + _c8
+    _c13 = _c12*g
+    _c14 = (_c6*_c6)
+    _c15 = _c10*_c14
+    _c16 = (_c3*_c3)
+    _c17 = _c16*g
+    _c18 = 2*_c0
+    _c19 = -_c10
+    _c20 = 3*_c15
+    _c21 = math.sin(2*alpha)
+    _c22 = _c21*g
+    _c23 = _c0*_c22
+    _c24 = D*_c8
+    _c25 = _c21*_c24
+    _c26 = 2*_c10
+    _c27 = 1/_c8
+    _c28 = D*_c9
+    q[5] = -_c2
+    q[6] = _c4*_c5
+    q[7] = -16*_c0*_c7
+    q[8] = 8*_c10 + _c9
+    q[9] = -_c11*_c13
+    q[10] = -_c17*_c18*(_c15 + _c8)
+    q[11] = _c23*(_c11 + _c19 + _c20)
+    q[12] = -_c12*_c25
+    q[13] = -_c14*_c18*g*(_c20 - _c26 + _c8)
+    q[14] = -_c0*_c26*_c3*(_c6*_c6*_c6)*g
+    q[15] = D*_c11*_c12*_c14
+    q[16] = 4*_c27/ell
+    q[17] = -_c9*g
+    q[18] = _c2*g
+    q[19] = -_c16*_c28
+    q[20] = -_c5*_c7*g
+    q[21] = 4*_c25
+    q[22] = -_c17*_c5*(3*_c16 - 2)
+    q[23] = -4*_c23*(3*_c14 - 2)
+    q[24] = _c27*ell
+    q[25] = -8*g*(_c14*_c8 + 2*_c15 + _c19)
+    q[26] = -4*_c10*_c22
+    q[27] = 4*_c13*_c21
+    q[28] = _c1*_c24
+    q[29] = -_c28*_c4
+    q[30] = _c28*_c7
+    q[31] = D*_c27
+    q[32] = _c6
+    q[33] = -_c3
+    q[34] = -D
+    return q
+
+
+@njit(cache=True)
+def rhs_q_into(t, s, q, ds):
+    """``rhs_into`` with ``q = constants(p)`` in place of ``p`` (65 operations)."""
+    theta1 = s[0]
+    theta2 = s[1]
+    theta1_dot = s[2]
+    theta2_dot = s[3]
+    phi_dot = s[4]
+    g = q[0]
+    ell = q[1]
+    L = q[2]
+    D = q[3]
+    alpha = q[4]
+    _k0 = q[5]
+    _k1 = q[6]
+    _k2 = q[7]
+    _k3 = q[8]
+    _k4 = q[9]
+    _k5 = q[10]
+    _k6 = q[11]
+    _k7 = q[12]
+    _k8 = q[13]
+    _k9 = q[14]
+    _k10 = q[15]
+    _k11 = q[16]
+    _k12 = q[17]
+    _k13 = q[18]
+    _k14 = q[19]
+    _k15 = q[20]
+    _k16 = q[21]
+    _k17 = q[22]
+    _k18 = q[23]
+    _k19 = q[24]
+    _k20 = q[25]
+    _k21 = q[26]
+    _k22 = q[27]
+    _k23 = q[28]
+    _k24 = q[29]
+    _k25 = q[30]
+    _k26 = q[31]
+    _k27 = q[32]
+    _k28 = q[33]
+    _k29 = q[34]
+    _c0 = theta1*theta2
+    _c1 = (theta2*theta2)
+    _c2 = (theta1*theta1)
+    _c3 = 1/(_c0*_k2 + _c1*_k0 + _c2*_k1 + _k3)
+    _c4 = phi_dot*theta2_dot
+    _c5 = phi_dot*theta1_dot
+    _c6 = (theta1*theta1*theta1)
+    _c7 = (theta2*theta2*theta2)
+    _c8 = _c2*theta2
+    _c9 = _c1*theta1
+    ds[0] = theta1_dot
+    ds[1] = theta2_dot
+    ds[2] = _c3*_k11*(_c4*_k10 + _c5*_k7 + _c6*_k5 + _c7*_k9 + _c8*_k6 + _c9*_k8 + _k4*theta1)
+    ds[3] = _c3*_k19*(_c4*_k16 + _c5*_k14 + _c6*_k15 + _c7*_k13 + _c8*_k17 + _c9*_k18 + _k12*theta2)
+    ds[4] = _c3*_k26*(_c0*_k20 + _c1*_k21 + _c2*_k22 + _c4*_k23*theta2 + _c4*_k25*theta1 + _c5*_k24*theta1 + _c5*_k25*theta2)
 
 
 @njit(cache=True)
@@ -179,6 +315,74 @@ def rhs_pose(t, s, p):
     ds = np.empty(8)
     rhs_pose_into(t, s, p, ds)
     return ds
+
+
+@njit(cache=True)
+def rhs_pose_q_into(t, s, q, ds):
+    """``rhs_pose_into`` with ``q = constants(p)`` in place of ``p`` (76 operations)."""
+    theta1 = s[0]
+    theta2 = s[1]
+    theta1_dot = s[2]
+    theta2_dot = s[3]
+    phi_dot = s[4]
+    phi = s[5]
+    x = s[6]
+    y = s[7]
+    g = q[0]
+    ell = q[1]
+    L = q[2]
+    D = q[3]
+    alpha = q[4]
+    _k0 = q[5]
+    _k1 = q[6]
+    _k2 = q[7]
+    _k3 = q[8]
+    _k4 = q[9]
+    _k5 = q[10]
+    _k6 = q[11]
+    _k7 = q[12]
+    _k8 = q[13]
+    _k9 = q[14]
+    _k10 = q[15]
+    _k11 = q[16]
+    _k12 = q[17]
+    _k13 = q[18]
+    _k14 = q[19]
+    _k15 = q[20]
+    _k16 = q[21]
+    _k17 = q[22]
+    _k18 = q[23]
+    _k19 = q[24]
+    _k20 = q[25]
+    _k21 = q[26]
+    _k22 = q[27]
+    _k23 = q[28]
+    _k24 = q[29]
+    _k25 = q[30]
+    _k26 = q[31]
+    _k27 = q[32]
+    _k28 = q[33]
+    _k29 = q[34]
+    _c0 = theta1*theta2
+    _c1 = (theta2*theta2)
+    _c2 = (theta1*theta1)
+    _c3 = 1/(_c0*_k2 + _c1*_k0 + _c2*_k1 + _k3)
+    _c4 = phi_dot*theta2_dot
+    _c5 = phi_dot*theta1_dot
+    _c6 = (theta1*theta1*theta1)
+    _c7 = (theta2*theta2*theta2)
+    _c8 = _c2*theta2
+    _c9 = _c1*theta1
+    _c10 = alpha + phi
+    _c11 = phi_dot*(_k27*theta2 + _k28*theta1)
+    ds[0] = theta1_dot
+    ds[1] = theta2_dot
+    ds[2] = _c3*_k11*(_c4*_k10 + _c5*_k7 + _c6*_k5 + _c7*_k9 + _c8*_k6 + _c9*_k8 + _k4*theta1)
+    ds[3] = _c3*_k19*(_c4*_k16 + _c5*_k14 + _c6*_k15 + _c7*_k13 + _c8*_k17 + _c9*_k18 + _k12*theta2)
+    ds[4] = _c3*_k26*(_c0*_k20 + _c1*_k21 + _c2*_k22 + _c4*_k23*theta2 + _c4*_k25*theta1 + _c5*_k24*theta1 + _c5*_k25*theta2)
+    ds[5] = phi_dot
+    ds[6] = D*_c11*math.sin(_c10)
+    ds[7] = _c11*_k29*math.cos(_c10)
 
 
 @njit(cache=True)

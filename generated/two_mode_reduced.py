@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py and derivation/truncation.py.
-SymPy 1.14.0; input hash sha256:b7fd5eb3b344580bdb54ba49dcaefd879ceb9d63bb05e7619b012c5e47ff6bda
+SymPy 1.14.0; input hash sha256:6ea622b85bbc559a37f85a76741a7328b397009a9836eb891475958242416cd1
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -40,10 +40,10 @@ TILT_NAMES = ('theta1', 'theta2')
 #: the spin rate, whose zero crossings are the spin reversals
 SPIN_NAME = "phi_dot"
 MULTIPLIER_NAMES = ('Const22', 'Const23')
-INPUT_HASH = 'b7fd5eb3b344580bdb54ba49dcaefd879ceb9d63bb05e7619b012c5e47ff6bda'
+INPUT_HASH = '6ea622b85bbc559a37f85a76741a7328b397009a9836eb891475958242416cd1'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
-OP_COUNTS = {"rhs": 80, "rhs_pose": 91, "pose_rates": 13, "energy": 58, "multipliers": 56}
+OP_COUNTS = {'rhs': 80, 'constants': 52, 'rhs_q': 35, 'rhs_pose': 91, 'rhs_pose_q': 46, 'pose_rates': 13, 'energy': 58, 'multipliers': 56}
 
 
 @njit(cache=True)
@@ -88,6 +88,92 @@ def rhs(t, s, p):
     ds = np.empty(5)
     rhs_into(t, s, p, ds)
     return ds
+
+
+@njit(cache=True)
+def constants(p):
+    """``q``: the parameters, then the 17 parameter-only subexpressions of the right-hand side (52 operations)."""
+    q = np.empty(22)
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+    q[0] = g
+    q[1] = ell
+    q[2] = L
+    q[3] = D
+    q[4] = alpha
+    _c0 = math.sin(2*alpha)
+    _c1 = D*_c0
+    _c2 = math.cos(alpha)
+    _c3 = (_c2*_c2)
+    _c4 = 2*D
+    _c5 = math.sin(alpha)
+    _c6 = (L*L)
+    _c7 = (ell*ell)
+    _c8 = _c6 + _c7
+    _c9 = 1/_c8
+    _c10 = 4*_c0*g
+    _c11 = D*_c6
+    _c12 = 8*_c11
+    q[5] = -2*g
+    q[6] = -_c1
+    q[7] = _c3*_c4
+    q[8] = ((1.0/2.0))/ell
+    q[9] = _c1
+    q[10] = -_c4*(_c5*_c5)
+    q[11] = ((1.0/2.0))*_c9*ell
+    q[12] = -8*g*(_c3*_c6 + 2*_c3*_c7 - _c7)
+    q[13] = -_c10*_c7
+    q[14] = _c10*_c8
+    q[15] = _c11*(math.cos(4*alpha) - 1)
+    q[16] = -_c12*(_c5*_c5*_c5*_c5)
+    q[17] = _c12*_c2*(_c5*_c5*_c5)
+    q[18] = ((1.0/8.0))*D*_c9/_c6
+    q[19] = _c2
+    q[20] = -_c5
+    q[21] = -D
+    return q
+
+
+@njit(cache=True)
+def rhs_q_into(t, s, q, ds):
+    """``rhs_into`` with ``q = constants(p)`` in place of ``p`` (35 operations)."""
+    theta1 = s[0]
+    theta2 = s[1]
+    theta1_dot = s[2]
+    theta2_dot = s[3]
+    phi_dot = s[4]
+    g = q[0]
+    ell = q[1]
+    L = q[2]
+    D = q[3]
+    alpha = q[4]
+    _k0 = q[5]
+    _k1 = q[6]
+    _k2 = q[7]
+    _k3 = q[8]
+    _k4 = q[9]
+    _k5 = q[10]
+    _k6 = q[11]
+    _k7 = q[12]
+    _k8 = q[13]
+    _k9 = q[14]
+    _k10 = q[15]
+    _k11 = q[16]
+    _k12 = q[17]
+    _k13 = q[18]
+    _k14 = q[19]
+    _k15 = q[20]
+    _k16 = q[21]
+    _c0 = phi_dot*theta1_dot
+    _c1 = phi_dot*theta2_dot
+    ds[0] = theta1_dot
+    ds[1] = theta2_dot
+    ds[2] = _k3*(_c0*_k1 + _c1*_k2 + _k0*theta1)
+    ds[3] = _k6*(_c0*_k5 + _c1*_k4 + _k0*theta2)
+    ds[4] = _k13*(_c0*_k11*theta1 + _c0*_k12*theta2 + _c1*_k10*theta2 + _c1*_k12*theta1 + _k7*theta1*theta2 + _k8*(theta2*theta2) + _k9*(theta1*theta1))
 
 
 @njit(cache=True)
@@ -140,6 +226,53 @@ def rhs_pose(t, s, p):
     ds = np.empty(8)
     rhs_pose_into(t, s, p, ds)
     return ds
+
+
+@njit(cache=True)
+def rhs_pose_q_into(t, s, q, ds):
+    """``rhs_pose_into`` with ``q = constants(p)`` in place of ``p`` (46 operations)."""
+    theta1 = s[0]
+    theta2 = s[1]
+    theta1_dot = s[2]
+    theta2_dot = s[3]
+    phi_dot = s[4]
+    phi = s[5]
+    x = s[6]
+    y = s[7]
+    g = q[0]
+    ell = q[1]
+    L = q[2]
+    D = q[3]
+    alpha = q[4]
+    _k0 = q[5]
+    _k1 = q[6]
+    _k2 = q[7]
+    _k3 = q[8]
+    _k4 = q[9]
+    _k5 = q[10]
+    _k6 = q[11]
+    _k7 = q[12]
+    _k8 = q[13]
+    _k9 = q[14]
+    _k10 = q[15]
+    _k11 = q[16]
+    _k12 = q[17]
+    _k13 = q[18]
+    _k14 = q[19]
+    _k15 = q[20]
+    _k16 = q[21]
+    _c0 = phi_dot*theta1_dot
+    _c1 = phi_dot*theta2_dot
+    _c2 = alpha + phi
+    _c3 = phi_dot*(_k14*theta2 + _k15*theta1)
+    ds[0] = theta1_dot
+    ds[1] = theta2_dot
+    ds[2] = _k3*(_c0*_k1 + _c1*_k2 + _k0*theta1)
+    ds[3] = _k6*(_c0*_k5 + _c1*_k4 + _k0*theta2)
+    ds[4] = _k13*(_c0*_k11*theta1 + _c0*_k12*theta2 + _c1*_k10*theta2 + _c1*_k12*theta1 + _k7*theta1*theta2 + _k8*(theta2*theta2) + _k9*(theta1*theta1))
+    ds[5] = phi_dot
+    ds[6] = D*_c3*math.sin(_c2)
+    ds[7] = _c3*_k16*math.cos(_c2)
 
 
 @njit(cache=True)

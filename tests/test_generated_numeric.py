@@ -3,7 +3,9 @@
 Every generated module (every model, every fidelity) is evaluated at random
 states and parameters and compared with ``sympy.lambdify`` of the derived
 expressions: this catches printer errors (operator precedence, rational
-constants, powers) that a symbolic comparison cannot see.
+constants, powers) that a symbolic comparison cannot see.  The integrators' form of
+the right-hand side, ``rhs_q_into`` with the parameter-only subexpressions
+precomputed by ``constants(p)``, is checked against the same expressions.
 """
 import importlib
 
@@ -55,10 +57,17 @@ def test_generated_equals_lambdified(key, systems):
     if isinstance(system, ReducedSystem):
         lam = sp.lambdify([state, params], list(system.multipliers), "math")
         checks.append((mod.multipliers, lambda y, p: lam(y, p)))
+    def rhs_q(t, y, p):  # the integrators' form: parameter-only subexpressions precomputed once
+        ds = np.empty(len(state))
+        mod.rhs_q_into(t, y, mod.constants(p), ds)
+        return ds
+
+    checks.append((rhs_q, lambda y, p: rhs(y, p)))
     rng = np.random.default_rng(7)
     for y, p in _points(rng, len(state), params):
+        assert np.array_equal(mod.constants(p)[:len(params)], p), f"{key}: constants(p) must start with p"
         for compiled, reference in checks:
-            assert _close(compiled(0.0, y, p) if compiled is mod.rhs else compiled(y, p), reference(y, p)), \
+            assert _close(compiled(0.0, y, p) if compiled in (mod.rhs, rhs_q) else compiled(y, p), reference(y, p)), \
                 f"{key}: {compiled.__name__} differs from the derived expression at y={y}, p={p}"
     if isinstance(system, ReducedSystem) and system.spec.pose:
         pose = list(system.spec.pose)
@@ -66,3 +75,6 @@ def test_generated_equals_lambdified(key, systems):
         ref = sp.lambdify([state + pose, params], system.state_rhs() + rates, "math")
         for y, p in _points(rng, len(state) + len(pose), params, n=10):
             assert _close(mod.rhs_pose(0.0, y, p), ref(y, p)), f"{key}: rhs_pose differs"
+            ds = np.empty(len(y))
+            mod.rhs_pose_q_into(0.0, y, mod.constants(p), ds)
+            assert _close(ds, ref(y, p)), f"{key}: rhs_pose_q_into differs"

@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 import knifeedge as ke
-from knifeedge.integrators import COMPILED_METHODS, Status, specialize
+from knifeedge.integrators import COMPILED_METHODS, Status, kernel, specialize
 from knifeedge.integrators import dop853_tableau as t8
 from knifeedge.integrators import rk_tableaus as tb
 
@@ -207,14 +207,26 @@ def test_per_component_atol_and_mode_error_control_run():
 
 # -- the kernel cache ------------------------------------------------------------
 def test_kernel_source_imports_the_models_rhs(tmp_path):
-    src = specialize.kernel_source("erk", 1, "knifeedge.generated.two_mode_full", "rhs_pose_into")
-    assert "from knifeedge.generated.two_mode_full import rhs_pose_into as _rhs" in src
-    assert "VARIANT = 1" in src and "templates._stub" not in src
-    # stage sums unrolled with the Dormand-Prince coefficients as literals (a21 = 1/5, b1 = 35/384)
-    assert "out[i] = y[i] + h * (0.2 * K[0, i])" in src and f"{35 / 384!r} * K[0, i]" in src
-    assert "elif s == 15:" in specialize.kernel_source("erk", 0, "m", "rhs_into")  # DOP853 + 3 dense stages
+    src = specialize.kernel_source("erk", 1, "knifeedge.generated.two_mode_full", "rhs_pose_q_into", 8)
+    assert "from knifeedge.generated.two_mode_full import constants as _constants, rhs_pose_q_into as _rhs" in src
+    assert "VARIANT = 1" in src and "N = 8" in src and "templates._stub" not in src
+    # stages unrolled with the Dormand-Prince coefficients as literals (a21 = 1/5, b1 = 35/384)
+    assert "work[i] = y[i] + (h * 0.2) * K[0, i]" in src and f"y_new[i] = y[i] + (h * {35 / 384!r}) * K[0, i]" in src
+    # the error estimate likewise (e1 = -71/57600), and no generic loop over the stages is left in the step
+    assert f"e = ({-71 / 57600!r} * K[0, i]" in src and "for s in range(1, N_STAGES)" not in src
+    assert "elif s == 15:" in specialize.kernel_source("erk", 0, "m", "rhs_q_into", 3)  # DOP853 + 3 dense stages
     with pytest.raises(ValueError, match="unknown kernel template"):
-        specialize.kernel_source("euler", 0, "x", "y")
+        specialize.kernel_source("euler", 0, "x", "y", 3)
+    with pytest.raises(ValueError, match="n_state"):
+        specialize.kernel_source("erk", 0, "x", "y", 0)
+
+
+def test_kernel_refuses_a_state_of_another_size():
+    m, p = _single()
+    solve = kernel(m, "DOP853")
+    y = np.zeros(5)
+    with pytest.raises(ValueError, match="size this kernel was specialized to"):
+        solve(0.0, 1.0, y, p, 1e-6, np.full(5, 1e-9), 0.0, np.inf, np.empty(0), True, 2, 10, np.full(5, -1), False)
 
 
 def test_cache_dir_follows_the_environment(tmp_path, monkeypatch):

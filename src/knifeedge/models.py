@@ -110,7 +110,11 @@ class Model:
             raise ValueError(
                 f"parameters `p` must have shape ({len(self.param_names)},) for {self.param_names}, got {arr.shape}"
             )
-        return self.params(dict(zip(self.param_names, arr)))
+        values = arr.tolist()
+        for n, v in zip(self.param_names, values):
+            if not math.isfinite(v) or (n not in SIGNED_PARAMS and not v > 0):
+                return self.params(dict(zip(self.param_names, values)))  # raises, naming the parameter
+        return np.array(values)
 
     def state(self, values: Mapping | None = None, /, **kwargs) -> np.ndarray:
         """Validated float64 state vector in the order of :attr:`state_names`.
@@ -143,7 +147,7 @@ class Model:
             raise ValueError(
                 f"initial state `y0` must have shape ({self.n_state},) for {self.state_names}, got {arr.shape}"
             )
-        if not np.all(np.isfinite(arr)):
+        if not all(map(math.isfinite, arr.tolist())):
             raise ValueError("All components of the initial state `y0` must be finite.")
         return arr
 

@@ -103,15 +103,21 @@ SCIPY_METHODS = ("RK45", "DOP853", "LSODA", "Radau")
 METHODS: dict = {}
 
 
+_PAIRS: dict = {}
+
+
 def _mode_pairs(model: Model) -> np.ndarray:
-    """``pair[i]``: the partner of a tilt and its rate (``theta`` <-> ``theta_dot``), else -1."""
-    pair = np.full(model.n_state, -1, dtype=np.int64)
-    for name in model.tilt_names:
-        rate = f"{name}_dot"
-        if name in model.state_names and rate in model.state_names:
-            i, j = model.index(name), model.index(rate)
-            pair[i], pair[j] = j, i
-    return pair
+    """``pair[i]``: the partner of a tilt and its rate (``theta`` <-> ``theta_dot``), else -1 (read-only)."""
+    if model not in _PAIRS:
+        pair = np.full(model.n_state, -1, dtype=np.int64)
+        for name in model.tilt_names:
+            rate = f"{name}_dot"
+            if name in model.state_names and rate in model.state_names:
+                i, j = model.index(name), model.index(rate)
+                pair[i], pair[j] = j, i
+        pair.flags.writeable = False
+        _PAIRS[model] = pair
+    return _PAIRS[model]
 
 
 def _run_compiled(name: str):
@@ -185,6 +191,8 @@ def _check_positive(v, name: str) -> float:
 
 
 def _check_atol(atol, n: int) -> np.ndarray:
+    if type(atol) is float and math.isfinite(atol) and atol > 0:  # the common case, without numpy's overhead
+        return np.full(n, atol)
     if isinstance(atol, (bool, str)):
         raise TypeError(f"`atol` must be a positive number or an array of shape ({n},), got {atol!r}")
     try:
@@ -195,7 +203,7 @@ def _check_atol(atol, n: int) -> np.ndarray:
         arr = np.full(n, float(arr))
     if arr.shape != (n,):
         raise ValueError(f"`atol` must be a number or have shape ({n},) (one per state), got shape {arr.shape}")
-    if not np.all(np.isfinite(arr) & (arr > 0)):
+    if not all(math.isfinite(v) and v > 0 for v in arr.tolist()):
         raise ValueError(f"`atol` must be positive and finite, got {atol!r}")
     return np.ascontiguousarray(arr)
 
@@ -270,7 +278,7 @@ def simulate(
     atol = _check_atol(atol, model.n_state)
     if t_eval is not None:
         t_eval = np.asarray(t_eval, dtype=float)
-        if t_eval.ndim != 1 or not np.all(np.isfinite(t_eval)) or np.any(np.diff(t_eval) <= 0) \
+        if t_eval.ndim != 1 or not np.isfinite(t_eval).all() or (t_eval[1:] <= t_eval[:-1]).any() \
                 or (t_eval.size and (t_eval[0] < t0 or t_eval[-1] > t1)):
             raise ValueError("`t_eval` must be a finite, strictly increasing 1-D array inside `t_span`")
     max_step = _check_positive(max_step, "max_step") if max_step != math.inf else math.inf
@@ -291,9 +299,8 @@ def simulate(
     run = _Run(model, y0, t0, t1, p, rtol, atol, t_eval, max_step, h, max_steps, error_control)
     t, y, rev, outcome, nfev, nsteps, nrej = METHODS[method](run)
     t, y = np.asarray(t), np.asarray(y)
-    finite = np.all(np.isfinite(y), axis=0)
-    if not np.all(finite):  # SciPy methods accept non-finite states; cut them off and say so
-        bad = int(np.argmin(finite))
+    if not np.isfinite(y).all():  # SciPy methods accept non-finite states; cut them off and say so
+        bad = int(np.argmin(np.isfinite(y).all(axis=0)))
         t, y = t[:bad], y[:, :bad]
         rev = rev[rev <= (t[-1] if t.size else t0)]
         outcome = Status.NON_FINITE

@@ -55,10 +55,10 @@ _KERNELS: dict = {}
 def kernel(model, method: str):
     """The compiled ``solve`` function of ``method`` for ``model`` (a :class:`knifeedge.Model`)."""
     spec = COMPILED_METHODS[ALIASES.get(method, method)]
-    rhs_name = "rhs_pose_into" if model.pose else "rhs_into"
+    rhs_name = "rhs_pose_q_into" if model.pose else "rhs_q_into"
     key = (model.module.__name__, rhs_name, spec.template, spec.variant)
     if key not in _KERNELS:
-        _KERNELS[key] = load_kernel(spec.template, spec.variant, model.module, rhs_name).solve
+        _KERNELS[key] = load_kernel(spec.template, spec.variant, model.module, rhs_name, model.n_state).solve
     return _KERNELS[key]
 
 

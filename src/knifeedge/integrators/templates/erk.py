@@ -16,9 +16,10 @@ from numba import njit
 from knifeedge.integrators import common as _c
 from knifeedge.integrators import dop853_tableau as _t8
 from knifeedge.integrators import rk_tableaus as _t5
-from knifeedge.integrators.templates._stub import rhs_into as _rhs  # knifeedge:rhs
+from knifeedge.integrators.templates._stub import constants as _constants, rhs_q_into as _rhs  # knifeedge:rhs
 
 VARIANT = 0  # knifeedge:variant  (0: DOP853, 1: Dormand--Prince 5(4))
+N = 3  # knifeedge:n  (the state size, a compile-time constant so that the loops over it unroll)
 
 if VARIANT == 0:
     N_STAGES = 12
@@ -54,6 +55,23 @@ MIN_FACTOR = 0.2
 MAX_FACTOR = 10.0
 
 
+_EPS = np.finfo(np.float64).eps
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def _min_step(t):
+    """The smallest step SciPy allows at ``t``: 10 ulps."""
+    return 10.0 * abs(np.nextafter(t, np.inf) - t)
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def _power(err):
+    """``err ** ERROR_EXPONENT`` of the step-size controller; DOP853's -1/8 as three square roots (cheaper than pow)."""
+    if VARIANT == 0:
+        return 1.0 / np.sqrt(np.sqrt(np.sqrt(err)))
+    return err ** ERROR_EXPONENT
+
+
 @njit(cache=True, error_model="numpy", inline="always")
 def _rms(v):
     s = 0.0
@@ -64,7 +82,7 @@ def _rms(v):
 
 @njit(cache=True, error_model="numpy", inline="always")
 def _scale(y, y_new, rtol, atol, pair, mode_scaled, out):
-    for i in range(y.size):
+    for i in range(N):
         m = max(abs(y[i]), abs(y_new[i]))
         if mode_scaled and pair[i] >= 0:
             j = pair[i]
@@ -73,9 +91,9 @@ def _scale(y, y_new, rtol, atol, pair, mode_scaled, out):
 
 
 @njit(cache=True, error_model="numpy")
-def initial_step(t0, y0, f0, p, t1, max_step, rtol, atol, work):
+def initial_step(t0, y0, f0, q, t1, max_step, rtol, atol, work):
     """Hairer, Norsett & Wanner I, Sect. II.4 (as SciPy's ``select_initial_step``); one rhs call."""
-    n = y0.size
+    n = N
     interval = abs(t1 - t0)
     d0 = 0.0
     d1 = 0.0
@@ -90,7 +108,7 @@ def initial_step(t0, y0, f0, p, t1, max_step, rtol, atol, work):
     if not h0 > 0.0:  # the derivative overflows the scale: start at the smallest step
         return 0.0
     y1 = y0 + h0 * f0
-    _rhs(t0 + h0, y1, p, work)
+    _rhs(t0 + h0, y1, q, work)
     d2 = 0.0
     for i in range(n):
         sc = atol[i] + abs(y0[i]) * rtol
@@ -106,7 +124,7 @@ def initial_step(t0, y0, f0, p, t1, max_step, rtol, atol, work):
 @njit(cache=True, error_model="numpy", inline="always")
 def _stage_state(K, s, y, h, out):  # knifeedge:stages
     """``out = y + h * sum_j A[s, j] K[j]``; the specializer replaces this body by unrolled code."""
-    for i in range(y.size):
+    for i in range(N):
         acc = 0.0
         for j in range(s):
             a = A[s, j]
@@ -115,9 +133,25 @@ def _stage_state(K, s, y, h, out):  # knifeedge:stages
         out[i] = y[i] + h * acc
 
 
+@njit(cache=True, error_model="numpy", fastmath={"contract"}, inline="always")
+def _attempt(t, t_new, y, h, q, K, work, y_new):  # knifeedge:attempt
+    """Stages 1 .. N_STAGES of a step from ``(t, y)``; ``K[0]`` holds f(t, y) (FSAL).
+
+    Writes ``K[1 .. N_STAGES]`` and ``y_new = y + h sum_j B_j K[j]``; the
+    specializer replaces this body by straight-line code with the tableau's
+    coefficients as literals.
+    """
+    for s in range(1, N_STAGES):
+        _stage_state(K, s, y, h, work)
+        _rhs(t + C[s] * h, work, q, K[s])
+    _stage_state(K, N_STAGES, y, h, y_new)
+    _rhs(t_new, y_new, q, K[N_STAGES])
+
+
 @njit(cache=True, error_model="numpy", inline="always")
-def _error_norm(K, h, scale, work5, work3):
-    n = scale.size
+def _error_norm(K, h, scale, work5, work3):  # knifeedge:error
+    """Scaled norm of the embedded error estimate; the specializer unrolls it like :func:`_attempt`."""
+    n = N
     for i in range(n):
         e5 = 0.0
         e3 = 0.0
@@ -139,13 +173,13 @@ def _error_norm(K, h, scale, work5, work3):
 
 
 @njit(cache=True, error_model="numpy")
-def _dense(K, y_old, y_new, t_old, h, p, F, work):
+def _dense(K, y_old, y_new, t_old, h, q, F, work):
     """Interpolant coefficients of the accepted step; returns the rhs calls it made."""
-    n = y_old.size
+    n = N
     if VARIANT == 0:
         for s in range(N_STAGES + 1, N_EXT):
             _stage_state(K, s, y_old, h, work)
-            _rhs(t_old + C[s] * h, work, p, K[s])
+            _rhs(t_old + C[s] * h, work, q, K[s])
         for i in range(n):
             dy = y_new[i] - y_old[i]
             F[0, i] = dy
@@ -166,7 +200,7 @@ def _dense(K, y_old, y_new, t_old, h, p, F, work):
     return 0
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", fastmath={"contract"})
 def solve(t0, t1, y0, p, rtol, atol, h_init, max_step, t_eval, every, spin, max_steps, pair, mode_scaled):
     """Integrate from ``t0`` to ``t1 > t0``.
 
@@ -185,7 +219,10 @@ def solve(t0, t1, y0, p, rtol, atol, h_init, max_step, t_eval, every, spin, max_
     -------
     ts (k,), ys (k, n), ev (e,), status code, nfev, accepted steps, rejected steps
     """
-    n = y0.size
+    if y0.size != N:
+        raise ValueError("the initial state does not have the size this kernel was specialized to")
+    q = _constants(p)
+    n = N
     K = np.empty((N_EXT, n))
     y = y0.copy()
     y_new = np.empty(n)
@@ -196,12 +233,12 @@ def solve(t0, t1, y0, p, rtol, atol, h_init, max_step, t_eval, every, spin, max_
     ts, ys, n_out, ie = _c.start_output(t0, y, t_eval, every)
     ev = np.empty(8)
     n_ev = 0
-    _rhs(t0, y, p, K[0])
+    _rhs(t0, y, q, K[0])
     nfev = 1
     if h_init > 0.0:
         h_abs = h_init
     else:
-        h_abs = initial_step(t0, y, K[0], p, t1, max_step, rtol, atol, work)
+        h_abs = initial_step(t0, y, K[0], q, t1, max_step, rtol, atol, work)
         nfev += 1
     t = t0
     status = 0
@@ -211,14 +248,15 @@ def solve(t0, t1, y0, p, rtol, atol, h_init, max_step, t_eval, every, spin, max_
         if n_acc >= max_steps:
             status = -2
             break
-        min_step = 10.0 * abs(np.nextafter(t, np.inf) - t)
+        # SciPy's smallest step is 10 ulps of t; nextafter is called only near it (10 ulps <= 10 eps |t|)
+        near = 10.0 * _EPS * abs(t) + 1e-300
         if h_abs > max_step:
             h_abs = max_step
-        elif h_abs < min_step:
-            h_abs = min_step
+        elif h_abs < near and h_abs < _min_step(t):
+            h_abs = _min_step(t)
         rejected = False
         while True:
-            if h_abs < min_step:
+            if h_abs < near and h_abs < _min_step(t):
                 status = -1
                 break
             t_new = t + h_abs
@@ -226,11 +264,7 @@ def solve(t0, t1, y0, p, rtol, atol, h_init, max_step, t_eval, every, spin, max_
                 t_new = t1
             h = t_new - t
             h_abs = abs(h)
-            for s in range(1, N_STAGES):
-                _stage_state(K, s, y, h, work)
-                _rhs(t + C[s] * h, work, p, K[s])
-            _stage_state(K, N_STAGES, y, h, y_new)
-            _rhs(t_new, y_new, p, K[N_STAGES])
+            _attempt(t, t_new, y, h, q, K, work, y_new)
             nfev += N_STAGES
             _scale(y, y_new, rtol, atol, pair, mode_scaled, scale)
             err = _error_norm(K, h, scale, work, work3)
@@ -238,7 +272,7 @@ def solve(t0, t1, y0, p, rtol, atol, h_init, max_step, t_eval, every, spin, max_
                 if err == 0.0:
                     factor = MAX_FACTOR
                 else:
-                    factor = min(MAX_FACTOR, SAFETY * err ** ERROR_EXPONENT)
+                    factor = min(MAX_FACTOR, SAFETY * _power(err))
                 if rejected:
                     factor = min(1.0, factor)
                 h_abs *= factor
@@ -246,7 +280,7 @@ def solve(t0, t1, y0, p, rtol, atol, h_init, max_step, t_eval, every, spin, max_
             if not np.isfinite(err):
                 h_abs *= MIN_FACTOR
             else:
-                h_abs *= max(MIN_FACTOR, SAFETY * err ** ERROR_EXPONENT)
+                h_abs *= max(MIN_FACTOR, SAFETY * _power(err))
             rejected = True
             n_rej += 1
         if status != 0:
@@ -255,11 +289,12 @@ def solve(t0, t1, y0, p, rtol, atol, h_init, max_step, t_eval, every, spin, max_
         crossed = spin >= 0 and _c.crossing(y[spin], y_new[spin])
         if crossed or every or (ie < t_eval.size and t_eval[ie] <= t_new):
             if crossed or (ie < t_eval.size and t_eval[ie] < t_new):
-                nfev += _dense(K, y, y_new, t, h, p, F, work)
+                nfev += _dense(K, y, y_new, t, h, q, F, work)
             ie, ts, ys, n_out, ev, n_ev = _c.record_step(
                 DENSE_KIND, F, y, y_new, t, t_new, spin, t_eval, ie, every, ts, ys, n_out, ev, n_ev, work
             )
-        y[:] = y_new
-        K[0, :] = K[N_STAGES, :]
+        for i in range(n):
+            y[i] = y_new[i]
+            K[0, i] = K[N_STAGES, i]
         t = t_new
     return ts[:n_out].copy(), ys[:n_out].copy(), ev[:n_ev].copy(), status, nfev, n_acc, n_rej

@@ -19,9 +19,10 @@ from numba import njit
 
 from knifeedge.integrators import common as _c
 from knifeedge.integrators import rk_tableaus as _tb
-from knifeedge.integrators.templates._stub import rhs_into as _rhs  # knifeedge:rhs
+from knifeedge.integrators.templates._stub import constants as _constants, rhs_q_into as _rhs  # knifeedge:rhs
 
 VARIANT = 0  # knifeedge:variant  (0: RK4; s = 1, 2, 3: Gauss--Legendre with s stages)
+N = 3  # knifeedge:n  (the state size, a compile-time constant so that the loops over it unroll)
 
 if VARIANT == 0:
     S = 4
@@ -53,23 +54,23 @@ _EPS = 2.220446049250313e-16
 
 
 @njit(cache=True, error_model="numpy")
-def _rk4_increment(t, y, h, p, f0, K, work, dy):
-    for i in range(y.size):
+def _rk4_increment(t, y, h, q, f0, K, work, dy):
+    for i in range(N):
         work[i] = y[i] + 0.5 * h * f0[i]
-    _rhs(t + 0.5 * h, work, p, K[1])
-    for i in range(y.size):
+    _rhs(t + 0.5 * h, work, q, K[1])
+    for i in range(N):
         work[i] = y[i] + 0.5 * h * K[1, i]
-    _rhs(t + 0.5 * h, work, p, K[2])
-    for i in range(y.size):
+    _rhs(t + 0.5 * h, work, q, K[2])
+    for i in range(N):
         work[i] = y[i] + h * K[2, i]
-    _rhs(t + h, work, p, K[3])
-    for i in range(y.size):
+    _rhs(t + h, work, q, K[3])
+    for i in range(N):
         dy[i] = h / 6.0 * (f0[i] + 2.0 * K[1, i] + 2.0 * K[2, i] + K[3, i])
     return 3
 
 
 @njit(cache=True, error_model="numpy")
-def _gauss_increment(t, y, h, p, scale, Z, Znew, work, dy):
+def _gauss_increment(t, y, h, q, scale, Z, Znew, work, dy):
     """Solve the stage equations by fixed-point iteration; returns (rhs calls, converged).
 
     The iteration stops when the largest change of a stage increment relative
@@ -79,7 +80,7 @@ def _gauss_increment(t, y, h, p, scale, Z, Znew, work, dy):
     first value (divergence), becomes non-finite, or ``MAX_ITER`` iterations
     pass.
     """
-    n = y.size
+    n = N
     nfev = 0
     dprev = np.inf
     dfirst = np.inf
@@ -93,7 +94,7 @@ def _gauss_increment(t, y, h, p, scale, Z, Znew, work, dy):
                 for j in range(S):
                     acc += GA[k, j] * Z[j, i]
                 work[i] = y[i] + h * acc
-            _rhs(t + GC[k] * h, work, p, Znew[k])
+            _rhs(t + GC[k] * h, work, q, Znew[k])
         nfev += S
         d = 0.0
         dglob = 0.0
@@ -126,7 +127,7 @@ def _gauss_increment(t, y, h, p, scale, Z, Znew, work, dy):
 @njit(cache=True, error_model="numpy")
 def _solver_scale(y, atol, pair, out):
     """Scale of the stage solver's test: a component's magnitude, or its mode partner's if larger, or atol."""
-    for i in range(y.size):
+    for i in range(N):
         m = abs(y[i])
         if pair[i] >= 0:
             m = max(m, abs(y[pair[i]]))
@@ -142,9 +143,12 @@ def solve(t0, t1, y0, p, h_req, atol, t_eval, every, spin, max_steps, pair):
     (-1: none) whose magnitude also sets it (Gauss only).  Other arguments and the returned tuple
     are as for the adaptive kernel (rejected steps are always 0).
     """
-    n = y0.size
-    N = max(1, int(math.ceil((t1 - t0) / h_req)))
-    h = (t1 - t0) / N
+    if y0.size != N:
+        raise ValueError("the initial state does not have the size this kernel was specialized to")
+    q = _constants(p)
+    n = N
+    n_steps = max(1, int(math.ceil((t1 - t0) / h_req)))
+    h = (t1 - t0) / n_steps
     y = y0.copy()
     y_new = np.empty(n)
     dy = np.empty(n)
@@ -161,23 +165,23 @@ def solve(t0, t1, y0, p, h_req, atol, t_eval, every, spin, max_steps, pair):
     ts, ys, n_out, ie = _c.start_output(t0, y, t_eval, every)
     ev = np.empty(8)
     n_ev = 0
-    _rhs(t0, y, p, f_old)
+    _rhs(t0, y, q, f_old)
     nfev = 1
     for k in range(S):
         Z[k, :] = f_old
     status = 0
     n_acc = 0
     t = t0
-    for step in range(1, N + 1):
+    for step in range(1, n_steps + 1):
         if n_acc >= max_steps:
             status = -2
             break
-        t_new = t1 if step == N else t0 + step * h
+        t_new = t1 if step == n_steps else t0 + step * h
         if VARIANT == 0:
-            nfev += _rk4_increment(t, y, h, p, f_old, K, work, dy)
+            nfev += _rk4_increment(t, y, h, q, f_old, K, work, dy)
         else:
             _solver_scale(y, atol, pair, scale)
-            calls, ok = _gauss_increment(t, y, h, p, scale, Z, Znew, work, dy)
+            calls, ok = _gauss_increment(t, y, h, q, scale, Z, Znew, work, dy)
             nfev += calls
             if not ok:
                 status = -4
@@ -187,7 +191,7 @@ def solve(t0, t1, y0, p, h_req, atol, t_eval, every, spin, max_steps, pair):
         if not _c.all_finite(y_new):
             status = -3
             break
-        _rhs(t_new, y_new, p, f_new)
+        _rhs(t_new, y_new, q, f_new)
         nfev += 1
         if not _c.all_finite(f_new):
             status = -3
