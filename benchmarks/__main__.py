@@ -14,7 +14,7 @@ import time
 from pathlib import Path
 
 from . import failures, overhead, peers, report, work_precision
-from .reference import reference
+from .reference import perturbation_spread, reference
 from .scenes import SINGLE, TWO
 
 
@@ -69,6 +69,7 @@ def main(argv=None) -> int:
     log("cost per right-hand-side evaluation")
     results["per_evaluation"] = [overhead.per_evaluation(SINGLE.with_end(3000.0), repeats=repeats),
                                  overhead.per_evaluation(TWO, repeats=repeats)]
+    results["integrator_floor"] = overhead.integrator_floor(repeats=repeats)
     log("warm start of a second process")
     results["warm_start"] = overhead.warm_start(TWO)
 
@@ -81,6 +82,10 @@ def main(argv=None) -> int:
     log("later reversals (two-mode scene, t = 0..12000)")
     ref12 = reference(TWO.with_end(12000.0), h=0.025)
     results["later_reversals_reference"] = ref12
+    spread = perturbation_spread(TWO.with_end(12000.0), h=0.025)
+    results["later_reversals_reference_spread"] = spread
+    log("  reference reversals move by " + ", ".join(f"{x:.1e}" for x in spread["max_relative_shift"])
+        + f" when the initial state moves by {spread['relative_perturbation']:g} (relative)")
     later = failures.later_reversals(ref12["reversal_times"], progress=log)
     results["later_reversals"] = later
     results["later_reversals_cheapest"] = failures.cheapest_converged(later)
@@ -108,12 +113,15 @@ def _summary(res, log) -> None:
             vals = ", ".join(f"err {k}: {'-' if x is None else f'{x:.2f}x'}" for k, x in v.items())
             print(f"{scene}: time {peer} / knifeedge DOP853 at equal final-state error: {vals}")
     for q in res["per_evaluation"]:
-        line = (f"{q['scene']}: per rhs evaluation: floor {q['floor_ns']:.1f} ns, DOP853 kernel "
+        line = (f"{q['scene']}: per rhs evaluation: floor {q['floor_ns']:.1f} ns (rhs_into from the parameters "
+                f"{q['floor_p_ns']:.1f} ns), DOP853 kernel "
                 f"{q['dop853_kernel_ns']:.1f} ns (overhead {q['dop853_overhead_ns']:.1f} ns), via ke.simulate "
                 f"{q['dop853_simulate_ns']:.1f} ns")
         if "numbalsoda_ns" in q:
             line += f", numbalsoda DOP853 {q['numbalsoda_ns']:.1f} ns (overhead {q['numbalsoda_overhead_ns']:.1f} ns)"
         print(line)
+    print("integrator's own cost per evaluation (near-free rhs): " + ", ".join(
+        f"{q['method']} n={q['n_state']}: {q['ns_per_evaluation']:.1f} ns" for q in res["integrator_floor"]))
     w = res["warm_start"]
     print(f"warm second process: import {w['import_s']:.2f} s, then simulate {w['simulate_after_import_s']:.3f} s")
     for k, v in res["largest_right_step"].items():

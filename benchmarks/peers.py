@@ -6,6 +6,9 @@
 * ``solve_ivp`` with the generated numba right-hand side;
 * numbalsoda's compiled DOP853 (Hairer's Fortran code) with the generated
   right-hand side wrapped as a C callback, when numbalsoda is installed.
+  It gets the same right-hand side the compiled kernels call
+  (``rhs_q_into`` with ``constants(p)``), so the race is between the
+  integrators alone.
 
 Each runner returns ``(y_end, reversal_times or None, nfev)``.
 """
@@ -56,9 +59,10 @@ def numbalsoda_runner(scene):
     """numbalsoda's DOP853, or None when it is not installed.  nfev is counted in the callback."""
     if numbalsoda is None:
         return None
-    model, p, y0 = scene.model, scene.p, scene.y
+    model, y0 = scene.model, scene.y
+    p = model.module.constants(scene.p)  # the right-hand side the compiled kernels call, for a fair race
     n, n_p = model.n_state, p.size
-    rhs_into = model.rhs_into
+    rhs_into = model.module.rhs_pose_q_into if model.pose else model.module.rhs_q_into
 
     @cfunc(numbalsoda.lsoda_sig)
     def f(t, u, du, data):
