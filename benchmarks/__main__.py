@@ -93,7 +93,8 @@ def main(argv=None) -> int:
     log(f"long runs ({periods:g} periods)")
     long = failures.long_runs(periods=periods, progress=log)
     results["long_runs"] = long
-    report.failures_chart(stab, rows, later, ref12["reversal_times"], long, args.out / "failures.png")
+    report.failures_chart(stab, rows, later, ref12["reversal_times"], long, args.out / "failures.png",
+                          later_floor=max(spread["max_relative_shift"][1:]))
     report.write_json(results, args.out / "results.json")
     _summary(results, log)
     log(f"wrote {args.out}/work_precision.png, failures.png, work_precision.csv, results.json")

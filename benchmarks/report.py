@@ -85,7 +85,9 @@ VERDICT_COLORS = {"right": "tab:green", "reversal time off > 1e-3 (silent)": "go
                   "solver failure (reported)": "tab:gray"}
 
 
-def failures_chart(stab, wp_rows, later, ref_times_later, long, path: Path) -> None:
+def failures_chart(stab, wp_rows, later, ref_times_later, long, path: Path, later_floor=None) -> None:
+    """The four failure panels; ``later_floor`` (largest shift of reversals 2..4 under a round-off
+    perturbation of the initial state) is drawn as the band below which errors are not resolved."""
     fig, ax = plt.subplots(2, 2, figsize=(14, 10))
     # (a) stability map
     a = ax[0, 0]
@@ -131,6 +133,10 @@ def failures_chart(stab, wp_rows, later, ref_times_later, long, path: Path) -> N
         c.loglog([p[0] for p in pts], [min(p[1], 1.0) for p in pts], marker="o", ms=4, color=colors[base], ls=ls,
                  label=name)
     c.axhline(1e-3, color="k", lw=0.6, ls=":")
+    if later_floor:
+        c.axhspan(1e-8, later_floor, color="0.85", zorder=0)
+        c.text(0.02, 0.02, f"below {later_floor:.0e}: set by round-off (double precision)", transform=c.transAxes,
+               fontsize=7, color="0.3")
     c.set_xlabel("right-hand-side evaluations (two-mode scene, t = 0..12000)")
     c.set_ylabel("worst relative error of reversals 2..4 (1 = count wrong)")
     c.set_title("Conditioning of the later reversals: error against cost", fontsize=9)
