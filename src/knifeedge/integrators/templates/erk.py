@@ -133,7 +133,7 @@ def _stage_state(K, s, y, h, out):  # knifeedge:stages
         out[i] = y[i] + h * acc
 
 
-@njit(cache=True, error_model="numpy", fastmath={"contract"}, inline="always")
+@njit(cache=True, error_model="numpy", inline="always")
 def _attempt(t, t_new, y, h, q, K, work, y_new):  # knifeedge:attempt
     """Stages 1 .. N_STAGES of a step from ``(t, y)``; ``K[0]`` holds f(t, y) (FSAL).
 
@@ -200,6 +200,7 @@ def _dense(K, y_old, y_new, t_old, h, q, F, work):
     return 0
 
 
+# "contract": fused multiply-adds in the stage sums, which are inlined here (see specialize._attempt_body)
 @njit(cache=True, error_model="numpy", fastmath={"contract"})
 def solve(t0, t1, y0, p, rtol, atol, h_init, max_step, t_eval, every, spin, max_steps, pair, mode_scaled):
     """Integrate from ``t0`` to ``t1 > t0``.
