@@ -6,7 +6,7 @@ replaced by an import of the model's right-hand side, its
 line by the state size (a compile-time constant, so LLVM unrolls the loops
 over the state).  In the adaptive template, the bodies of the functions
 marked ``# knifeedge:attempt`` (the stages of a step), ``# knifeedge:error``
-(the error norm) and ``# knifeedge:stages`` (one stage, for dense output)
+(the error norm) and ``# knifeedge:stages`` (a dense-output stage)
 are replaced by straight-line code with the tableau's coefficients as
 literals.  The error norm and the dense stages sum in the generic loop's
 order; the stages of a step are summed as ``y + (h a_0) K_0 + ...`` so
@@ -95,7 +95,7 @@ def kernel_source(template: str, variant: int, rhs_module: str, rhs_name: str, n
                            f"{N_MARK!r} lines")
     if template == "erk":
         tableau = _erk_tableau(variant)
-        out = _replace_body(out, STAGES_MARK, _stage_body(tableau["A"]))
+        out = _replace_body(out, STAGES_MARK, _stage_body(tableau["A"], tableau["n_stages"]))
         out = _replace_body(out, ATTEMPT_MARK, _attempt_body(tableau["A"], tableau["C"], tableau["n_stages"]))
         out = _replace_body(out, ERROR_MARK, _error_body(tableau, variant))
     header = (f"# Specialized kernel: template {template}.py, variant {variant}, rhs {rhs_module}.{rhs_name}, "
@@ -125,14 +125,18 @@ def _sum(coefficients) -> str:
     return " + ".join(terms) if terms else "0.0"
 
 
-def _stage_body(A) -> list:
-    """Body of ``_stage_state(K, s, y, h, out)``: one branch per stage ``s`` (the dense-output stages use it)."""
+def _stage_body(A, n_stages: int) -> list:
+    """Body of ``_stage_state(K, s, y, h, out)``: one branch per dense-output stage ``s > n_stages``.
+
+    Once :func:`_attempt_body` has written the step's stages, the dense
+    output is its only caller; a method without extra stages gets an empty body.
+    """
     body = []
-    for s in range(1, A.shape[0]):
-        body.append(f"    {'if' if s == 1 else 'elif'} s == {s}:")
+    for s in range(n_stages + 1, A.shape[0]):
+        body.append(f"    {'if' if not body else 'elif'} s == {s}:")
         body.append("        for i in range(N):")
         body.append(f"            out[i] = y[i] + h * ({_sum(A[s, :s])})")
-    return body
+    return body or ["    pass"]
 
 
 def _attempt_body(A, C, n_stages: int) -> list:

@@ -123,7 +123,7 @@ def initial_step(t0, y0, f0, q, t1, max_step, rtol, atol, work):
 
 @njit(cache=True, error_model="numpy", inline="always")
 def _stage_state(K, s, y, h, out):  # knifeedge:stages
-    """``out = y + h * sum_j A[s, j] K[j]``; the specializer replaces this body by unrolled code."""
+    """``out = y + h * sum_j A[s, j] K[j]``; the specializer keeps only the dense-output stages, unrolled."""
     for i in range(N):
         acc = 0.0
         for j in range(s):
