@@ -45,12 +45,12 @@ def per_evaluation(scene, rtol=1e-10, repeats=7) -> dict:
     atol = np.full(n, rtol * 1e-6)
     te = np.array([scene.t_end])
     pair = np.full(n, -1, dtype=np.int64)
-    spin = m.index(m.spin_name)
+    events = np.array([m.index(m.spin_name)])
 
     def run_kernel():
-        return solve(0.0, scene.t_end, y0, p, rtol, atol, 0.0, np.inf, te, False, spin, 10**8, pair, False)
+        return solve(0.0, scene.t_end, y0, p, rtol, atol, 0.0, np.inf, te, False, events, 10**8, pair, False, 10**8)
 
-    nfev = run_kernel()[4]
+    nfev = run_kernel()[7]
     t_kernel = median_time(run_kernel, repeats)
     t_api = median_time(lambda: ke.simulate(m, y0, (0.0, scene.t_end), p, rtol=rtol, atol=rtol * 1e-6, t_eval=te),
                         repeats)
@@ -91,10 +91,10 @@ def integrator_floor(repeats=7) -> list:
             y0, p = np.full(n, 0.5), np.array([0.1])
             atol, te, pair = np.full(n, 1e-16), np.array([300.0]), np.full(n, -1, dtype=np.int64)
 
-            def run(solve=solve, y0=y0, p=p, atol=atol, te=te, pair=pair):
-                return solve(0.0, 300.0, y0, p, 1e-10, atol, 0.0, np.inf, te, False, -1, 10**8, pair, False)
+            def run(solve=solve, y0=y0, p=p, atol=atol, te=te, pair=pair, none=np.empty(0, dtype=np.int64)):
+                return solve(0.0, 300.0, y0, p, 1e-10, atol, 0.0, np.inf, te, False, none, 10**8, pair, False, 10**8)
 
-            nfev = run()[4]
+            nfev = run()[7]
             out.append({"n_state": n, "method": method, "nfev": int(nfev),
                         "ns_per_evaluation": 1e9 * median_time(run, repeats) / nfev})
     return out

@@ -5,6 +5,7 @@ Scenes (units g = ell = 1): the single-mode scene of the paper's Fig.
 scene of Fig. 'Numerical2' (ell/L = 1/2, D/ell = 1/2, alpha = pi/4, tilts 1e-3,
 phi_dot(0) = 0.1).
 """
+import importlib
 import math
 import os
 
@@ -246,7 +247,8 @@ def test_kernel_refuses_a_state_of_another_size():
     solve = kernel(m, "DOP853")
     y = np.zeros(5)
     with pytest.raises(ValueError, match="size this kernel was specialized to"):
-        solve(0.0, 1.0, y, p, 1e-6, np.full(5, 1e-9), 0.0, np.inf, np.empty(0), True, 2, 10, np.full(5, -1), False)
+        solve(0.0, 1.0, y, p, 1e-6, np.full(5, 1e-9), 0.0, np.inf, np.empty(0), True, np.array([2]), 10,
+              np.full(5, -1), False, 10)
 
 
 def test_cache_dir_follows_the_environment(tmp_path, monkeypatch):
@@ -266,3 +268,47 @@ def test_status_messages_name_the_remedy():
     assert len(set(codes)) == len(codes) and Status.SUCCESS.code == 0 and all(c < 0 for c in codes[1:])
     assert "`max_steps`" in Status.MAX_STEPS.value and "`h`" in Status.IMPLICIT_NOT_CONVERGED.value
     assert "`rtol`" in Status.STEP_SIZE_UNDERFLOW.value
+
+
+# -- events on named states, and runs in chunks ------------------------------------
+def test_events_on_named_states_match_scipys_event_location():
+    """Zero crossings of theta1 and theta2 on the two-mode scene (Fig. 'Numerical2'): located on our dense
+    output as by SciPy's own event location (same DOP853 steps); the spin reversals stay in reversal_times."""
+    m, p = _two()
+    kw = dict(rtol=1e-10, atol=1e-13, events=("theta1", "theta2"))
+    ours = ke.simulate(m, TWO_Y0, (0.0, 200.0), p, method="DOP853", **kw)
+    theirs = ke.simulate(m, TWO_Y0, (0.0, 200.0), p, method="scipy:DOP853", **kw)
+    assert set(ours.events) == {"phi_dot", "theta1", "theta2"}
+    for name in ("theta1", "theta2"):
+        assert ours.events[name].size == theirs.events[name].size > 20
+        np.testing.assert_allclose(ours.events[name], theirs.events[name], rtol=1e-9)
+        assert np.all(np.diff(ours.events[name]) > 0)
+    # at the located times theta1 really vanishes (interpolated output there)
+    at = ke.simulate(m, TWO_Y0, (0.0, 200.0), p, method="DOP853", rtol=1e-10, atol=1e-13,
+                     t_eval=ours.events["theta1"][:5])
+    assert np.max(np.abs(at["theta1"])) < 1e-12
+    np.testing.assert_array_equal(ours.reversal_times, ours.events["phi_dot"])
+    with pytest.raises(ValueError, match="`events`"):
+        ke.simulate(m, TWO_Y0, (0.0, 1.0), p, events=("psi",))
+
+
+@pytest.mark.parametrize("method,kw", [("DOP853", {}), ("DP54", {}), ("RK4", {"h": 0.05}), ("gauss4", {"h": 0.1})])
+def test_a_run_in_chunks_takes_the_same_steps(monkeypatch, method, kw):
+    """The kernels run at most CHUNK_STEPS accepted steps per call (so that Ctrl-C is answered between calls);
+    the steps, the output and the events are those of one call, bit for bit."""
+    sim = importlib.import_module("knifeedge.simulate")
+
+    m, p = _single()
+    args = (m, SINGLE_Y0, (0.0, 150.0), p)
+    kw = dict(kw, method=method, events=("theta",))
+    whole = [ke.simulate(*args, **kw), ke.simulate(*args, t_eval=np.linspace(0, 150, 41), **kw)]
+    monkeypatch.setattr(sim, "CHUNK_STEPS", 7)
+    parts = [ke.simulate(*args, **kw), ke.simulate(*args, t_eval=np.linspace(0, 150, 41), **kw)]
+    for a, b in zip(whole, parts):
+        assert a.success and b.success and a.nsteps == b.nsteps > 70
+        np.testing.assert_array_equal(a.t, b.t)
+        np.testing.assert_array_equal(a.y, b.y)
+        np.testing.assert_array_equal(a.events["theta"], b.events["theta"])
+        np.testing.assert_array_equal(a.reversal_times, b.reversal_times)
+    short = ke.simulate(*args, max_steps=20, **kw)
+    assert short.outcome is Status.MAX_STEPS and short.nsteps == 20 and short.t.size == 21

@@ -35,8 +35,9 @@ class SimulationResult:
         States in the order of ``state_names``.
     state_names : tuple of str
     reversal_times : ndarray
-        Spin reversals: zero crossings of the model's spin rate
-        (``model.spin_name``), located on the solver's dense output.
+        Reversals: zero crossings of the states the model declares as its
+        reversal events (the spin rate of the knife edges), in increasing
+        order, located on the solver's dense output.
     success : bool
     status : int
         0 reached the end of ``t_span``; negative values are failures
@@ -53,6 +54,10 @@ class SimulationResult:
         Accepted steps.
     nrejected : int
         Rejected steps (adaptive methods).
+    events : dict of str to ndarray
+        Zero crossings of each named state: the model's reversal states and
+        those asked for with ``simulate(..., events=...)``, each located on
+        the solver's dense output (increasing times).
     """
 
     t: np.ndarray
@@ -69,6 +74,7 @@ class SimulationResult:
     outcome: Status = Status.SUCCESS
     nsteps: int = 0
     nrejected: int = 0
+    events: dict = field(default_factory=dict)
 
     def __getitem__(self, name: str) -> np.ndarray:
         """Time series of the named state, e.g. ``r["phi_dot"]``."""
@@ -96,10 +102,11 @@ class _Run:
     h: float | None
     max_steps: int
     error_control: str
+    events: tuple = ()
 
 
 SCIPY_METHODS = ("RK45", "DOP853", "LSODA", "Radau")
-#: method name -> runner(run) -> (t, y, reversal_times, Status, nfev, nsteps, nrejected)
+#: method name -> runner(run) -> (t, y, {event name: times}, Status, nfev, nsteps, nrejected)
 METHODS: dict = {}
 
 
@@ -120,21 +127,84 @@ def _mode_pairs(model: Model) -> np.ndarray:
     return _PAIRS[model]
 
 
+#: accepted steps per call of a compiled kernel: between calls Python answers Ctrl-C; the steps are the same
+CHUNK_STEPS = 50_000
+
+
+def _reversal_names(model: Model) -> tuple:
+    """The states whose zero crossings are the model's ``reversal_times`` (may be empty)."""
+    names = getattr(model, "reversal_events", None)
+    if names is None:
+        mod = model.module
+        names = getattr(mod, "REVERSAL_EVENTS", None)
+        if names is None:
+            names = (mod.SPIN_NAME,) if getattr(mod, "SPIN_NAME", None) else ()
+    return tuple(names)
+
+
+def _event_names(model: Model, events: tuple) -> tuple:
+    """The reversal states, then the requested ``events`` not among them."""
+    names = _reversal_names(model)
+    return names + tuple(e for e in events if e not in names)
+
+
+def _split_events(names: tuple, ev_t: np.ndarray, ev_k: np.ndarray) -> dict:
+    """``{name: increasing times}`` from event times ``ev_t`` of the events numbered ``ev_k``."""
+    order = np.argsort(ev_t, kind="stable")
+    ev_t, ev_k = ev_t[order], ev_k[order]
+    return {name: ev_t[ev_k == k] for k, name in enumerate(names)}
+
+
 def _run_compiled(name: str):
     spec = COMPILED_METHODS[ALIASES.get(name, name)]
 
     def run(r: _Run):
-        solve = kernel(r.model, name)
-        spin = r.model.index(r.model.spin_name)
+        model = r.model
+        solve = kernel(model, name)
+        names = _event_names(model, r.events)
+        events = np.array([model.index(e) for e in names], dtype=np.int64)
         every = r.t_eval is None
-        t_eval = np.empty(0) if every else np.ascontiguousarray(r.t_eval)
-        if spec.fixed_step:
-            out = solve(r.t0, r.t1, r.y0, r.p, r.h, r.atol, t_eval, every, spin, r.max_steps, _mode_pairs(r.model))
+        pair = _mode_pairs(model)
+        if every:
+            t_eval = np.empty(0)
+            ts, ys = [np.array([r.t0])], [r.y0[None, :]]
         else:
-            out = solve(r.t0, r.t1, r.y0, r.p, r.rtol, r.atol, 0.0, r.max_step, t_eval, every, spin,
-                        r.max_steps, _mode_pairs(r.model), r.error_control == "mode")
-        ts, ys, ev, code, nfev, nacc, nrej = out
-        return ts, ys.T, ev, from_code(code), nfev, nacc, nrej
+            t_eval = np.ascontiguousarray(r.t_eval)
+            at_start = int(np.searchsorted(t_eval, r.t0, side="right"))
+            ts, ys = [t_eval[:at_start]], [np.repeat(r.y0[None, :], at_start, axis=0)]
+            t_eval = t_eval[at_start:]
+        ev_t, ev_k = [], []
+        nfev = nacc = nrej = 0
+        t, y, carry = r.t0, r.y0, 0.0
+        if spec.fixed_step:
+            n_steps = math.ceil((r.t1 - r.t0) / r.h)
+            h = (r.t1 - r.t0) / n_steps
+            comp, Z = np.zeros(model.n_state), np.empty((4, model.n_state))  # 4 >= stages of every fixed method
+        while True:
+            chunk = min(CHUNK_STEPS, r.max_steps - nacc)
+            if spec.fixed_step:
+                out = solve(r.t0, r.t1, y, r.p, h, n_steps, int(carry), r.atol, t_eval, every, events,
+                            min(r.max_steps - nacc, 2**62), pair, chunk, comp, Z)
+            else:
+                out = solve(t, r.t1, y, r.p, r.rtol, r.atol, carry, r.max_step, t_eval, every, events,
+                            min(r.max_steps - nacc, 2**62), pair, r.error_control == "mode", chunk)
+            tb, yb, n_out, et, ek, n_ev, code, nf, na, nr, t, y, carry = out
+            ts.append(tb[:n_out])
+            ys.append(yb[:n_out])
+            ev_t.append(et[:n_ev])
+            ev_k.append(ek[:n_ev])
+            nfev, nacc, nrej = nfev + nf, nacc + na, nrej + nr
+            if code != 1:
+                break
+            if not every:
+                t_eval = t_eval[n_out:]
+            if nacc >= r.max_steps:
+                code = Status.MAX_STEPS.code
+                break
+        t_out = np.concatenate(ts) if len(ts) > 1 else ts[0]
+        y_out = np.ascontiguousarray(np.concatenate(ys).T)
+        events_out = _split_events(names, np.concatenate(ev_t), np.concatenate(ev_k))
+        return t_out, y_out, events_out, from_code(code), nfev, nacc, nrej
 
     return run
 
@@ -143,20 +213,21 @@ def _run_scipy(scipy_method: str):
     def run(r: _Run):
         from scipy.integrate import solve_ivp  # imported on use: it adds ~0.3 s to the start-up
 
-        k = r.model.index(r.model.spin_name)
+        names = _event_names(r.model, r.events)
         rhs, p = r.model.rhs, r.p
 
         def fun(t, y):
             return rhs(t, y, p)
 
-        def reversal(t, y):
-            return y[k]
+        def crossing(k):
+            return lambda t, y: y[k]
 
         sol = solve_ivp(fun, (r.t0, r.t1), r.y0, method=scipy_method, rtol=r.rtol, atol=r.atol, t_eval=r.t_eval,
-                        events=reversal, max_step=r.max_step)
+                        events=[crossing(r.model.index(e)) for e in names] or None, max_step=r.max_step)
         outcome = Status.SUCCESS if sol.status >= 0 else Status.STEP_SIZE_UNDERFLOW
         nsteps = len(sol.t) - 1 if r.t_eval is None else -1
-        return sol.t, sol.y, np.asarray(sol.t_events[0]), outcome, sol.nfev, nsteps, 0
+        events = {e: np.asarray(sol.t_events[k], dtype=float) for k, e in enumerate(names)} if names else {}
+        return sol.t, sol.y, events, outcome, sol.nfev, nsteps, 0
 
     return run
 
@@ -216,6 +287,19 @@ def _check_max_steps(v) -> int:
     return int(v)
 
 
+def _check_events(events, model: Model) -> tuple:
+    if isinstance(events, str):
+        events = (events,)
+    try:
+        events = tuple(events)
+    except TypeError:
+        raise TypeError(f"`events` must be a state name or a sequence of state names, got {events!r}") from None
+    for e in events:
+        if not isinstance(e, str) or e not in model.state_names:
+            raise ValueError(f"`events` names unknown state {e!r}; this model's states are {model.state_names}")
+    return tuple(dict.fromkeys(events))
+
+
 def simulate(
     model: Model,
     y0,
@@ -230,6 +314,7 @@ def simulate(
     h: float | None = None,
     max_steps: int = 1_000_000,
     error_control: str = "component",
+    events=(),
 ) -> SimulationResult:
     """Integrate ``model`` from ``y0`` over ``t_span`` with parameters ``p``.
 
@@ -259,6 +344,11 @@ def simulate(
         SciPy); ``"mode"`` -- a tilt and its rate share the larger of their
         magnitudes, so a small oscillation mode is controlled relative to
         its amplitude (use with a small ``atol``).  Compiled adaptive methods.
+    events : names of states whose zero crossings to report in
+        ``result.events`` (a name or a sequence of names), besides the
+        model's reversal states, which are always reported.  A crossing is
+        a sign change between the ends of a step, located on the step's
+        dense output.
 
     Returns
     -------
@@ -296,19 +386,24 @@ def simulate(
     if error_control != "component" and (spec is None or fixed):
         raise ValueError(f"`error_control={error_control!r}` needs a compiled adaptive method, not {method!r}")
 
-    run = _Run(model, y0, t0, t1, p, rtol, atol, t_eval, max_step, h, max_steps, error_control)
-    t, y, rev, outcome, nfev, nsteps, nrej = METHODS[method](run)
+    events = _check_events(events, model)
+
+    run = _Run(model, y0, t0, t1, p, rtol, atol, t_eval, max_step, h, max_steps, error_control, events)
+    t, y, found, outcome, nfev, nsteps, nrej = METHODS[method](run)
     t, y = np.asarray(t), np.asarray(y)
     if not np.isfinite(y).all():  # SciPy methods accept non-finite states; cut them off and say so
         bad = int(np.argmin(np.isfinite(y).all(axis=0)))
         t, y = t[:bad], y[:, :bad]
-        rev = rev[rev <= (t[-1] if t.size else t0)]
+        last = t[-1] if t.size else t0
+        found = {k: v[v <= last] for k, v in found.items()}
         outcome = Status.NON_FINITE
     message = outcome.value
     if outcome is Status.NON_FINITE and t.size:
         message = f"{message} Last good state at t = {t[-1]:.6g}."
+    reversal = [found[k] for k in _reversal_names(model)]
+    rev = np.sort(np.concatenate(reversal)) if len(reversal) > 1 else (reversal[0] if reversal else np.empty(0))
     return SimulationResult(
-        t=t, y=y, state_names=model.state_names, reversal_times=np.asarray(rev, dtype=float),
+        t=t, y=y, state_names=model.state_names, reversal_times=rev,
         success=outcome.success, status=outcome.code, message=message, nfev=int(nfev), method=method,
-        model=model, p=p, outcome=outcome, nsteps=int(nsteps), nrejected=int(nrej),
+        model=model, p=p, outcome=outcome, nsteps=int(nsteps), nrejected=int(nrej), events=found,
     )

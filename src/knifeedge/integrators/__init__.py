@@ -6,9 +6,11 @@ use, then cached on disk across processes, see :mod:`.specialize`).
 """
 from __future__ import annotations
 
+import sys
+import time
 from dataclasses import dataclass
 
-from .specialize import cache_dir, load_kernel
+from .specialize import cache_dir, is_compiled, load_kernel
 from .status import Status, from_code
 
 
@@ -53,13 +55,38 @@ _KERNELS: dict = {}
 
 
 def kernel(model, method: str):
-    """The compiled ``solve`` function of ``method`` for ``model`` (a :class:`knifeedge.Model`)."""
+    """The compiled ``solve`` function of ``method`` for ``model`` (a :class:`knifeedge.Model`).
+
+    The first use of a (model, method) pair on a machine compiles it, which
+    takes seconds, and says so in one line on stderr; later uses, in any
+    process, load the machine code from the cache (:func:`cache_dir`).
+    """
     spec = COMPILED_METHODS[ALIASES.get(method, method)]
     rhs_name = "rhs_pose_q_into" if model.pose else "rhs_q_into"
     key = (model.module.__name__, rhs_name, spec.template, spec.variant)
     if key not in _KERNELS:
-        _KERNELS[key] = load_kernel(spec.template, spec.variant, model.module, rhs_name, model.n_state).solve
+        module = load_kernel(spec.template, spec.variant, model.module, rhs_name, model.n_state)
+        solve = module.solve
+        if not is_compiled(module):
+            solve = _announced(solve, f"{spec.name} for {model.name} ({model.fidelity}{', pose' if model.pose else ''})")
+        _KERNELS[key] = solve
     return _KERNELS[key]
+
+
+def _announced(solve, label: str):
+    """``solve`` that says on stderr, at its first call, that it compiles now and once."""
+    def first_call(*args):
+        print(f"knifeedge: compiling the {label} integrator: once, then cached in {cache_dir()} ...",
+              file=sys.stderr, end="", flush=True)
+        t = time.perf_counter()
+        out = solve(*args)
+        print(f" {time.perf_counter() - t:.1f} s", file=sys.stderr, flush=True)
+        for k, v in _KERNELS.items():
+            if v is first_call:
+                _KERNELS[k] = solve
+        return out
+
+    return first_call
 
 
 __all__ = ["COMPILED_METHODS", "ALIASES", "CompiledMethod", "Status", "from_code", "kernel", "cache_dir"]

@@ -216,6 +216,12 @@ def _key(source: str, rhs_file: str) -> str:
     return h.hexdigest()[:20]
 
 
+def is_compiled(module: ModuleType) -> bool:
+    """Whether numba's cache beside a kernel module holds machine code of its ``solve``."""
+    path = Path(module.__file__)
+    return any((path.parent / "__pycache__").glob(f"{path.stem}.solve-*.nbi"))
+
+
 def load_kernel(template: str, variant: int, rhs_module: ModuleType, rhs_name: str, n_state: int) -> ModuleType:
     """Import (writing it first if needed) the kernel module for a model's right-hand side.
 

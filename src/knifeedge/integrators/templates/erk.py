@@ -31,7 +31,6 @@ if VARIANT == 0:
     DD = _t8.D.copy()
     P = np.zeros((1, 1))
     ERROR_ORDER = 7
-    DENSE_KIND = _c.DENSE_DOP853
     DENSE_ROWS = 7
 else:
     N_STAGES = 6
@@ -47,7 +46,6 @@ else:
     DD = np.zeros((1, 1))
     P = _t5.DP54_P.copy()
     ERROR_ORDER = 4
-    DENSE_KIND = _c.DENSE_POWER
     DENSE_ROWS = 4
 ERROR_EXPONENT = -1.0 / (ERROR_ORDER + 1)
 SAFETY = 0.9
@@ -107,7 +105,9 @@ def initial_step(t0, y0, f0, q, t1, max_step, rtol, atol, work):
     h0 = min(h0, interval)
     if not h0 > 0.0:  # the derivative overflows the scale: start at the smallest step
         return 0.0
-    y1 = y0 + h0 * f0
+    y1 = np.empty(n)
+    for i in range(n):
+        y1[i] = y0[i] + h0 * f0[i]
     _rhs(t0 + h0, y1, q, work)
     d2 = 0.0
     for i in range(n):
@@ -200,40 +200,96 @@ def _dense(K, y_old, y_new, t_old, h, q, F, work):
     return 0
 
 
+@njit(cache=True, error_model="numpy")
+def _interpolate(F, y_old, x, i):
+    """Component ``i`` of the step's interpolant at ``x`` in [0, 1]."""
+    if VARIANT == 0:
+        return _c.dense_dop853(F, y_old, x, i)
+    return _c.dense_power(F, y_old, x, i)
+
+
+@njit(cache=True, error_model="numpy")
+def _record(F, y, y_new, t, t_new, t_eval, ie, every, ts, ys, n_out, events, ev_t, ev_k, n_ev):
+    """Store what the accepted step from ``t`` to ``t_new`` produced; returns the new counters and buffers.
+
+    Zero crossings of the components ``events`` (sign change between the
+    step's ends) are located on the interpolant; output rows are every step
+    (``every``) or the requested times ``t_eval[ie:]`` in ``(t, t_new]``.
+    """
+    h = t_new - t
+    for k in range(events.size):
+        i = events[k]
+        if _c.crossing(y[i], y_new[i]):
+            x = 1.0
+            if y_new[i] != 0.0:
+                x = _c.illinois(F, y, i, y[i], y_new[i], VARIANT == 0)
+            if n_ev == ev_t.size:
+                ev_t, ev_k = _c.grow_events(ev_t, ev_k)
+            ev_t[n_ev] = t + x * h
+            ev_k[n_ev] = k
+            n_ev += 1
+    if not every:
+        while ie < t_eval.size and t_eval[ie] <= t_new:
+            te = t_eval[ie]
+            ts[n_out] = te
+            if te == t_new:
+                for i in range(N):
+                    ys[n_out, i] = y_new[i]
+            else:
+                x = (te - t) / h
+                for i in range(N):
+                    ys[n_out, i] = _interpolate(F, y, x, i)
+            n_out += 1
+            ie += 1
+    return ie, ts, ys, n_out, ev_t, ev_k, n_ev
+
+
 # "contract": fused multiply-adds in the stage sums, which are inlined here (see specialize._attempt_body)
 @njit(cache=True, error_model="numpy", fastmath={"contract"})
-def solve(t0, t1, y0, p, rtol, atol, h_init, max_step, t_eval, every, spin, max_steps, pair, mode_scaled):
-    """Integrate from ``t0`` to ``t1 > t0``.
+def solve(t0, t1, y0, p, rtol, atol, h_init, max_step, t_eval, every, events, max_steps, pair, mode_scaled,
+          chunk):
+    """Integrate from ``t0`` toward ``t1 > t0``, at most ``chunk`` accepted steps in this call.
 
     Parameters
     ----------
     y0 : (n,) initial state; p : parameters of the right-hand side.
     rtol : float; atol : (n,) absolute tolerances.
     h_init : first step, or 0 to choose it.  max_step : largest step.
-    t_eval : (m,) increasing output times in [t0, t1] (used when not ``every``).
-    every : store every accepted step (and t0) instead of ``t_eval``.
-    spin : component whose zero crossings are recorded (< 0: none).
-    max_steps : accepted steps allowed.
+    t_eval : (m,) increasing output times in (t0, t1] still ahead (used when not ``every``).
+    every : store every accepted step instead of ``t_eval`` (the start is not stored).
+    events : (e,) int, components whose zero crossings are recorded.
+    max_steps : accepted steps allowed (over the whole run: the caller subtracts those done).
     pair : (n,) int, partner component for ``mode_scaled`` error control (-1: none).
+    chunk : accepted steps after which the call returns with status 1 (paused); the caller
+        continues from the returned ``t, y, h`` and obtains the same steps as one call.
 
     Returns
     -------
-    ts (k,), ys (k, n), ev (e,), status code, nfev, accepted steps, rejected steps
+    ts (cap,), ys (cap, n), n_out, ev_t (cap,), ev_k (cap,) int, n_ev, status, nfev, accepted, rejected,
+    t, y, h_next -- the first ``n_out`` rows and ``n_ev`` events are valid.
     """
     if y0.size != N:
         raise ValueError("the initial state does not have the size this kernel was specialized to")
     q = _constants(p)
     n = N
     K = np.empty((N_EXT, n))
-    y = y0.copy()
+    y = np.empty(n)
+    for i in range(n):
+        y[i] = y0[i]
     y_new = np.empty(n)
     work = np.empty(n)
     work3 = np.empty(n)
     scale = np.empty(n)
     F = np.empty((DENSE_ROWS, n))
-    ts, ys, n_out, ie = _c.start_output(t0, y, t_eval, every)
-    ev = np.empty(8)
-    n_ev = 0
+    cap = 256 if every else max(t_eval.size, 1)
+    ts = np.empty(cap)
+    ys = np.empty((cap, n))
+    # counters start as int64, not as the literal 0 (numba would compile the callees for both types)
+    n_out = np.int64(0)
+    ie = np.int64(0)
+    ev_t = np.empty(4)
+    ev_k = np.empty(4, dtype=np.int64)
+    n_ev = np.int64(0)
     _rhs(t0, y, q, K[0])
     nfev = 1
     if h_init > 0.0:
@@ -248,6 +304,9 @@ def solve(t0, t1, y0, p, rtol, atol, h_init, max_step, t_eval, every, spin, max_
     while t < t1:
         if n_acc >= max_steps:
             status = -2
+            break
+        if n_acc >= chunk:
+            status = 1
             break
         # SciPy's smallest step is 10 ulps of t; nextafter is called only near it (10 ulps <= 10 eps |t|)
         near = 10.0 * _EPS * abs(t) + 1e-300
@@ -287,15 +346,25 @@ def solve(t0, t1, y0, p, rtol, atol, h_init, max_step, t_eval, every, spin, max_
         if status != 0:
             break
         n_acc += 1
-        crossed = spin >= 0 and _c.crossing(y[spin], y_new[spin])
-        if crossed or every or (ie < t_eval.size and t_eval[ie] <= t_new):
-            if crossed or (ie < t_eval.size and t_eval[ie] < t_new):
-                nfev += _dense(K, y, y_new, t, h, q, F, work)
-            ie, ts, ys, n_out, ev, n_ev = _c.record_step(
-                DENSE_KIND, F, y, y_new, t, t_new, spin, t_eval, ie, every, ts, ys, n_out, ev, n_ev, work
+        dense = ie < t_eval.size and t_eval[ie] < t_new
+        for k in range(events.size):
+            if _c.crossing(y[events[k]], y_new[events[k]]):
+                dense = True
+        if dense:
+            nfev += _dense(K, y, y_new, t, h, q, F, work)
+        if every:  # the common case, inline: a row per step
+            if n_out == ts.size:
+                ts, ys = _c.grow_rows(ts, ys, n_out)
+            ts[n_out] = t_new
+            for i in range(n):
+                ys[n_out, i] = y_new[i]
+            n_out += 1
+        if dense or (not every and ie < t_eval.size and t_eval[ie] <= t_new):
+            ie, ts, ys, n_out, ev_t, ev_k, n_ev = _record(
+                F, y, y_new, t, t_new, t_eval, ie, every, ts, ys, n_out, events, ev_t, ev_k, n_ev
             )
         for i in range(n):
             y[i] = y_new[i]
             K[0, i] = K[N_STAGES, i]
         t = t_new
-    return ts[:n_out].copy(), ys[:n_out].copy(), ev[:n_ev].copy(), status, nfev, n_acc, n_rej
+    return ts, ys, n_out, ev_t, ev_k, n_ev, status, nfev, n_acc, n_rej, t, y, h_abs

@@ -12,7 +12,6 @@ grid ends on ``t1``.  The state update uses compensated (Kahan) summation, so
 round-off does not accumulate as a random walk over long runs.  Dense output
 (events, output times) is the cubic Hermite interpolant of each step.
 """
-import math
 
 import numpy as np
 from numba import njit
@@ -135,47 +134,95 @@ def _solver_scale(y, atol, pair, out):
 
 
 @njit(cache=True, error_model="numpy")
-def solve(t0, t1, y0, p, h_req, atol, t_eval, every, spin, max_steps, pair):
-    """Integrate from ``t0`` to ``t1 > t0`` with steps of at most ``h_req``.
+def _record(F, y, y_new, t, t_new, t_eval, ie, every, ts, ys, n_out, events, ev_t, ev_k, n_ev):
+    """As the adaptive kernel's: events on the step's cubic Hermite interpolant, then output rows."""
+    h = t_new - t
+    for k in range(events.size):
+        i = events[k]
+        if _c.crossing(y[i], y_new[i]):
+            x = 1.0
+            if y_new[i] != 0.0:
+                x = _c.illinois(F, y, i, y[i], y_new[i], False)
+            if n_ev == ev_t.size:
+                ev_t, ev_k = _c.grow_events(ev_t, ev_k)
+            ev_t[n_ev] = t + x * h
+            ev_k[n_ev] = k
+            n_ev += 1
+    if not every:
+        while ie < t_eval.size and t_eval[ie] <= t_new:
+            te = t_eval[ie]
+            ts[n_out] = te
+            if te == t_new:
+                for i in range(N):
+                    ys[n_out, i] = y_new[i]
+            else:
+                x = (te - t) / h
+                for i in range(N):
+                    ys[n_out, i] = _c.dense_power(F, y, x, i)
+            n_out += 1
+            ie += 1
+    return ie, ts, ys, n_out, ev_t, ev_k, n_ev
 
-    ``atol`` (n,) is the floor of the scale of the implicit solver's
-    convergence test and ``pair`` (n,) the mode partner of each component
-    (-1: none) whose magnitude also sets it (Gauss only).  Other arguments and the returned tuple
-    are as for the adaptive kernel (rejected steps are always 0).
+
+@njit(cache=True, error_model="numpy")
+def solve(t0, t1, y0, p, h, n_steps, first, atol, t_eval, every, events, max_steps, pair, chunk, comp, Z):
+    """Integrate from ``t0`` over steps ``first + 1 .. n_steps`` of size ``h``, at most ``chunk`` of them.
+
+    Step ``k`` ends at ``t0 + k h`` (the last at ``t1``).  ``atol`` (n,) is
+    the floor of the scale of the implicit solver's convergence test and
+    ``pair`` (n,) the mode partner of each component (-1: none) whose
+    magnitude also sets it (Gauss only).  ``y0`` is the state after step
+    ``first``; ``comp`` (n,), the Kahan compensation, and ``Z`` (S, n), the
+    stage derivatives of the last step (``first == 0``: set from f(t0, y0)),
+    are carried from one call to the next and updated in place, so that a
+    run in chunks takes the same steps as one call.  Other arguments and the
+    returned tuple are as for the adaptive kernel (rejected steps are
+    always 0; ``h_next`` is the index of the last step taken).
     """
     if y0.size != N:
         raise ValueError("the initial state does not have the size this kernel was specialized to")
     q = _constants(p)
     n = N
-    n_steps = max(1, int(math.ceil((t1 - t0) / h_req)))
-    h = (t1 - t0) / n_steps
-    y = y0.copy()
+    y = np.empty(n)
+    for i in range(n):
+        y[i] = y0[i]
     y_new = np.empty(n)
     dy = np.empty(n)
-    comp = np.zeros(n)
-    comp_trial = np.zeros(n)
+    comp_trial = np.empty(n)
     scale = np.empty(n)
     work = np.empty(n)
     f_old = np.empty(n)
     f_new = np.empty(n)
     K = np.empty((4, n))
-    Z = np.empty((S, n))
     Znew = np.empty((S, n))
     F = np.empty((3, n))
-    ts, ys, n_out, ie = _c.start_output(t0, y, t_eval, every)
-    ev = np.empty(8)
-    n_ev = 0
-    _rhs(t0, y, q, f_old)
+    cap = 256 if every else max(t_eval.size, 1)
+    ts = np.empty(cap)
+    ys = np.empty((cap, n))
+    # counters start as int64, not as the literal 0 (numba would compile the callees for both types)
+    n_out = np.int64(0)
+    ie = np.int64(0)
+    ev_t = np.empty(4)
+    ev_k = np.empty(4, dtype=np.int64)
+    n_ev = np.int64(0)
+    t = t0 if first == 0 else t0 + first * h
+    _rhs(t, y, q, f_old)
     nfev = 1
-    for k in range(S):
-        Z[k, :] = f_old
+    if first == 0:
+        for k in range(S):
+            for i in range(n):
+                Z[k, i] = f_old[i]
     status = 0
     n_acc = 0
-    t = t0
-    for step in range(1, n_steps + 1):
+    step = first
+    while step < n_steps:
         if n_acc >= max_steps:
             status = -2
             break
+        if n_acc >= chunk:
+            status = 1
+            break
+        step += 1
         t_new = t1 if step == n_steps else t0 + step * h
         if VARIANT == 0:
             nfev += _rk4_increment(t, y, h, q, f_old, K, work, dy)
@@ -186,7 +233,8 @@ def solve(t0, t1, y0, p, h_req, atol, t_eval, every, spin, max_steps, pair):
             if not ok:
                 status = -4
                 break
-        comp_trial[:] = comp
+        for i in range(n):
+            comp_trial[i] = comp[i]
         _c.compensated_add(y, dy, comp_trial, y_new)
         if not _c.all_finite(y_new):
             status = -3
@@ -196,14 +244,25 @@ def solve(t0, t1, y0, p, h_req, atol, t_eval, every, spin, max_steps, pair):
         if not _c.all_finite(f_new):
             status = -3
             break
-        comp[:] = comp_trial
+        for i in range(n):
+            comp[i] = comp_trial[i]
         n_acc += 1
-        crossed = spin >= 0 and _c.crossing(y[spin], y_new[spin])
-        if crossed or every or (ie < t_eval.size and t_eval[ie] <= t_new):
-            if crossed or (ie < t_eval.size and t_eval[ie] < t_new):
-                _c.hermite_coefficients(y, y_new, f_old, f_new, t_new - t, F)
-            ie, ts, ys, n_out, ev, n_ev = _c.record_step(
-                _c.DENSE_POWER, F, y, y_new, t, t_new, spin, t_eval, ie, every, ts, ys, n_out, ev, n_ev, work
+        dense = ie < t_eval.size and t_eval[ie] < t_new
+        for k in range(events.size):
+            if _c.crossing(y[events[k]], y_new[events[k]]):
+                dense = True
+        if dense:
+            _c.hermite_coefficients(y, y_new, f_old, f_new, t_new - t, F)
+        if every:  # the common case, inline: a row per step
+            if n_out == ts.size:
+                ts, ys = _c.grow_rows(ts, ys, n_out)
+            ts[n_out] = t_new
+            for i in range(n):
+                ys[n_out, i] = y_new[i]
+            n_out += 1
+        if dense or (not every and ie < t_eval.size and t_eval[ie] <= t_new):
+            ie, ts, ys, n_out, ev_t, ev_k, n_ev = _record(
+                F, y, y_new, t, t_new, t_eval, ie, every, ts, ys, n_out, events, ev_t, ev_k, n_ev
             )
         if VARIANT > 0:
             # start the next stage iteration from this step's collocation polynomial
@@ -213,8 +272,11 @@ def solve(t0, t1, y0, p, h_req, atol, t_eval, every, spin, max_steps, pair):
                     for j in range(S):
                         acc += EXTRAP[k, j] * Z[j, i]
                     Znew[k, i] = acc
-            Z[:, :] = Znew
-        y[:] = y_new
-        f_old[:] = f_new
+            for k in range(S):
+                for i in range(n):
+                    Z[k, i] = Znew[k, i]
+        for i in range(n):
+            y[i] = y_new[i]
+            f_old[i] = f_new[i]
         t = t_new
-    return ts[:n_out].copy(), ys[:n_out].copy(), ev[:n_ev].copy(), status, nfev, n_acc, 0
+    return ts, ys, n_out, ev_t, ev_k, n_ev, status, nfev, n_acc, 0, t, y, float(step)
