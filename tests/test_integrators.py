@@ -6,6 +6,10 @@ scene of Fig. 'Numerical2' (ell/L = 1/2, D/ell = 1/2, alpha = pi/4, tilts 1e-3,
 phi_dot(0) = 0.1).
 """
 import importlib
+import shutil
+import signal
+import subprocess
+import sys
 import math
 import os
 
@@ -228,18 +232,18 @@ def test_per_component_atol_and_mode_error_control_run():
 
 # -- the kernel cache ------------------------------------------------------------
 def test_kernel_source_imports_the_models_rhs(tmp_path):
-    src = specialize.kernel_source("erk", 1, "knifeedge.generated.two_mode_full", "rhs_pose_q_into", 8)
+    src = specialize.kernel_source("erk", "DP54", "knifeedge.generated.two_mode_full", "rhs_pose_q_into", 8)
     assert "from knifeedge.generated.two_mode_full import constants as _constants, rhs_pose_q_into as _rhs" in src
-    assert "VARIANT = 1" in src and "N = 8" in src and "templates._stub" not in src
+    assert "TABLEAU = 'DP54'" in src and "N = 8" in src and "templates._stub" not in src
     # stages unrolled with the Dormand-Prince coefficients as literals (a21 = 1/5, b1 = 35/384)
     assert "work[i] = y[i] + (h * 0.2) * K[0, i]" in src and f"y_new[i] = y[i] + (h * {35 / 384!r}) * K[0, i]" in src
     # the error estimate likewise (e1 = -71/57600), and no generic loop over the stages is left in the step
     assert f"e = ({-71 / 57600!r} * K[0, i]" in src and "for s in range(1, N_STAGES)" not in src
-    assert "elif s == 15:" in specialize.kernel_source("erk", 0, "m", "rhs_q_into", 3)  # DOP853 + 3 dense stages
+    assert "elif s == 15:" in specialize.kernel_source("erk", "DOP853", "m", "rhs_q_into", 3)  # DOP853 + 3 dense stages
     with pytest.raises(ValueError, match="unknown kernel template"):
         specialize.kernel_source("euler", 0, "x", "y", 3)
     with pytest.raises(ValueError, match="n_state"):
-        specialize.kernel_source("erk", 0, "x", "y", 0)
+        specialize.kernel_source("erk", "DOP853", "x", "y", 0)
 
 
 def test_kernel_refuses_a_state_of_another_size():
@@ -312,3 +316,71 @@ def test_a_run_in_chunks_takes_the_same_steps(monkeypatch, method, kw):
         np.testing.assert_array_equal(a.reversal_times, b.reversal_times)
     short = ke.simulate(*args, max_steps=20, **kw)
     assert short.outcome is Status.MAX_STEPS and short.nsteps == 20 and short.t.size == 21
+
+
+def test_temporary_cache_folder_is_private_and_a_foreign_one_is_refused(tmp_path, monkeypatch):
+    """Issue: the fallback cache folder in the temporary directory must be created 0700 and refused when
+    it is writable by others (its pickled files would be loaded)."""
+    monkeypatch.delenv("KNIFEEDGE_CACHE_DIR", raising=False)
+    blocked = tmp_path / "blocked"
+    blocked.write_text("")  # a file where the home cache folder should be: that candidate fails
+    monkeypatch.setenv("XDG_CACHE_HOME", str(blocked))
+    monkeypatch.setattr(specialize.tempfile, "gettempdir", lambda: str(tmp_path))
+    folder = tmp_path / f"knifeedge-cache-{os.getuid()}"
+    assert specialize.cache_dir() == folder
+    assert folder.stat().st_mode & 0o777 == 0o700
+    folder.chmod(0o777)
+    with pytest.raises(OSError, match="others may write to it"):
+        specialize.cache_dir()
+    shutil.rmtree(folder)
+    (tmp_path / "elsewhere").mkdir()
+    folder.symlink_to(tmp_path / "elsewhere")
+    with pytest.raises(OSError, match="not a folder"):
+        specialize.cache_dir()
+
+
+def test_a_damaged_kernel_cache_file_is_discarded_and_compiled_again(tmp_path):
+    """Issue: a truncated .nbi/.nbc of the kernel cache is detected, removed, recompiled, said in one line."""
+    code = (
+        "import numpy as np, knifeedge as ke\n"
+        "m = ke.load('single_mode', 'reduced')\n"
+        "r = ke.simulate(m, {'theta': 1e-3, 'theta_dot': 0.0, 'phi_dot': 0.1}, (0.0, 150.0),"
+        " m.params(g=1.0, ell=1.0, L=1.0, D=1.0), method='RK4', h=0.05)\n"
+        "print(r.success, r.reversal_times)\n"
+    )
+    env = dict(os.environ, KNIFEEDGE_CACHE_DIR=str(tmp_path / "k"), NUMBA_CACHE_DIR=str(tmp_path / "n"))
+    first = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
+    assert "compiling RK4 for single_mode (reduced); once" in first.stderr
+    index = next((tmp_path / "n").glob("kernels*/fixed0_*.solve-*.nbi"))
+    data = next((tmp_path / "n").glob("kernels*/fixed0_*.solve-*.nbc"))
+    for damaged, size in ((index, 20), (data, 100)):
+        with open(damaged, "r+b") as f:
+            f.truncate(size)
+        again = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
+        assert again.stdout == first.stdout
+        lines = [ln for ln in again.stderr.splitlines() if ln.strip()]
+        assert len(lines) == 1 and "discarded a damaged compiled-code cache entry" in lines[0], again.stderr
+    quiet = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
+    assert quiet.stdout == first.stdout and quiet.stderr == ""
+
+
+def test_a_long_compiled_run_answers_ctrl_c():
+    """Issue: a compiled run of 10^12 time units (max_steps 10^12) stops at Ctrl-C (SIGINT) with
+    KeyboardInterrupt: the kernel runs in chunks of CHUNK_STEPS steps and Python checks for signals between."""
+    code = (
+        "import sys, knifeedge as ke\n"
+        "m = ke.load('single_mode', 'full')\n"
+        "y0, p = {'theta': 1e-3, 'theta_dot': 0.0, 'phi_dot': 0.1}, m.params(g=1.0, ell=1.0, L=1.0, D=1.0)\n"
+        "ke.simulate(m, y0, (0.0, 1.0), p, t_eval=[1.0])\n"
+        "print('running', flush=True)\n"
+        "ke.simulate(m, y0, (0.0, 1e12), p, t_eval=[1e12], max_steps=10**12)\n"
+        "print('finished', flush=True)\n"
+    )
+    proc = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        assert proc.stdout.readline().strip() == "running"
+        proc.send_signal(signal.SIGINT)
+        out, err = proc.communicate(timeout=600)  # a guard against a hang, not a speed requirement
+    finally:
+        proc.kill()
+    assert proc.returncode != 0 and "KeyboardInterrupt" in err and "finished" not in out

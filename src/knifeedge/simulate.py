@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from . import _validate
-from .integrators import ALIASES, COMPILED_METHODS, Status, from_code, kernel
+from .integrators import ALIASES, COMPILED_METHODS, Status, call_repairing, from_code, kernel
 from .models import Model
 
 #: the smallest relative tolerance accepted: below it the error estimate is round-off
@@ -188,12 +188,14 @@ def _run_compiled(name: str):
             comp, Z = np.zeros(model.n_state), np.empty((4, model.n_state))  # 4 >= stages of every fixed method
         while True:
             chunk = min(CHUNK_STEPS, r.max_steps - nacc)
+            left = min(r.max_steps - nacc, 2**62)
             if spec.fixed_step:
-                out = solve(r.t0, r.t1, y, r.p, h, n_steps, int(carry), r.atol, t_eval, every, events,
-                            min(r.max_steps - nacc, 2**62), pair, chunk, comp, Z)
+                args = (r.t0, r.t1, y, r.p, h, n_steps, int(carry), r.atol, t_eval, every, events, left, pair,
+                        chunk, comp, Z)
             else:
-                out = solve(t, r.t1, y, r.p, r.rtol, r.atol, carry, r.max_step, t_eval, every, events,
-                            min(r.max_steps - nacc, 2**62), pair, r.error_control == "mode", chunk)
+                args = (t, r.t1, y, r.p, r.rtol, r.atol, carry, r.max_step, t_eval, every, events, left, pair,
+                        r.error_control == "mode", chunk)
+            out = call_repairing(solve, *args)
             tb, yb, n_out, et, ek, n_ev, code, nf, na, nr, t, y, carry = out
             ts.append(tb[:n_out])
             ys.append(yb[:n_out])

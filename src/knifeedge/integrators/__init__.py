@@ -10,8 +10,15 @@ import sys
 import time
 from dataclasses import dataclass
 
-from .specialize import cache_dir, is_compiled, load_kernel
+from . import dop853_tableau, rk_tableaus, tsit5
+from .specialize import cache_dir, call_repairing, is_compiled, load_kernel
 from .status import Status, from_code
+from .tableau import TABLEAUS, ExplicitTableau, register
+
+# the adaptive methods: one registered tableau each (a new method is its file and one line here)
+register(dop853_tableau.DOP853)
+register(rk_tableaus.DP54)
+register(tsit5.TSIT5)
 
 
 @dataclass(frozen=True)
@@ -22,7 +29,7 @@ class CompiledMethod:
     ----------
     name : str
     template : str  -- kernel template (``"erk"`` adaptive, ``"fixed"`` fixed step)
-    variant : int   -- the template's variant number
+    variant : str or int -- the registered tableau (``erk``) or the variant number (``fixed``)
     order : int     -- classical order of accuracy
     fixed_step : bool -- needs a step ``h`` instead of tolerances
     description : str
@@ -30,7 +37,7 @@ class CompiledMethod:
 
     name: str
     template: str
-    variant: int
+    variant: str | int
     order: int
     fixed_step: bool
     description: str
@@ -39,8 +46,7 @@ class CompiledMethod:
 COMPILED_METHODS = {
     m.name: m
     for m in (
-        CompiledMethod("DOP853", "erk", 0, 8, False, "Dormand-Prince 8(5,3), Hairer's DOP853, dense output of order 7"),
-        CompiledMethod("DP54", "erk", 1, 5, False, "Dormand-Prince 5(4), dense output of order 4 (SciPy's RK45)"),
+        *(CompiledMethod(t.name, "erk", t.name, t.order, False, t.description) for t in TABLEAUS.values()),
         CompiledMethod("RK4", "fixed", 0, 4, True, "classical Runge-Kutta, fixed step"),
         CompiledMethod("implicit_midpoint", "fixed", 1, 2, True, "implicit midpoint rule (Gauss-Legendre, 1 stage)"),
         CompiledMethod("gauss4", "fixed", 2, 4, True, "Gauss-Legendre collocation, 2 stages, order 4"),
@@ -76,10 +82,10 @@ def kernel(model, method: str):
 def _announced(solve, label: str):
     """``solve`` that says on stderr, at its first call, that it compiles now and once."""
     def first_call(*args):
-        print(f"knifeedge: compiling the {label} integrator: once, then cached in {cache_dir()} ...",
+        print(f"knifeedge: compiling {label}; once, it is then cached in {cache_dir()} ...",
               file=sys.stderr, end="", flush=True)
         t = time.perf_counter()
-        out = solve(*args)
+        out = call_repairing(solve, *args)
         print(f" {time.perf_counter() - t:.1f} s", file=sys.stderr, flush=True)
         for k, v in _KERNELS.items():
             if v is first_call:
@@ -89,4 +95,5 @@ def _announced(solve, label: str):
     return first_call
 
 
-__all__ = ["COMPILED_METHODS", "ALIASES", "CompiledMethod", "Status", "from_code", "kernel", "cache_dir"]
+__all__ = ["COMPILED_METHODS", "ALIASES", "CompiledMethod", "ExplicitTableau", "Status", "TABLEAUS", "cache_dir",
+           "call_repairing", "from_code", "kernel", "register"]

@@ -12,6 +12,8 @@ integrators do not depend on a private SciPy module.
 """
 import numpy as np
 
+from .tableau import ExplicitTableau
+
 N_STAGES = 12
 N_STAGES_EXTENDED = 16
 INTERPOLATOR_POWER = 7
@@ -203,3 +205,11 @@ D[3, 12] = -0.43533456590011143754432175058e+2
 D[3, 13] = 0.96324553959188282948394950600e+2
 D[3, 14] = -0.39177261675615439165231486172e+2
 D[3, 15] = -0.14972683625798562581422125276e+3
+
+#: the method as registry data (see :mod:`.tableau`): 12 stages, Hairer's error norm and interpolant
+DOP853 = ExplicitTableau(
+    name="DOP853", c=C[:N_STAGES], A=A[:N_STAGES, :N_STAGES], b=B, e=E5, order=8, error_order=7, P=None,
+    hairer={"e3": E3, "c_ext": C[N_STAGES + 1:], "A_ext": A[N_STAGES + 1:], "D": D},
+    description="Dormand-Prince 8(5,3), Hairer's DOP853, dense output of order 7",
+    reference="E. Hairer, S. P. Norsett, G. Wanner, Solving ODEs I, Sect. II.10; Hairer's Fortran DOP853",
+)

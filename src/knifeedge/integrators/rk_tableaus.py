@@ -14,6 +14,8 @@ import math
 
 import numpy as np
 
+from .tableau import ExplicitTableau
+
 DP54_C = np.array([0.0, 1 / 5, 3 / 10, 4 / 5, 8 / 9, 1.0])
 DP54_A = np.array([
     [0.0, 0.0, 0.0, 0.0, 0.0],
@@ -61,3 +63,10 @@ GAUSS = {
 #: classical Runge--Kutta method of order 4
 RK4_C = np.array([0.0, 0.5, 0.5, 1.0])
 RK4_B = np.array([1 / 6, 1 / 3, 1 / 3, 1 / 6])
+
+#: Dormand--Prince 5(4) as registry data (see :mod:`.tableau`), SciPy's ``RK45``
+DP54 = ExplicitTableau(
+    name="DP54", c=DP54_C, A=np.pad(DP54_A, ((0, 0), (0, 1))), b=DP54_B, e=DP54_E, order=5, error_order=4,
+    P=DP54_P, description="Dormand-Prince 5(4), dense output of order 4 (SciPy's RK45)",
+    reference="J. R. Dormand, P. J. Prince, J. Comput. Appl. Math. 6 (1980) 19-26; Shampine, Math. Comp. 46 (1986)",
+)

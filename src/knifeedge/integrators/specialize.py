@@ -24,11 +24,15 @@ not writable, a per-user folder in the system temporary directory.
 """
 from __future__ import annotations
 
+import glob
 import hashlib
 import importlib.util
 import os
+import pickle
+import stat
 import sys
 import tempfile
+import zlib
 from pathlib import Path
 from types import ModuleType
 
@@ -36,8 +40,6 @@ import numba
 
 _HERE = Path(__file__).resolve().parent
 TEMPLATES = ("erk", "fixed")
-#: sources every kernel depends on besides its template
-_DEPENDENCIES = ("common.py", "dop853_tableau.py", "rk_tableaus.py", "specialize.py")
 RHS_MARK = "# knifeedge:rhs"
 VARIANT_MARK = "# knifeedge:variant"
 N_MARK = "# knifeedge:n"
@@ -48,7 +50,13 @@ _LOADED: dict = {}
 
 
 def cache_dir() -> Path:
-    """The writable folder holding specialized kernels (created if needed)."""
+    """The writable folder holding specialized kernels (created if needed).
+
+    The fallback in the system temporary directory is created private
+    (mode 0700) and refused when it is not a plain folder of this user that
+    only this user can write to (a folder anyone can write to, or another
+    user's, could hold files planted for this process to load).
+    """
     env = os.environ.get("KNIFEEDGE_CACHE_DIR")
     if env:
         candidates = [Path(env)]
@@ -57,22 +65,49 @@ def cache_dir() -> Path:
         base = Path(xdg) if xdg else Path.home() / ".cache"
         candidates = [base / "knifeedge"]
     uid = os.getuid() if hasattr(os, "getuid") else "user"
-    candidates.append(Path(tempfile.gettempdir()) / f"knifeedge-cache-{uid}")
+    fallback = Path(tempfile.gettempdir()) / f"knifeedge-cache-{uid}"
+    candidates.append(fallback)
+    refused = []
     for c in candidates:
         try:
+            if c == fallback:
+                _private_folder(c)
             (c / "kernels").mkdir(parents=True, exist_ok=True)
             probe = c / "kernels" / f".probe-{os.getpid()}"
             probe.write_text("")
             probe.unlink()
             return c
+        except PermissionError as exc:
+            refused.append(str(exc))
         except OSError:
             continue
-    raise OSError(f"no writable cache directory for compiled kernels among {[str(c) for c in candidates]}; "
-                  "set KNIFEEDGE_CACHE_DIR")
+    raise OSError(f"no writable cache directory for compiled kernels among {[str(c) for c in candidates]}"
+                  f"{'; ' + '; '.join(refused) if refused else ''}; set KNIFEEDGE_CACHE_DIR")
 
 
-def kernel_source(template: str, variant: int, rhs_module: str, rhs_name: str, n_state: int) -> str:
-    """Text of the kernel module for a template specialized to ``rhs_module.rhs_name`` on ``n_state`` states."""
+def _private_folder(path: Path) -> None:
+    """Create ``path`` with mode 0700, or check that the existing one is this user's and private."""
+    try:
+        path.mkdir(mode=0o700)
+    except FileExistsError:
+        pass
+    if not hasattr(os, "getuid"):
+        return
+    st = os.lstat(path)
+    if not stat.S_ISDIR(st.st_mode):
+        raise PermissionError(f"refused {path}: not a folder (a link or a file)")
+    if st.st_uid != os.getuid():
+        raise PermissionError(f"refused {path}: owned by user id {st.st_uid}, not by this user ({os.getuid()})")
+    if st.st_mode & 0o022:
+        raise PermissionError(f"refused {path}: others may write to it (mode {stat.S_IMODE(st.st_mode):o})")
+
+
+def kernel_source(template: str, variant, rhs_module: str, rhs_name: str, n_state: int, unroll: bool = True) -> str:
+    """Text of the kernel module for a template specialized to ``rhs_module.rhs_name`` on ``n_state`` states.
+
+    ``unroll=False`` keeps the template's generic loops over the tableau
+    (same algorithm; the tests compare the two).
+    """
     if template not in TEMPLATES:
         raise ValueError(f"unknown kernel template {template!r}; known: {TEMPLATES}")
     if isinstance(n_state, bool) or not isinstance(n_state, int) or n_state < 1:
@@ -84,7 +119,8 @@ def kernel_source(template: str, variant: int, rhs_module: str, rhs_name: str, n
             line = f"from {rhs_module} import constants as _constants, {rhs_name} as _rhs  {RHS_MARK}"
             seen.add(RHS_MARK)
         elif VARIANT_MARK in line:
-            line = f"VARIANT = {int(variant)}  {VARIANT_MARK}"
+            line = (f"TABLEAU = {str(variant)!r}  {VARIANT_MARK}" if template == "erk"
+                    else f"VARIANT = {int(variant)}  {VARIANT_MARK}")
             seen.add(VARIANT_MARK)
         elif N_MARK in line and line.startswith("N ="):
             line = f"N = {n_state}  {N_MARK}"
@@ -93,30 +129,35 @@ def kernel_source(template: str, variant: int, rhs_module: str, rhs_name: str, n
     if seen != {RHS_MARK, VARIANT_MARK, N_MARK}:
         raise RuntimeError(f"kernel template {template}.py lacks one of its {RHS_MARK!r}, {VARIANT_MARK!r}, "
                            f"{N_MARK!r} lines")
-    if template == "erk":
+    if template == "erk" and unroll:
         tableau = _erk_tableau(variant)
         out = _replace_body(out, STAGES_MARK, _stage_body(tableau["A"], tableau["n_stages"]))
         out = _replace_body(out, ATTEMPT_MARK, _attempt_body(tableau["A"], tableau["C"], tableau["n_stages"]))
-        out = _replace_body(out, ERROR_MARK, _error_body(tableau, variant))
+        out = _replace_body(out, ERROR_MARK, _error_body(tableau))
     header = (f"# Specialized kernel: template {template}.py, variant {variant}, rhs {rhs_module}.{rhs_name}, "
-              f"{n_state} states.\n")
+              f"{n_state} states{'' if unroll else ', generic loops'}.\n")
     return header + "\n".join(out) + "\n"
 
 
-def _erk_tableau(variant: int) -> dict:
-    """The tables the ``erk`` template uses for ``variant`` (row ``n_stages`` of ``A`` holds the weights)."""
+def _erk_tableau(name: str) -> dict:
+    """The tables the ``erk`` template uses for the registered method ``name`` (row ``n_stages`` of ``A``
+    holds the weights; later rows, DOP853's extra dense-output stages)."""
     import numpy as np
 
-    from . import dop853_tableau, rk_tableaus
+    from . import tableau
 
-    if variant == 0:
-        t = dop853_tableau
-        return {"A": t.A, "C": t.C, "E5": t.E5, "E3": t.E3, "n_stages": t.N_STAGES}
-    A = np.zeros((7, 7))
-    A[:6, :5] = rk_tableaus.DP54_A
-    A[6, :6] = rk_tableaus.DP54_B
-    C = np.append(rk_tableaus.DP54_C, 1.0)
-    return {"A": A, "C": C, "E5": rk_tableaus.DP54_E, "E3": None, "n_stages": 6}
+    t = tableau.get(name)
+    s = t.stages
+    n_ext = s + 1 + (t.hairer["c_ext"].size if t.hairer else 0)
+    A = np.zeros((n_ext, n_ext))
+    A[:s, :s] = t.A
+    A[s, :s] = t.b
+    C = np.ones(n_ext)
+    C[:s] = t.c
+    if t.hairer:
+        A[s + 1:] = t.hairer["A_ext"]
+        C[s + 1:] = t.hairer["c_ext"]
+    return {"A": A, "C": C, "E5": t.e, "E3": t.hairer["e3"] if t.hairer else None, "n_stages": s}
 
 
 def _sum(coefficients) -> str:
@@ -159,11 +200,10 @@ def _attempt_body(A, C, n_stages: int) -> list:
     return body
 
 
-def _error_body(tableau: dict, variant: int) -> list:
+def _error_body(tableau: dict) -> list:
     """Body of ``_error_norm(K, h, scale, work5, work3)`` with the estimators' coefficients as literals."""
-    n = tableau["n_stages"] + 1
     body = []
-    if variant == 0:  # DOP853: the 5th- and 3rd-order estimates combined as in Hairer's code
+    if tableau["E3"] is not None:  # DOP853: the 5th- and 3rd-order estimates combined as in Hairer's code
         body += [
             "    n5 = 0.0",
             "    n3 = 0.0",
@@ -209,27 +249,79 @@ def _replace_body(lines: list, mark: str, body: list) -> list:
 
 def _key(source: str, rhs_file: str) -> str:
     h = hashlib.sha256(source.encode())
-    for dep in _DEPENDENCIES:
-        h.update((_HERE / dep).read_bytes())
+    for dep in sorted(_HERE.glob("**/*.py")):  # every source of the integrators (templates, helpers, tableaus)
+        h.update(dep.relative_to(_HERE).as_posix().encode())
+        h.update(dep.read_bytes())
     h.update(Path(rhs_file).read_bytes())
     h.update(f"numba {numba.__version__} python {sys.version}".encode())
     return h.hexdigest()[:20]
 
 
 def is_compiled(module: ModuleType) -> bool:
-    """Whether numba's cache beside a kernel module holds machine code of its ``solve``."""
-    path = Path(module.__file__)
-    return any((path.parent / "__pycache__").glob(f"{path.stem}.solve-*.nbi"))
+    """Whether numba's cache (beside the kernel module, or under ``NUMBA_CACHE_DIR``) holds its ``solve``."""
+    try:
+        return Path(module.solve._cache._cache_file._index_path).is_file()
+    except AttributeError:  # another numba layout: look beside the module
+        path = Path(module.__file__)
+        return any((path.parent / "__pycache__").glob(f"{path.stem}.solve-*.nbi"))
 
 
-def load_kernel(template: str, variant: int, rhs_module: ModuleType, rhs_name: str, n_state: int) -> ModuleType:
+#: errors numba's cache raises when one of its files is damaged (truncated, overwritten, unreadable)
+_DAMAGE = (EOFError, pickle.UnpicklingError, zlib.error, ValueError, TypeError, AttributeError, IndexError,
+           KeyError, OSError, ImportError)
+
+
+def damaged_cache_files(exc: BaseException) -> list:
+    """The numba cache files being read when ``exc`` was raised (empty if it did not come from the cache)."""
+    files = []
+    tb = exc.__traceback__
+    while tb is not None:
+        frame = tb.tb_frame
+        if frame.f_code.co_filename.endswith(os.path.join("numba", "core", "caching.py")):
+            owner = frame.f_locals.get("self")
+            index = getattr(owner, "_index_path", None)
+            if index:
+                files.append(Path(index))
+            path = frame.f_locals.get("path")
+            if isinstance(path, (str, Path)) and str(path).endswith((".nbi", ".nbc")):
+                files.append(Path(path))
+        tb = tb.tb_next
+    return list(dict.fromkeys(files))
+
+
+def call_repairing(fn, *args):
+    """``fn(*args)``, discarding damaged numba cache entries (and recompiling) instead of failing.
+
+    A cache file that cannot be read (truncated by a full disk or a killed
+    process, or overwritten) is removed with the entry it belongs to (its
+    index and data files), the removal is said in one line on stderr, and
+    the call is retried, which compiles the function again.
+    """
+    for _ in range(16):
+        try:
+            return fn(*args)
+        except _DAMAGE as exc:
+            files = damaged_cache_files(exc)
+            if not files:
+                raise
+            for f in files:
+                stem = f.name.split(".py")[0]  # "<module>.<function>-<line>"
+                for entry in f.parent.glob(f"{glob.escape(stem)}.py*.nb[ic]"):
+                    entry.unlink(missing_ok=True)
+            print(f"knifeedge: discarded a damaged compiled-code cache entry {files[0]} "
+                  f"({type(exc).__name__}: {exc}); compiling it again", file=sys.stderr, flush=True)
+    return fn(*args)
+
+
+def load_kernel(template: str, variant, rhs_module: ModuleType, rhs_name: str, n_state: int,
+                unroll: bool = True) -> ModuleType:
     """Import (writing it first if needed) the kernel module for a model's right-hand side.
 
     Raises if the kernel cannot be written or imported: there is no slow fallback.
     """
-    source = kernel_source(template, variant, rhs_module.__name__, rhs_name, n_state)
+    source = kernel_source(template, variant, rhs_module.__name__, rhs_name, n_state, unroll)
     key = _key(source, rhs_module.__file__)
-    stem = f"{template}{variant}_{rhs_module.__name__.rsplit('.', 1)[-1]}_{rhs_name}_{key}"
+    stem = f"{template}{variant}{'' if unroll else 'g'}_{rhs_module.__name__.rsplit('.', 1)[-1]}_{rhs_name}_{key}"
     if stem in _LOADED:
         return _LOADED[stem]
     folder = cache_dir() / "kernels"

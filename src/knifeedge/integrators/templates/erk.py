@@ -1,7 +1,7 @@
-"""Adaptive embedded explicit Runge--Kutta kernel: DOP853 and Dormand--Prince 5(4).
+"""Adaptive embedded explicit Runge--Kutta kernel for any registered tableau (DOP853, DP54, Tsit5, ...).
 
 The algorithm is the one of SciPy's ``solve_ivp`` (``DOP853`` and ``RK45``):
-same tableaus, initial step (Hairer, Norsett & Wanner I, Sect. II.4), error
+same tableaus (for those two), initial step (Hairer, Norsett & Wanner I, Sect. II.4), error
 norms and step-size controller (safety 0.9, factors in [0.2, 10], no increase
 right after a rejection), so the two agree step for step up to round-off.
 
@@ -14,39 +14,38 @@ import numpy as np
 from numba import njit
 
 from knifeedge.integrators import common as _c
-from knifeedge.integrators import dop853_tableau as _t8
-from knifeedge.integrators import rk_tableaus as _t5
+from knifeedge.integrators import tableau as _tableau
 from knifeedge.integrators.templates._stub import constants as _constants, rhs_q_into as _rhs  # knifeedge:rhs
 
-VARIANT = 0  # knifeedge:variant  (0: DOP853, 1: Dormand--Prince 5(4))
+TABLEAU = "DOP853"  # knifeedge:variant  (a registered ExplicitTableau, see knifeedge.integrators.tableau)
 N = 3  # knifeedge:n  (the state size, a compile-time constant so that the loops over it unroll)
 
-if VARIANT == 0:
-    N_STAGES = 12
-    N_EXT = 16
-    A = _t8.A.copy()
-    C = _t8.C.copy()
-    E3 = _t8.E3.copy()
-    E5 = _t8.E5.copy()
-    DD = _t8.D.copy()
+_T = _tableau.get(TABLEAU)
+#: Hairer's DOP853: a second error estimator and an interpolant with extra stages
+HAIRER = _T.hairer is not None
+N_STAGES = _T.stages
+N_EXT = N_STAGES + 1 + (_T.hairer["c_ext"].size if HAIRER else 0)
+# A and C over every stage: the method's, then the weights (the stage at t + h, first same as last), then
+# the extra stages of the dense output
+A = np.zeros((N_EXT, N_EXT))
+A[:N_STAGES, :N_STAGES] = _T.A
+A[N_STAGES, :N_STAGES] = _T.b
+C = np.ones(N_EXT)
+C[:N_STAGES] = _T.c
+E5 = _T.e.copy()
+ERROR_ORDER = _T.error_order
+if HAIRER:
+    A[N_STAGES + 1:] = _T.hairer["A_ext"]
+    C[N_STAGES + 1:] = _T.hairer["c_ext"]
+    E3 = _T.hairer["e3"].copy()
+    DD = _T.hairer["D"].copy()
     P = np.zeros((1, 1))
-    ERROR_ORDER = 7
-    DENSE_ROWS = 7
+    DENSE_ROWS = 3 + DD.shape[0]
 else:
-    N_STAGES = 6
-    N_EXT = 7
-    A = np.zeros((7, 7))
-    A[:6, :5] = _t5.DP54_A
-    A[6, :6] = _t5.DP54_B
-    C = np.zeros(7)
-    C[:6] = _t5.DP54_C
-    C[6] = 1.0
-    E3 = np.zeros(7)
-    E5 = _t5.DP54_E.copy()
+    E3 = np.zeros(N_EXT)
     DD = np.zeros((1, 1))
-    P = _t5.DP54_P.copy()
-    ERROR_ORDER = 4
-    DENSE_ROWS = 4
+    P = _T.P.copy()
+    DENSE_ROWS = P.shape[1]
 ERROR_EXPONENT = -1.0 / (ERROR_ORDER + 1)
 SAFETY = 0.9
 MIN_FACTOR = 0.2
@@ -64,8 +63,8 @@ def _min_step(t):
 
 @njit(cache=True, error_model="numpy", inline="always")
 def _power(err):
-    """``err ** ERROR_EXPONENT`` of the step-size controller; DOP853's -1/8 as three square roots (cheaper than pow)."""
-    if VARIANT == 0:
+    """``err ** ERROR_EXPONENT`` of the step-size controller; -1/8 as three square roots (cheaper than pow)."""
+    if ERROR_ORDER == 7:
         return 1.0 / np.sqrt(np.sqrt(np.sqrt(err)))
     return err ** ERROR_EXPONENT
 
@@ -160,7 +159,7 @@ def _error_norm(K, h, scale, work5, work3):  # knifeedge:error
             e3 += E3[j] * K[j, i]
         work5[i] = e5 / scale[i]
         work3[i] = e3 / scale[i]
-    if VARIANT == 0:
+    if HAIRER:
         n5 = 0.0
         n3 = 0.0
         for i in range(n):
@@ -176,7 +175,7 @@ def _error_norm(K, h, scale, work5, work3):  # knifeedge:error
 def _dense(K, y_old, y_new, t_old, h, q, F, work):
     """Interpolant coefficients of the accepted step; returns the rhs calls it made."""
     n = N
-    if VARIANT == 0:
+    if HAIRER:
         for s in range(N_STAGES + 1, N_EXT):
             _stage_state(K, s, y_old, h, work)
             _rhs(t_old + C[s] * h, work, q, K[s])
@@ -192,7 +191,7 @@ def _dense(K, y_old, y_new, t_old, h, q, F, work):
                 F[3 + r, i] = h * acc
         return N_EXT - N_STAGES - 1
     for i in range(n):
-        for r in range(4):
+        for r in range(DENSE_ROWS):
             acc = 0.0
             for j in range(N_EXT):
                 acc += K[j, i] * P[j, r]
@@ -203,7 +202,7 @@ def _dense(K, y_old, y_new, t_old, h, q, F, work):
 @njit(cache=True, error_model="numpy")
 def _interpolate(F, y_old, x, i):
     """Component ``i`` of the step's interpolant at ``x`` in [0, 1]."""
-    if VARIANT == 0:
+    if HAIRER:
         return _c.dense_dop853(F, y_old, x, i)
     return _c.dense_power(F, y_old, x, i)
 
@@ -222,7 +221,7 @@ def _record(F, y, y_new, t, t_new, t_eval, ie, every, ts, ys, n_out, events, ev_
         if _c.crossing(y[i], y_new[i]):
             x = 1.0
             if y_new[i] != 0.0:
-                x = _c.illinois(F, y, i, y[i], y_new[i], VARIANT == 0)
+                x = _c.illinois(F, y, i, y[i], y_new[i], HAIRER)
             if n_ev == ev_t.size:
                 ev_t, ev_k = _c.grow_events(ev_t, ev_k)
             ev_t[n_ev] = t + x * h

@@ -1,0 +1,132 @@
+"""Integration methods as data: the tableau checks, the registry, Tsitouras 5(4), and the template's generic bodies.
+
+Scenes as in test_integrators.py: the single-mode knife edge of the paper's Fig. 'numerical'
+(g = ell = L = D = 1, theta(0) = 1e-3, phi_dot(0) = 0.1), whose spin reversal is at t = 106.361.
+"""
+import math
+
+import numpy as np
+import pytest
+
+import knifeedge as ke
+from knifeedge.integrators import TABLEAUS, ExplicitTableau, register, specialize, tableau
+from knifeedge.integrators.templates import _stub
+
+SINGLE = dict(g=1.0, ell=1.0, L=1.0, D=1.0)
+SINGLE_Y0 = dict(theta=1e-3, theta_dot=0.0, phi_dot=0.1)
+
+
+def _euler_heun(**over):
+    """Heun's method with an Euler estimate, a valid 2(1) pair with the linear interpolant's power form."""
+    kw = dict(name="heun", c=[0.0, 1.0], A=[[0.0, 0.0], [1.0, 0.0]], b=[0.5, 0.5], e=[-0.5, 0.5, 0.0],
+              order=2, error_order=1, P=[[1.0, -0.5], [0.0, 0.5], [0.0, 0.0]], description="", reference="")
+    kw.update(over)
+    return ExplicitTableau(**kw)
+
+
+def test_a_consistent_tableau_is_accepted_and_frozen():
+    t = _euler_heun()
+    assert t.stages == 2 and not t.A.flags.writeable
+    with pytest.raises(AttributeError):
+        t.order = 3
+
+
+@pytest.mark.parametrize("over,match", [
+    (dict(A=[[0.0, 0.0], [0.9, 0.0]]), "rows \\[1\\] of A do not sum to c"),
+    (dict(b=[0.5, 0.6]), "weights b sum to"),
+    (dict(e=[-0.5, 0.5, 0.1]), "error estimator e sums to"),
+    (dict(A=[[0.0, 0.1], [0.9, 0.0]]), "strictly lower triangular"),
+    (dict(c=[0.1, 1.0], A=[[0.1, 0.0], [1.0, 0.0]]), "c\\[0\\] must be 0"),
+    (dict(P=[[1.0, -0.4], [0.0, 0.5], [0.0, 0.0]]), "dense output at x = 1"),
+    (dict(order=1), "error_order < order"),
+    (dict(P=None), "exactly one dense output"),
+])
+def test_an_inconsistent_tableau_is_refused_at_construction(over, match):
+    with pytest.raises(ValueError, match=match):
+        _euler_heun(**over)
+
+
+def test_registered_tableaus_are_consistent_and_names_are_unique():
+    assert {"DOP853", "DP54", "Tsit5"} <= set(TABLEAUS)
+    for name, t in TABLEAUS.items():
+        assert t.name == name and name in ke.METHODS
+        assert ExplicitTableau(**{f: getattr(t, f) for f in ExplicitTableau.__dataclass_fields__}).stages == t.stages
+    with pytest.raises(ValueError, match="already registered"):
+        register(_euler_heun(name="DP54"))
+    with pytest.raises(ValueError, match="unknown explicit method"):
+        tableau.get("nope")
+
+
+def test_tsit5_satisfies_the_order_conditions():
+    """Tsitouras (2011): order 5 for the step (all 17 conditions up to order 5 hold for an explicit method whose
+    rows sum to c and which satisfies the quadrature and the first-column conditions; we check the quadrature
+    conditions b.c^k = 1/(k+1) and the tall trees b.A^k c), order 4 for the embedded solution b - e."""
+    t = TABLEAUS["Tsit5"]
+    b, c, A = t.b, t.c, t.A
+    for k in range(5):
+        assert math.isclose(b @ c**k, 1 / (k + 1), abs_tol=1e-14), k
+    assert math.isclose(b @ A @ c, 1 / 6, abs_tol=1e-14)
+    assert math.isclose(b @ (c * (A @ c)), 1 / 8, abs_tol=1e-14)
+    assert math.isclose(b @ A @ A @ c, 1 / 24, abs_tol=1e-14)
+    assert math.isclose(b @ A @ A @ A @ c, 1 / 120, abs_tol=1e-14)
+    b_hat = np.append(b, 0.0) - t.e
+    c1 = np.append(c, 1.0)
+    for k in range(4):
+        assert math.isclose(b_hat @ c1**k, 1 / (k + 1), abs_tol=1e-14), k
+    assert abs(b_hat @ c1**4 - 1 / 5) > 1e-6  # the estimate is of order 4, not 5
+
+
+def _harmonic(method, rtol, **kw):
+    """The stub oscillator q'' = -w^2 q of the templates (w = 2): q(t) = cos(2t), exact at t = 10."""
+    m_solve = specialize.load_kernel("erk", method, _stub, "rhs_q_into", 3, **kw).solve
+    y0, p = np.array([1.0, 0.0, 0.0]), np.array([2.0])
+    out = m_solve(0.0, 10.0, y0, p, rtol, np.full(3, rtol * 1e-3), 0.0, np.inf, np.array([5.0, 10.0]), False,
+                  np.array([0]), 10**6, np.full(3, -1), False, 10**6)
+    ts, ys, n_out, ev_t, ev_k, n_ev, status, nfev = out[:8]
+    assert status == 0 and n_out == 2
+    return ys[:2], ev_t[:n_ev], nfev
+
+
+@pytest.mark.parametrize("method,order", [("Tsit5", 5), ("DP54", 5), ("DOP853", 8)])
+def test_adaptive_methods_converge_at_their_order(method, order):
+    """Global error of q(10) = cos(20) against the number of evaluations: slope -order (within 30 %),
+    measured between rtol 1e-7 and 1e-10; the zeros of q, cos(2t) = 0 at t = (2k+1) pi/4, are located too."""
+    errs, work = [], []
+    for rtol in (1e-7, 1e-10):
+        ys, ev, nfev = _harmonic(method, rtol)
+        errs.append(abs(ys[1, 0] - math.cos(20.0)))
+        work.append(nfev)
+        np.testing.assert_allclose(ev, (2 * np.arange(ev.size) + 1) * math.pi / 4, atol=100 * rtol)
+        assert ev.size == 6
+    slope = -math.log(errs[1] / errs[0]) / math.log(work[1] / work[0])
+    assert 0.7 * order < slope < 1.3 * order + 1, (slope, errs, work)
+
+
+@pytest.mark.parametrize("method", ["Tsit5", "DP54", "DOP853"])
+def test_generic_template_bodies_agree_with_the_unrolled_ones(method):
+    """The template's loops over the tableau (unroll=False) and the specializer's straight-line code compute
+    the same method: as many steps, and answers equal within the tolerance (their round-off differs, as
+    the unrolled stages use fused multiply-adds, and moves the step sizes, hence the answers at the error level;
+    a wrong coefficient would break the order and miss by orders of magnitude more)."""
+    a, ev_a, n_a = _harmonic(method, 1e-9)
+    b, ev_b, n_b = _harmonic(method, 1e-9, unroll=False)
+    assert n_a == n_b
+    np.testing.assert_allclose(a, b, rtol=1e-8, atol=1e-9)
+    np.testing.assert_allclose(ev_a, ev_b, rtol=1e-9)
+    src = specialize.kernel_source("erk", method, "m", "rhs_q_into", 3, unroll=False)
+    assert "for s in range(1, N_STAGES)" in src and "generic loops" in src
+
+
+def test_tsit5_on_the_paper_scene_matches_dop853():
+    """Fig. 'numerical': the spin reversal at t = 106.361 and the final state, Tsit5 against DOP853 (an
+    independent method of order 8) at rtol 1e-11; Tsit5 needs fewer evaluations than DP54 at equal rtol."""
+    m = ke.load("single_mode", "full")
+    p = m.params(**SINGLE)
+    kw = dict(rtol=1e-11, atol=1e-13)
+    ts5 = ke.simulate(m, SINGLE_Y0, (0.0, 300.0), p, method="Tsit5", **kw)
+    ref = ke.simulate(m, SINGLE_Y0, (0.0, 300.0), p, method="DOP853", **kw)
+    dp5 = ke.simulate(m, SINGLE_Y0, (0.0, 300.0), p, method="DP54", **kw)
+    assert ts5.success and round(ts5.reversal_times[0], 3) == 106.361
+    assert math.isclose(ts5.reversal_times[0], ref.reversal_times[0], rel_tol=1e-8)
+    np.testing.assert_allclose(ts5.y[:, -1], ref.y[:, -1], rtol=1e-6, atol=1e-9)
+    assert ts5.nfev < dp5.nfev
