@@ -70,6 +70,11 @@ def main(argv=None) -> int:
     results["per_evaluation"] = [overhead.per_evaluation(SINGLE.with_end(3000.0), repeats=repeats),
                                  overhead.per_evaluation(TWO, repeats=repeats)]
     results["integrator_floor"] = overhead.integrator_floor(repeats=repeats)
+    log("recording: final state only against every step with events")
+    results["recording"] = [overhead.recording_cost(SINGLE.with_end(3000.0), repeats=repeats),
+                            overhead.recording_cost(TWO, repeats=repeats)]
+    log("the default call against solve_ivp with a Python right-hand side (two-mode scene)")
+    results["default_call"] = overhead.default_call_race(TWO, repeats=max(3, repeats // 2))
     log("warm start of a second process")
     results["warm_start"] = overhead.warm_start(TWO)
 
@@ -123,6 +128,14 @@ def _summary(res, log) -> None:
         print(line)
     print("integrator's own cost per evaluation (near-free rhs): " + ", ".join(
         f"{q['method']} n={q['n_state']}: {q['ns_per_evaluation']:.1f} ns" for q in res["integrator_floor"]))
+    for q in res["recording"]:
+        print(f"{q['scene']}: ke.simulate per evaluation: final state only {q['final_state_ns']:.1f} ns, every step "
+              f"+ reversals {q['every_step_ns']:.1f} ns ({q['every_step_over_final_state']:.2f}x, {q['rows']} rows), "
+              f"+ events on every state {q['every_step_all_events_ns']:.1f} ns")
+    d = res["default_call"]
+    print(f"{d['scene']}: default call: knifeedge DOP853 {1e3 * d['knifeedge_s']:.2f} ms, solve_ivp DOP853 with a "
+          f"Python rhs {d['solve_ivp_python_rhs_s']:.2f} s: {d['ratio']:.0f}x (every step returned by both, "
+          f"reversal times differ by {d['reversal_difference']:.1e})")
     w = res["warm_start"]
     print(f"warm second process: import {w['import_s']:.2f} s, then simulate {w['simulate_after_import_s']:.3f} s")
     for k, v in res["largest_right_step"].items():

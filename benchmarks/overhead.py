@@ -5,6 +5,7 @@ import json
 import statistics
 import subprocess
 import sys
+import time
 
 import numpy as np
 from numba import njit
@@ -75,6 +76,69 @@ def per_evaluation(scene, rtol=1e-10, repeats=7) -> dict:
         out["numbalsoda_ns"] = 1e9 * median_time(lambda: nb(rtol, rtol * 1e-6), repeats) / nb_nfev
         out["numbalsoda_overhead_ns"] = out["numbalsoda_ns"] - out["floor_ns"]
     return out
+
+
+def _interleaved(fns: dict, repeats: int) -> dict:
+    """Median CPU seconds of each callable, the calls interleaved so that a change of load hits all alike."""
+    inner = {}
+    for k, fn in fns.items():
+        t = time.perf_counter()
+        fn()
+        inner[k] = max(1, int(0.05 / max(time.perf_counter() - t, 1e-9)))
+    samples = {k: [] for k in fns}
+    for _ in range(repeats):
+        for k, fn in fns.items():
+            t = time.process_time()
+            for _ in range(inner[k]):
+                fn()
+            samples[k].append((time.process_time() - t) / inner[k])
+    return {k: statistics.median(v) for k, v in samples.items()}
+
+
+def recording_cost(scene, repeats=7) -> dict:
+    """Cost per evaluation of ``ke.simulate`` (DOP853, its default rtol 1e-10 / atol 1e-12): only the final
+    state asked for, against every step recorded (the default) with the reversal events, and the named
+    events of every state on top.  CPU time, interleaved, medians of ``repeats``."""
+    m, p, y0, span = scene.model, scene.p, scene.y, (0.0, scene.t_end)
+    calls = {
+        "final_state": lambda: ke.simulate(m, y0, span, p, t_eval=[scene.t_end]),
+        "every_step": lambda: ke.simulate(m, y0, span, p),
+        "every_step_all_events": lambda: ke.simulate(m, y0, span, p, events=m.state_names),
+    }
+    nfev = calls["every_step"]().nfev
+    sec = _interleaved(calls, repeats)
+    out = {"scene": scene.key, "nfev": int(nfev), "rows": int(calls["every_step"]().t.size)}
+    out.update({f"{k}_ns": 1e9 * v / nfev for k, v in sec.items()})
+    out["every_step_over_final_state"] = sec["every_step"] / sec["final_state"]
+    return out
+
+
+def default_call_race(scene, repeats=3) -> dict:
+    """``ke.simulate(model, y0, t_span, p)`` (compiled DOP853, rtol 1e-10, atol 1e-12, every step returned,
+    the spin reversals located) against ``solve_ivp(DOP853)`` with a plain Python right-hand side and the same
+    tolerances, event and output: what a user would run first.  CPU time, interleaved, medians."""
+    from scipy.integrate import solve_ivp
+
+    m, p, y0, span = scene.model, scene.p, scene.y, (0.0, scene.t_end)
+    n, k = m.n_state, m.index(m.spin_name)
+    into = m.rhs_into.py_func
+
+    def fun(t, y):
+        dy = np.empty(n)
+        into(t, y, p, dy)
+        return dy
+
+    def reversal(t, y):
+        return y[k]
+
+    calls = {"knifeedge": lambda: ke.simulate(m, y0, span, p),
+             "solve_ivp": lambda: solve_ivp(fun, span, y0, method="DOP853", rtol=1e-10, atol=1e-12, events=reversal)}
+    ours, theirs = calls["knifeedge"](), calls["solve_ivp"]()
+    sec = _interleaved(calls, repeats)
+    return {"scene": scene.key, "knifeedge_s": sec["knifeedge"], "solve_ivp_python_rhs_s": sec["solve_ivp"],
+            "ratio": sec["solve_ivp"] / sec["knifeedge"], "knifeedge_nfev": int(ours.nfev),
+            "solve_ivp_nfev": int(theirs.nfev), "rows": [int(ours.t.size), int(theirs.t.size)],
+            "reversal_difference": float(abs(ours.reversal_times[0] - theirs.t_events[0][0]))}
 
 
 def integrator_floor(repeats=7) -> list:

@@ -13,7 +13,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 STYLE = {
-    "knifeedge DOP853": ("C0", "o", "-"), "knifeedge DP54": ("C1", "s", "-"), "knifeedge RK4": ("C2", "^", "-"),
+    "knifeedge DOP853": ("C0", "o", "-"), "knifeedge DP54": ("C1", "s", "-"), "knifeedge Tsit5": ("C6", "<", "-"),
+    "knifeedge RK4": ("C2", "^", "-"),
     "knifeedge gauss4": ("C3", "v", "-"), "knifeedge gauss6": ("C4", "D", "-"),
     "knifeedge implicit_midpoint": ("C5", "x", "-"),
     "solve_ivp DOP853, Python rhs": ("k", "o", ":"), "solve_ivp DOP853, numba rhs": ("0.45", "o", "--"),
