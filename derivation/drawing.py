@@ -20,7 +20,7 @@ writes into every generated module that has a pose
 - ``body_outlines(s, p, u)``: compiled, ``u`` a 1-D array of curve
   parameters, returns shape ``(len(DRAWING["outlines"]), len(u), 3)``.
 
-The runtime (``knifeedge.animate``) reads only these.  A model gets its
+The runtime (``knifeedge.animation``) reads only these.  A model gets its
 drawing from ``spec.drawing`` when its :class:`ModelSpec` has one, else from
 :data:`DRAWINGS` by model name (:func:`register`).
 

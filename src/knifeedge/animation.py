@@ -140,7 +140,7 @@ class AnimationInfo:
 
 
 # -- input ------------------------------------------------------------------------
-def _check_options(out, frames, fps, magnify) -> tuple:
+def _check_options(out, frames, fps, magnify, size=(8.0, 4.5), dpi=80) -> tuple:
     if not isinstance(out, (str, Path)):
         raise TypeError(f"`out` must be a path ending in .gif or .mp4, got {type(out).__name__}")
     out = Path(out)
@@ -157,6 +157,14 @@ def _check_options(out, frames, fps, magnify) -> tuple:
         if isinstance(magnify, bool) or not isinstance(magnify, (int, float, np.integer, np.floating)) \
                 or not (math.isfinite(magnify) and magnify >= 1):
             raise ValueError(f"`magnify` must be 'auto' or a number >= 1, got {magnify!r}")
+    if isinstance(dpi, bool) or not isinstance(dpi, (int, np.integer)) or not 10 <= dpi <= 600:
+        raise ValueError(f"`dpi` must be an integer between 10 and 600, got {dpi!r}")
+    try:
+        w, h = (float(v) for v in size)
+    except (TypeError, ValueError):
+        raise TypeError(f"`size` must be a pair (width, height) in inches, got {size!r}") from None
+    if not (0.5 <= w <= 40 and 0.5 <= h <= 40):
+        raise ValueError(f"`size` must be between 0.5 and 40 inches each way, got {size!r}")
     if out.suffix.lower() == ".mp4" and shutil.which("ffmpeg") is None:
         raise RuntimeError("writing MP4 needs ffmpeg on the PATH, and it was not found: install it "
                            "(apt-get install ffmpeg, conda install ffmpeg, brew install ffmpeg) or write a .gif "
@@ -296,32 +304,39 @@ def oscillation_period(t: np.ndarray, y: np.ndarray, model, window=None) -> floa
 def frame_times(t: np.ndarray, y: np.ndarray, model, reversal_times, frames: int) -> np.ndarray:
     """``frames`` increasing times from ``t[0]`` to ``t[-1]``, denser around the spin reversals.
 
-    Around each reversal a window of four rocking periods each side is
-    sampled at up to ten frames per period (the windows share at most half of
-    the frames); the rest of the run is sampled evenly.  The density changes
+    Around each reversal two nested windows are sampled more densely: four
+    rocking periods each side at up to ten frames per period (the inner
+    windows share at most 40 % of the frames), and the spin's turn-around
+    (while ``|spin|`` is below half its largest value) at up to three frames
+    per period (at most 35 %).  The rest of the run is sampled evenly with
+    what is left, at least a quarter of the frames.  The density changes
     smoothly, so the speed written on the frames changes smoothly too.
     """
     t0, t1 = float(t[0]), float(t[-1])
     span = t1 - t0
     grid = np.linspace(t0, t1, 20001)
-    density = np.ones_like(grid) * (frames / span)
+    spin = np.abs(y[model.index(model.spin_name)])
     revs = [float(r) for r in reversal_times if t0 < r < t1]
-    bumps = []
+    inner, outer = [], []
     for r in revs:
         period = oscillation_period(t, y, model, (r - 0.05 * span, r + 0.05 * span)) or oscillation_period(t, y, model)
         if period is None:
             continue
-        half = min(4.0 * period, 0.1 * span)
-        bumps.append((r, half, 10.0 / period))
-    if bumps:
-        shape = [np.exp(-(((grid - r) / half) ** 4)) for r, half, _ in bumps]
-        area = [np.trapezoid(s, grid) if hasattr(np, "trapezoid") else np.trapz(s, grid) for s in shape]
-        dense_frames = sum(a * rate for a, (_, _, rate) in zip(area, bumps))
-        scale = min(1.0, 0.5 * frames / dense_frames) if dense_frames > 0 else 1.0
-        rest = frames - scale * dense_frames
-        base = rest / span
-        extra = sum(s * max(rate * scale - base, 0.0) for s, (_, _, rate) in zip(shape, bumps))
-        density = base + extra
+        inner.append((r, min(4.0 * period, 0.1 * span), 10.0 / period))
+        fast = spin > 0.5 * spin.max()
+        before, after = t[fast & (t < r)], t[fast & (t > r)]
+        turn = max(r - (before[-1] if before.size else t0), (after[0] if after.size else t1) - r)
+        if turn > inner[-1][1]:
+            outer.append((r, min(turn, 0.25 * span), 3.0 / period))
+    density = np.full_like(grid, 0.25 * frames / span)
+    for group, budget in ((inner, 0.4 * frames), (outer, 0.35 * frames)):
+        if not group:
+            continue
+        shapes = [np.exp(-(((grid - r) / half) ** 4)) for r, half, _ in group]
+        need = sum(float(np.sum(sh) * (grid[1] - grid[0])) * rate for sh, (_, _, rate) in zip(shapes, group))
+        scale = min(1.0, budget / need)
+        for sh, (_, _, rate) in zip(shapes, group):
+            density = np.maximum(density, scale * rate * sh)
     cum = np.concatenate([[0.0], np.cumsum(0.5 * (density[1:] + density[:-1]) * np.diff(grid))])
     times = np.interp(np.linspace(0.0, cum[-1], frames), cum, grid)
     times[0], times[-1] = t0, t1
@@ -484,7 +499,8 @@ class FrameRenderer:
         self.spin_text.set_text(f"{s:+.4f}  ({sense} from above)")
         self.time_text.set_text(f"t = {mo.t[k]:9.2f}")
         tps = self.time_per_second[k]
-        slow = " (slowed near a reversal)" if tps < 0.7 * np.median(self.time_per_second) else ""
+        ratio = float(np.max(self.time_per_second)) / tps
+        slow = f" (x{ratio:.2g} slower than elsewhere: near a reversal)" if ratio > 1.5 else ""
         self.speed_text.set_text(f"{self.fps:g} frames/s; 1 s of video = {tps:.3g} time units{slow}")
         self.canvas.restore_region(self.background)
         below = [m[:, 2].mean() < 0 for m in (p[[a, b]] for a, b in self.seg)]
@@ -532,7 +548,7 @@ def _write_gif(frames, path: Path, fps: float) -> int:
         if palette is None:
             palette = im.quantize(colors=128, method=Image.Quantize.MEDIANCUT)
         images.append(im.quantize(palette=palette, dither=Image.Dither.NONE))
-    duration = int(round(1000.0 / fps))
+    duration = 10 * max(2, round(100.0 / fps))
     images[0].save(path, save_all=True, append_images=images[1:], duration=duration, loop=0, optimize=False,
                    disposal=1)
     return len(images)
@@ -575,7 +591,9 @@ def animate(source, out, *, frames: int = 240, fps: float = 20, magnify="auto", 
     out : path ending in ``.gif`` (pillow) or ``.mp4`` (needs ``ffmpeg``).
     frames : number of frames (2 to 5000); the run is compressed in time to fit,
         less around the spin reversals.
-    fps : frames per second of the video (1 to 50).
+    fps : frames per second of the video (1 to 50); a GIF plays at
+        100 / round(100 / fps) (its frame durations are whole centiseconds),
+        and that is the rate written on the frames.
     magnify : ``"auto"`` (largest tilt drawn at about 23 degrees, by a factor
         1, 2, 3, 4, 5, 10, 20, ...) or a factor >= 1 for the tilt angles.
     size, dpi : figure size in inches and resolution (pixels = size * dpi).
@@ -594,7 +612,9 @@ def animate(source, out, *, frames: int = 240, fps: float = 20, magnify="auto", 
     60
     """
     start = time.perf_counter()
-    out, frames, fps = _check_options(out, frames, fps, magnify)
+    out, frames, fps = _check_options(out, frames, fps, magnify, size, dpi)
+    if out.suffix.lower() == ".gif":  # GIF frame durations are whole centiseconds: state the rate it plays at
+        fps = 100.0 / max(2, round(100.0 / fps))
     say = progress or (lambda msg: None)
     say("integrating the run with the pose")
     mo = motion(source, frames)
@@ -602,6 +622,7 @@ def animate(source, out, *, frames: int = 240, fps: float = 20, magnify="auto", 
     say(f"drawing {frames} frames (tilts x{mag:g})")
     if title is None and isinstance(source, str):
         title = f"scene {source}: {mo.model.name}, drawn from its own simulation"
+    title = title if title is not None else f"{mo.model.name}: the body drawn from its own simulation"
     renderer = FrameRenderer(mo, fps, mag, size=size, dpi=dpi, title=title or "")
     out.parent.mkdir(parents=True, exist_ok=True)
     gen = (renderer.render(k) for k in range(frames))
