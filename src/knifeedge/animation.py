@@ -102,9 +102,9 @@ class Motion:
         return np.array([f(np.ascontiguousarray(self.run_y[:, j]), self.p)[c] for j in range(self.run_t.size)])
 
     def max_tilt(self) -> float:
-        """Largest absolute value of the magnifiable tilts over the run's frames (0 if none)."""
+        """Largest absolute value of the magnifiable tilts over the whole run (0 if none)."""
         names = self.drawing["magnify"]
-        return max((float(np.max(np.abs(self.y[self.model.index(n)]))) for n in names), default=0.0)
+        return max((float(np.max(np.abs(self.run_y[self.model.index(n)]))) for n in names), default=0.0)
 
 
 @dataclass
