@@ -305,3 +305,26 @@ def test_docs_animation_code_runs(tmp_path, monkeypatch):
     for code in blocks:
         exec(compile(code.replace("frames=120", "frames=12"), "docs/animation.md", "exec"), {})
     assert (tmp_path / "spin.gif").exists() and (tmp_path / "sleigh.gif").exists()
+
+
+def test_animate_a_result_without_the_pose_reruns_it(tmp_path):
+    m = ke.load("single_mode", "reduced")
+    r = ke.simulate(m, {"theta": 1e-3, "theta_dot": 0.0, "phi_dot": 0.1}, (0.0, 150.0), m.params(SINGLE))
+    info = ke.animate(r, tmp_path / "a.gif", frames=6, size=(4.0, 2.4), dpi=40)
+    assert "re-run" in info.drawn_by and "single_mode (reduced + pose)" in info.drawn_by
+    assert info.frame_times[0] == 0.0 and info.frame_times[-1] == 150.0
+
+
+def test_mp4_frames_are_piped_to_ffmpeg(tmp_path, monkeypatch):
+    """With an ``ffmpeg`` on the PATH every frame goes to it as raw RGB (a stand-in that stores its input)."""
+    import os
+    import stat
+
+    fake = tmp_path / "bin" / "ffmpeg"
+    fake.parent.mkdir()
+    fake.write_text('#!/bin/sh\nfor last; do :; done\ncat > "$last"\n')
+    fake.chmod(fake.stat().st_mode | stat.S_IEXEC)
+    monkeypatch.setenv("PATH", f"{fake.parent}{os.pathsep}{os.environ['PATH']}")
+    info = ke.animate("numerical", tmp_path / "a.mp4", frames=5, size=(4.0, 2.5), dpi=40)
+    assert info.n_frames == 5 and info.fps == 20
+    assert (tmp_path / "a.mp4").stat().st_size == 5 * 160 * 100 * 3

@@ -248,12 +248,14 @@ def _motion_of_result(result, frames: int) -> Motion:
         mp = load(m.name, fidelity=m.fidelity, pose=True)
         y0 = np.concatenate([result.y[:, 0], np.zeros(len(mp.pose_names))])
         t_span = (float(result.t[0]), float(result.t[-1]))
-        first = simulate(mp, y0, t_span, result.p, method=result.method)
+        first = simulate(mp, y0, t_span, result.p)
+        if not first.success:
+            raise RuntimeError(f"the run to draw failed: {first.message}")
         times = frame_times(first.t, first.y, mp, first.reversal_times, frames)
-        r = simulate(mp, y0, t_span, result.p, method=result.method, t_eval=times)
+        r = simulate(mp, y0, t_span, result.p, t_eval=times)
         return Motion(mp, r.p, r.t, r.y, first.reversal_times, t_span, first.t, first.y,
-                      f"{m.name} ({m.fidelity} + pose), {result.method} at the default tolerances, a re-run of "
-                      "the result with the pose from (phi, x, y) = 0")
+                      f"{m.name} ({m.fidelity} + pose), DOP853 at the default tolerances, a re-run of the "
+                      "result's initial state with the pose from (phi, x, y) = 0")
     if not _has_drawing(m.name, m.fidelity):
         raise ValueError(f"model {m.name} has no drawing (DRAWING in its generated module)")
     times = frame_times(result.t, result.y, m, result.reversal_times, frames)
