@@ -48,10 +48,13 @@ def per_evaluation(scene, rtol=1e-10, repeats=7) -> dict:
     pair = np.full(n, -1, dtype=np.int64)
     events = np.array([m.index(m.spin_name)])
 
-    def run_kernel():
-        return solve(0.0, scene.t_end, y0, p, rtol, atol, 0.0, np.inf, te, False, events, 10**8, pair, False, 10**8)
+    bufs = (np.empty(1), np.empty((1, n)), np.empty(64), np.empty(64, dtype=np.int64))
 
-    nfev = run_kernel()[7]
+    def run_kernel():
+        return solve(0.0, scene.t_end, y0, y0, p, rtol, atol, 0.0, np.inf, te, False, events, 10**8, pair, False,
+                     10**8, *bufs)
+
+    nfev = run_kernel()[3]
     t_kernel = median_time(run_kernel, repeats)
     t_api = median_time(lambda: ke.simulate(m, y0, (0.0, scene.t_end), p, rtol=rtol, atol=rtol * 1e-6, t_eval=te),
                         repeats)
@@ -155,10 +158,13 @@ def integrator_floor(repeats=7) -> list:
             y0, p = np.full(n, 0.5), np.array([0.1])
             atol, te, pair = np.full(n, 1e-16), np.array([300.0]), np.full(n, -1, dtype=np.int64)
 
-            def run(solve=solve, y0=y0, p=p, atol=atol, te=te, pair=pair, none=np.empty(0, dtype=np.int64)):
-                return solve(0.0, 300.0, y0, p, 1e-10, atol, 0.0, np.inf, te, False, none, 10**8, pair, False, 10**8)
+            bufs = (np.empty(1), np.empty((1, n)), np.empty(64), np.empty(64, dtype=np.int64))
 
-            nfev = run()[7]
+            def run(solve=solve, y0=y0, p=p, atol=atol, te=te, pair=pair, none=np.empty(0, dtype=np.int64), bufs=bufs):
+                return solve(0.0, 300.0, y0, y0, p, 1e-10, atol, 0.0, np.inf, te, False, none, 10**8, pair, False,
+                             10**8, *bufs)
+
+            nfev = run()[3]
             out.append({"n_state": n, "method": method, "nfev": int(nfev),
                         "ns_per_evaluation": 1e9 * median_time(run, repeats) / nfev})
     return out

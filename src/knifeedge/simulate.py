@@ -135,6 +135,8 @@ def _mode_pairs(model: Model) -> np.ndarray:
 
 #: accepted steps per call of a compiled kernel: between calls Python answers Ctrl-C; the steps are the same
 CHUNK_STEPS = 50_000
+#: rows of the first call's output buffer when every step is stored; it doubles from call to call
+ROWS_FIRST = 4096
 
 
 def _reversal_names(model: Model) -> tuple:
@@ -181,34 +183,37 @@ def _run_compiled(name: str):
             t_eval = t_eval[at_start:]
         ev_t, ev_k = [], []
         nfev = nacc = nrej = 0
-        t, y, carry = r.t0, r.y0, 0.0
+        t, y, f, carry = r.t0, r.y0, r.y0, 0.0
+        n = model.n_state
+        rows = ROWS_FIRST
         if spec.fixed_step:
             n_steps = math.ceil((r.t1 - r.t0) / r.h)
             h = (r.t1 - r.t0) / n_steps
-            comp, Z = np.zeros(model.n_state), np.empty((4, model.n_state))  # 4 >= stages of every fixed method
+            comp, Z = np.zeros(n), np.empty((4, n))  # 4 >= stages of every fixed method
+            rows = min(n_steps, CHUNK_STEPS)
         while True:
-            chunk = min(CHUNK_STEPS, r.max_steps - nacc)
             left = min(r.max_steps - nacc, 2**62)
+            chunk = min(CHUNK_STEPS, left)
+            cap = min(rows, chunk) if every else max(t_eval.size, 1)
+            buffers = (np.empty(cap), np.empty((cap, n)), np.empty(max(64, 4 * events.size)),
+                       np.empty(max(64, 4 * events.size), dtype=np.int64))
             if spec.fixed_step:
-                args = (r.t0, r.t1, y, r.p, h, n_steps, int(carry), r.atol, t_eval, every, events, left, pair,
+                args = (r.t0, r.t1, y, f, r.p, h, n_steps, int(carry), r.atol, t_eval, every, events, left, pair,
                         chunk, comp, Z)
             else:
-                args = (t, r.t1, y, r.p, r.rtol, r.atol, carry, r.max_step, t_eval, every, events, left, pair,
+                args = (t, r.t1, y, f, r.p, r.rtol, r.atol, carry, r.max_step, t_eval, every, events, left, pair,
                         r.error_control == "mode", chunk)
-            out = call_repairing(solve, *args)
-            tb, yb, n_out, et, ek, n_ev, code, nf, na, nr, t, y, carry = out
-            ts.append(tb[:n_out])
-            ys.append(yb[:n_out])
-            ev_t.append(et[:n_ev])
-            ev_k.append(ek[:n_ev])
+            n_out, n_ev, code, nf, na, nr, t, y, f, carry = call_repairing(solve, *args, *buffers)
+            ts.append(buffers[0][:n_out])
+            ys.append(buffers[1][:n_out])
+            ev_t.append(buffers[2][:n_ev])
+            ev_k.append(buffers[3][:n_ev])
             nfev, nacc, nrej = nfev + nf, nacc + na, nrej + nr
             if code != 1:
                 break
+            rows = min(2 * rows, CHUNK_STEPS)
             if not every:
                 t_eval = t_eval[n_out:]
-            if nacc >= r.max_steps:
-                code = Status.MAX_STEPS.code
-                break
         t_out = np.concatenate(ts) if len(ts) > 1 else ts[0]
         y_out = np.ascontiguousarray(np.concatenate(ys).T)
         events_out = _split_events(names, np.concatenate(ev_t), np.concatenate(ev_k))

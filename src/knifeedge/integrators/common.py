@@ -91,31 +91,6 @@ def illinois(F, y_old, i, g0, g1, dop853):
 
 
 @njit(cache=True, error_model="numpy")
-def grow_rows(ts, ys, n):
-    """Output arrays of twice the capacity holding the first ``n`` rows of ``ts`` and ``ys``."""
-    cap = max(2 * ts.size, 16)
-    nts = np.empty(cap)
-    nys = np.empty((cap, ys.shape[1]))
-    for k in range(n):
-        nts[k] = ts[k]
-        for i in range(ys.shape[1]):
-            nys[k, i] = ys[k, i]
-    return nts, nys
-
-
-@njit(cache=True, error_model="numpy")
-def grow_events(ev_t, ev_k):
-    """Event arrays (times, which event) of twice the capacity."""
-    cap = max(2 * ev_t.size, 8)
-    nt = np.empty(cap)
-    nk = np.empty(cap, dtype=np.int64)
-    for k in range(ev_t.size):
-        nt[k] = ev_t[k]
-        nk[k] = ev_k[k]
-    return nt, nk
-
-
-@njit(cache=True, error_model="numpy")
 def crossing(g_old, g_new):
     """True when a step from ``g_old`` to ``g_new`` crosses zero (a zero at the start is not counted)."""
     if g_old == 0.0:

@@ -208,12 +208,13 @@ def _interpolate(F, y_old, x, i):
 
 
 @njit(cache=True, error_model="numpy")
-def _record(F, y, y_new, t, t_new, t_eval, ie, every, ts, ys, n_out, events, ev_t, ev_k, n_ev):
-    """Store what the accepted step from ``t`` to ``t_new`` produced; returns the new counters and buffers.
+def _record(F, y, y_new, t, t_new, t_eval, ie, every, ys, ts, n_out, events, ev_t, ev_k, n_ev):
+    """Store what the accepted step from ``t`` to ``t_new`` produced; returns ``ie, n_out, n_ev``.
 
     Zero crossings of the components ``events`` (sign change between the
-    step's ends) are located on the interpolant; output rows are every step
-    (``every``) or the requested times ``t_eval[ie:]`` in ``(t, t_new]``.
+    step's ends) are located on the interpolant; unless ``every`` (the caller
+    stores every step itself), output rows are the requested times
+    ``t_eval[ie:]`` in ``(t, t_new]``.  The caller guarantees the room.
     """
     h = t_new - t
     for k in range(events.size):
@@ -222,8 +223,6 @@ def _record(F, y, y_new, t, t_new, t_eval, ie, every, ts, ys, n_out, events, ev_
             x = 1.0
             if y_new[i] != 0.0:
                 x = _c.illinois(F, y, i, y[i], y_new[i], HAIRER)
-            if n_ev == ev_t.size:
-                ev_t, ev_k = _c.grow_events(ev_t, ev_k)
             ev_t[n_ev] = t + x * h
             ev_k[n_ev] = k
             n_ev += 1
@@ -240,32 +239,38 @@ def _record(F, y, y_new, t, t_new, t_eval, ie, every, ts, ys, n_out, events, ev_
                     ys[n_out, i] = _interpolate(F, y, x, i)
             n_out += 1
             ie += 1
-    return ie, ts, ys, n_out, ev_t, ev_k, n_ev
+    return ie, n_out, n_ev
 
 
 # "contract": fused multiply-adds in the stage sums, which are inlined here (see specialize._attempt_body)
 @njit(cache=True, error_model="numpy", fastmath={"contract"})
-def solve(t0, t1, y0, p, rtol, atol, h_init, max_step, t_eval, every, events, max_steps, pair, mode_scaled,
-          chunk):
-    """Integrate from ``t0`` toward ``t1 > t0``, at most ``chunk`` accepted steps in this call.
+def solve(t0, t1, y0, f0, p, rtol, atol, h_init, max_step, t_eval, every, events, max_steps, pair, mode_scaled,
+          chunk, ts, ys, ev_t, ev_k):
+    """Integrate from ``t0`` toward ``t1 > t0``: at most ``chunk`` accepted steps, as many as the buffers hold.
 
     Parameters
     ----------
-    y0 : (n,) initial state; p : parameters of the right-hand side.
+    y0 : (n,) initial state; f0 : (n,) its derivative when continuing (``h_init > 0``), else ignored.
+    p : parameters of the right-hand side.
     rtol : float; atol : (n,) absolute tolerances.
-    h_init : first step, or 0 to choose it.  max_step : largest step.
+    h_init : next step when continuing a run, or 0 to start one (the first step is then chosen).
+    max_step : largest step.
     t_eval : (m,) increasing output times in (t0, t1] still ahead (used when not ``every``).
     every : store every accepted step instead of ``t_eval`` (the start is not stored).
     events : (e,) int, components whose zero crossings are recorded.
-    max_steps : accepted steps allowed (over the whole run: the caller subtracts those done).
+    max_steps : accepted steps allowed (the caller subtracts those already taken).
     pair : (n,) int, partner component for ``mode_scaled`` error control (-1: none).
-    chunk : accepted steps after which the call returns with status 1 (paused); the caller
-        continues from the returned ``t, y, h`` and obtains the same steps as one call.
+    chunk : accepted steps after which the call returns with status 1 (paused).
+    ts (r,), ys (r, n) : output rows (with ``every``, the call pauses when they are full; otherwise they
+        must hold ``t_eval``); ev_t (c,), ev_k (c,) int: event times and numbers (the call pauses when
+        a step could overflow them).
+
+    A paused run continues from the returned ``t, y, f, h_next`` (passed as ``t0, y0, f0, h_init``)
+    with the steps, evaluations and results of one uninterrupted call.
 
     Returns
     -------
-    ts (cap,), ys (cap, n), n_out, ev_t (cap,), ev_k (cap,) int, n_ev, status, nfev, accepted, rejected,
-    t, y, h_next -- the first ``n_out`` rows and ``n_ev`` events are valid.
+    n_out, n_ev, status, nfev, accepted, rejected, t, y, f, h_next
     """
     if y0.size != N:
         raise ValueError("the initial state does not have the size this kernel was specialized to")
@@ -280,22 +285,19 @@ def solve(t0, t1, y0, p, rtol, atol, h_init, max_step, t_eval, every, events, ma
     work3 = np.empty(n)
     scale = np.empty(n)
     F = np.empty((DENSE_ROWS, n))
-    cap = 256 if every else max(t_eval.size, 1)
-    ts = np.empty(cap)
-    ys = np.empty((cap, n))
     # counters start as int64, not as the literal 0 (numba would compile the callees for both types)
     n_out = np.int64(0)
     ie = np.int64(0)
-    ev_t = np.empty(4)
-    ev_k = np.empty(4, dtype=np.int64)
     n_ev = np.int64(0)
-    _rhs(t0, y, q, K[0])
-    nfev = 1
+    nfev = np.int64(0)
     if h_init > 0.0:
         h_abs = h_init
+        for i in range(n):
+            K[0, i] = f0[i]
     else:
+        _rhs(t0, y, q, K[0])
         h_abs = initial_step(t0, y, K[0], q, t1, max_step, rtol, atol, work)
-        nfev += 1
+        nfev += 2
     t = t0
     status = 0
     n_acc = 0
@@ -304,7 +306,7 @@ def solve(t0, t1, y0, p, rtol, atol, h_init, max_step, t_eval, every, events, ma
         if n_acc >= max_steps:
             status = -2
             break
-        if n_acc >= chunk:
+        if n_acc >= chunk or (every and n_out == ts.size) or n_ev + events.size > ev_t.size:
             status = 1
             break
         # SciPy's smallest step is 10 ulps of t; nextafter is called only near it (10 ulps <= 10 eps |t|)
@@ -352,18 +354,18 @@ def solve(t0, t1, y0, p, rtol, atol, h_init, max_step, t_eval, every, events, ma
         if dense:
             nfev += _dense(K, y, y_new, t, h, q, F, work)
         if every:  # the common case, inline: a row per step
-            if n_out == ts.size:
-                ts, ys = _c.grow_rows(ts, ys, n_out)
             ts[n_out] = t_new
             for i in range(n):
                 ys[n_out, i] = y_new[i]
             n_out += 1
         if dense or (not every and ie < t_eval.size and t_eval[ie] <= t_new):
-            ie, ts, ys, n_out, ev_t, ev_k, n_ev = _record(
-                F, y, y_new, t, t_new, t_eval, ie, every, ts, ys, n_out, events, ev_t, ev_k, n_ev
-            )
+            ie, n_out, n_ev = _record(F, y, y_new, t, t_new, t_eval, ie, every, ys, ts, n_out, events, ev_t, ev_k,
+                                      n_ev)
         for i in range(n):
             y[i] = y_new[i]
             K[0, i] = K[N_STAGES, i]
         t = t_new
-    return ts, ys, n_out, ev_t, ev_k, n_ev, status, nfev, n_acc, n_rej, t, y, h_abs
+    f = np.empty(n)
+    for i in range(n):
+        f[i] = K[0, i]
+    return n_out, n_ev, status, nfev, n_acc, n_rej, t, y, f, h_abs

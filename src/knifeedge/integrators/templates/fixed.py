@@ -134,7 +134,7 @@ def _solver_scale(y, atol, pair, out):
 
 
 @njit(cache=True, error_model="numpy")
-def _record(F, y, y_new, t, t_new, t_eval, ie, every, ts, ys, n_out, events, ev_t, ev_k, n_ev):
+def _record(F, y, y_new, t, t_new, t_eval, ie, every, ys, ts, n_out, events, ev_t, ev_k, n_ev):
     """As the adaptive kernel's: events on the step's cubic Hermite interpolant, then output rows."""
     h = t_new - t
     for k in range(events.size):
@@ -143,8 +143,6 @@ def _record(F, y, y_new, t, t_new, t_eval, ie, every, ts, ys, n_out, events, ev_
             x = 1.0
             if y_new[i] != 0.0:
                 x = _c.illinois(F, y, i, y[i], y_new[i], False)
-            if n_ev == ev_t.size:
-                ev_t, ev_k = _c.grow_events(ev_t, ev_k)
             ev_t[n_ev] = t + x * h
             ev_k[n_ev] = k
             n_ev += 1
@@ -161,23 +159,25 @@ def _record(F, y, y_new, t, t_new, t_eval, ie, every, ts, ys, n_out, events, ev_
                     ys[n_out, i] = _c.dense_power(F, y, x, i)
             n_out += 1
             ie += 1
-    return ie, ts, ys, n_out, ev_t, ev_k, n_ev
+    return ie, n_out, n_ev
 
 
 @njit(cache=True, error_model="numpy")
-def solve(t0, t1, y0, p, h, n_steps, first, atol, t_eval, every, events, max_steps, pair, chunk, comp, Z):
+def solve(t0, t1, y0, f0, p, h, n_steps, first, atol, t_eval, every, events, max_steps, pair, chunk, comp, Z,
+          ts, ys, ev_t, ev_k):
     """Integrate from ``t0`` over steps ``first + 1 .. n_steps`` of size ``h``, at most ``chunk`` of them.
 
     Step ``k`` ends at ``t0 + k h`` (the last at ``t1``).  ``atol`` (n,) is
     the floor of the scale of the implicit solver's convergence test and
     ``pair`` (n,) the mode partner of each component (-1: none) whose
     magnitude also sets it (Gauss only).  ``y0`` is the state after step
-    ``first``; ``comp`` (n,), the Kahan compensation, and ``Z`` (S, n), the
-    stage derivatives of the last step (``first == 0``: set from f(t0, y0)),
-    are carried from one call to the next and updated in place, so that a
-    run in chunks takes the same steps as one call.  Other arguments and the
-    returned tuple are as for the adaptive kernel (rejected steps are
-    always 0; ``h_next`` is the index of the last step taken).
+    ``first`` and ``f0`` its derivative (ignored when ``first == 0``);
+    ``comp`` (n,), the Kahan compensation, and ``Z`` (S, n), the stage
+    derivatives of the last step, are carried from one call to the next and
+    updated in place, so that a run in chunks takes the same steps as one
+    call.  Other arguments and the returned tuple are as for the adaptive
+    kernel (rejected steps are always 0; ``h_next`` is the index of the
+    last step taken).
     """
     if y0.size != N:
         raise ValueError("the initial state does not have the size this kernel was specialized to")
@@ -196,22 +196,21 @@ def solve(t0, t1, y0, p, h, n_steps, first, atol, t_eval, every, events, max_ste
     K = np.empty((4, n))
     Znew = np.empty((S, n))
     F = np.empty((3, n))
-    cap = 256 if every else max(t_eval.size, 1)
-    ts = np.empty(cap)
-    ys = np.empty((cap, n))
     # counters start as int64, not as the literal 0 (numba would compile the callees for both types)
     n_out = np.int64(0)
     ie = np.int64(0)
-    ev_t = np.empty(4)
-    ev_k = np.empty(4, dtype=np.int64)
     n_ev = np.int64(0)
+    nfev = np.int64(0)
     t = t0 if first == 0 else t0 + first * h
-    _rhs(t, y, q, f_old)
-    nfev = 1
     if first == 0:
+        _rhs(t, y, q, f_old)
+        nfev += 1
         for k in range(S):
             for i in range(n):
                 Z[k, i] = f_old[i]
+    else:
+        for i in range(n):
+            f_old[i] = f0[i]
     status = 0
     n_acc = 0
     step = first
@@ -219,7 +218,7 @@ def solve(t0, t1, y0, p, h, n_steps, first, atol, t_eval, every, events, max_ste
         if n_acc >= max_steps:
             status = -2
             break
-        if n_acc >= chunk:
+        if n_acc >= chunk or (every and n_out == ts.size) or n_ev + events.size > ev_t.size:
             status = 1
             break
         step += 1
@@ -254,16 +253,13 @@ def solve(t0, t1, y0, p, h, n_steps, first, atol, t_eval, every, events, max_ste
         if dense:
             _c.hermite_coefficients(y, y_new, f_old, f_new, t_new - t, F)
         if every:  # the common case, inline: a row per step
-            if n_out == ts.size:
-                ts, ys = _c.grow_rows(ts, ys, n_out)
             ts[n_out] = t_new
             for i in range(n):
                 ys[n_out, i] = y_new[i]
             n_out += 1
         if dense or (not every and ie < t_eval.size and t_eval[ie] <= t_new):
-            ie, ts, ys, n_out, ev_t, ev_k, n_ev = _record(
-                F, y, y_new, t, t_new, t_eval, ie, every, ts, ys, n_out, events, ev_t, ev_k, n_ev
-            )
+            ie, n_out, n_ev = _record(F, y, y_new, t, t_new, t_eval, ie, every, ys, ts, n_out, events, ev_t, ev_k,
+                                      n_ev)
         if VARIANT > 0:
             # start the next stage iteration from this step's collocation polynomial
             for k in range(S):
@@ -279,4 +275,4 @@ def solve(t0, t1, y0, p, h, n_steps, first, atol, t_eval, every, events, max_ste
             y[i] = y_new[i]
             f_old[i] = f_new[i]
         t = t_new
-    return ts, ys, n_out, ev_t, ev_k, n_ev, status, nfev, n_acc, 0, t, y, float(step)
+    return n_out, n_ev, status, nfev, n_acc, 0, t, y, f_old, float(step)
