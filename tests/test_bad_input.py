@@ -139,3 +139,46 @@ def test_smallest_fixed_step_still_accepted_and_step_budget_reported(two):
     r = _call(two, method="RK4", h=1e-9, t_span=(0.0, 1.0), max_steps=1000)
     assert not r.success and r.outcome is Status.MAX_STEPS and r.nsteps == 1000
     assert r.t[-1] == pytest.approx(1e-6)
+
+
+# -- SciPy methods honour `max_steps` -------------------------------------------
+SCIPY = ["scipy:RK45", "scipy:DOP853", "scipy:LSODA", "scipy:Radau"]
+
+
+@pytest.mark.parametrize("method", SCIPY)
+def test_scipy_methods_stop_at_max_steps_and_say_so(two, method):
+    """`--t-end 1e12` with a SciPy method used to run until interrupted: the budget now ends it."""
+    r = _call(two, method=method, t_span=(0.0, 1e12), max_steps=25)
+    assert not r.success and r.outcome is Status.MAX_STEPS and r.status == Status.MAX_STEPS.code
+    assert r.nsteps == 25 and r.t.size == 26 and r.t[-1] < 1e12
+    assert np.isfinite(r.y).all()
+    r = _call(two, method=method, t_span=(0.0, 1e12), max_steps=25, t_eval=[0.0, 1.0, 1e12])
+    assert not r.success and r.nsteps == 25 and r.t[-1] < 1e12
+
+
+@pytest.mark.parametrize("method", SCIPY)
+def test_scipy_methods_stepped_here_agree_with_solve_ivp(method):
+    """Stepping SciPy's solver ourselves gives solve_ivp's output and events (the same steps, the same
+    dense output, the same root finder), with every step stored and at `t_eval`: the single-mode scene
+    of the paper's Fig. 'numerical', whose spin reverses once near t = 106."""
+    from scipy.integrate import solve_ivp
+
+    m = ke.load("single_mode", "full")
+    p, y0 = m.params(g=1.0, ell=1.0, L=1.0, D=1.0), m.state(theta=1e-3, theta_dot=0.0, phi_dot=0.1)
+    k = m.index("phi_dot")
+    rtol = 1e-6 if method == "scipy:Radau" else 1e-9
+
+    def spin(t, y):
+        return y[k]
+
+    fun = lambda t, y: m.rhs(t, y, p)  # noqa: E731
+    for t_eval in (None, np.linspace(0.0, 150.0, 57)):
+        ref = solve_ivp(fun, (0.0, 150.0), y0, method=method.split(":")[1], rtol=rtol, atol=1e-12,
+                        t_eval=t_eval, events=spin)
+        r = ke.simulate(m, y0, (0.0, 150.0), p, method=method, rtol=rtol, atol=1e-12, t_eval=t_eval)
+        assert r.success and ref.status == 0
+        assert r.reversal_times.size == 1 and ref.t_events[0].size == 1
+        np.testing.assert_array_equal(r.t, ref.t)
+        np.testing.assert_allclose(r.y, ref.y, rtol=0, atol=1e-15)
+        np.testing.assert_allclose(r.reversal_times, ref.t_events[0], rtol=1e-14)
+        assert r.nfev == ref.nfev
