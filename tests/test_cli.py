@@ -63,7 +63,7 @@ def test_simulate_two_mode_by_name_to_npz(capsys, tmp_path):
     (["simulate", "--fidelity", "exact"], "`fidelity`"),
     (["simulate", "--model", "three_mode"], "`--model`"),
     (["simulate", "--method", "Euler"], "`method`"),
-    (["simulate", "--t-end", "-5"], "`t_span`"),
+    (["simulate", "--t-end", "-5"], "`--t-end`"),
     (["simulate", "--out", "x.txt"], "`--out`"),
     (["scene", "nope"], "`name`"),
     (["scene"], "scene NAME"),
