@@ -259,3 +259,76 @@ def test_cli_set_takes_the_run_settings_its_help_lists(tmp_path, capsys):
     assert main(["scene", "numerical", "--set", "method=DP54", "fidelity=full", "--out", str(png)]) == 0
     out, _ = capsys.readouterr()
     assert "DP54" in out and "(full" in out and png.exists()
+
+
+# -- reversal theory and the noisy loop: bounded work, named arguments, progress -----------------
+from knifeedge.background import noisy_intervals, simulate_noisy  # noqa: E402
+from knifeedge.reversal import MAX_INTERVALS, reversal_time  # noqa: E402
+
+
+@pytest.fixture(scope="module")
+def reduced2():
+    return ke.load("two_mode", "reduced")
+
+
+BAD_REVERSAL = [
+    (dict(n_intervals=10**7), ValueError, "`n_intervals`"),
+    (dict(n_intervals=MAX_INTERVALS + 1), ValueError, "`n_intervals`"),
+    (dict(n_intervals=1), ValueError, "`n_intervals`"),
+    (dict(n_intervals=4.0), TypeError, "`n_intervals`"),
+    (dict(n_intervals=True), TypeError, "`n_intervals`"),
+    (dict(n_intervals="4"), TypeError, "`n_intervals`"),
+    (dict(background=1e-6j), TypeError, "`background`"),
+    (dict(background="1e-6"), TypeError, "`background`"),
+    (dict(background=[True, 0]), TypeError, "`background`"),
+    (dict(background=[1e-6]), ValueError, "`background`"),
+    (dict(background=-1e-6), ValueError, "`background`"),
+    (dict(background=math.nan), ValueError, "`background`"),
+    (dict(progress="yes"), TypeError, "`progress`"),
+    (dict(y0=[True, 0, 0, 0, 0.1]), TypeError, "`y0`"),
+]
+
+
+@pytest.mark.parametrize("kw,exc,text", BAD_REVERSAL, ids=[repr(c[0])[:50] for c in BAD_REVERSAL])
+def test_reversal_time_refuses_bad_input(reduced2, kw, exc, text):
+    kw = {"p": P2, "y0": Y2, **kw}
+    with pytest.raises(exc) as info:
+        reversal_time(reduced2, kw.pop("p"), kw.pop("y0"), **kw)
+    assert text in str(info.value)
+
+
+def test_reversal_time_reports_progress_of_many_intervals(reduced2):
+    """`n_intervals` up to the bound is computed, and a callback sees every interval; with a background
+    the intervals alternate between two values (module docstring of knifeedge.reversal)."""
+    seen = []
+    r = reversal_time(reduced2, P2, Y2, background=1e-6, n_intervals=50, progress=lambda d, n: seen.append((d, n)))
+    assert seen == [(i, 50) for i in range(1, 51)]
+    assert r.intervals.shape == (50,)
+    np.testing.assert_allclose(r.intervals[2::2], r.intervals[0], rtol=1e-9)
+    np.testing.assert_allclose(r.intervals[3::2], r.intervals[1], rtol=1e-9)
+
+
+@pytest.mark.parametrize("kw,exc,text", [
+    (dict(t_end=1e12), ValueError, "`t_end`"),
+    (dict(t_end=1e6, h=1e-12), ValueError, "`h`"),
+    (dict(t_end="10"), TypeError, "`t_end`"),
+    (dict(sigma="1e-6"), TypeError, "`sigma`"),
+    (dict(sigma=-1.0), ValueError, "`sigma`"),
+    (dict(seed=-1), ValueError, "`seed`"),
+    (dict(seed=1.5), TypeError, "`seed`"),
+    (dict(max_reversals=0), ValueError, "`max_reversals`"),
+    (dict(max_reversals=10**12), ValueError, "`max_reversals`"),
+])
+def test_noisy_loop_refuses_unbounded_or_bad_input(kw, exc, text):
+    """The noisy RK4 loop is one compiled call: its work is bounded before it starts (at most
+    MAX_NOISY_STEPS steps), and a step below the resolution of t (which never advanced t) is refused."""
+    m = ke.load("two_mode", "full")
+    kw = {"t_end": 10.0, "sigma": 1e-6, **kw}
+    with pytest.raises(exc) as info:
+        simulate_noisy(m, Y2, kw.pop("t_end"), P2, kw.pop("sigma"), **kw)
+    assert text in str(info.value)
+
+
+def test_noisy_intervals_bounded(reduced2):
+    with pytest.raises(ValueError, match="`n_intervals`"):
+        noisy_intervals(ke.load("two_mode", "full"), P2, Y2, 1e-6, 10**6)
