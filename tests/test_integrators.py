@@ -384,4 +384,5 @@ def test_a_long_compiled_run_answers_ctrl_c():
         out, err = proc.communicate(timeout=600)  # a guard against a hang, not a speed requirement
     finally:
         proc.kill()
-    assert proc.returncode != 0 and "KeyboardInterrupt" in err and "finished" not in out
+    assert proc.returncode != 0 and "finished" not in out
+    assert err.rstrip().splitlines()[-1] == "KeyboardInterrupt", err

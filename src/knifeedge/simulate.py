@@ -203,7 +203,15 @@ def _run_compiled(name: str):
             else:
                 args = (t, r.t1, y, f, r.p, r.rtol, r.atol, carry, r.max_step, t_eval, every, events, left, pair,
                         r.error_control == "mode", chunk)
-            n_out, n_ev, code, nf, na, nr, t, y, f, carry = call_repairing(solve, *args, *buffers)
+            try:
+                n_out, n_ev, code, nf, na, nr, t, y, f, carry = call_repairing(solve, *args, *buffers)
+            except SystemError as exc:  # Ctrl-C that arrived while numba called back into Python
+                cause = exc.__cause__
+                while cause is not None and not isinstance(cause, KeyboardInterrupt):
+                    cause = cause.__cause__
+                if cause is not None:
+                    raise KeyboardInterrupt from None
+                raise
             ts.append(buffers[0][:n_out])
             ys.append(buffers[1][:n_out])
             ev_t.append(buffers[2][:n_ev])

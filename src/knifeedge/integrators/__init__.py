@@ -74,7 +74,8 @@ def kernel(model, method: str):
         module = load_kernel(spec.template, spec.variant, model.module, rhs_name, model.n_state)
         solve = module.solve
         if not is_compiled(module):
-            solve = _announced(solve, f"{spec.name} for {model.name} ({model.fidelity}{', pose' if model.pose else ''})")
+            pose = ", pose" if model.pose else ""
+            solve = _announced(solve, f"{spec.name} for {model.name} ({model.fidelity}{pose})")
         _KERNELS[key] = solve
     return _KERNELS[key]
 
@@ -85,8 +86,10 @@ def _announced(solve, label: str):
         print(f"knifeedge: compiling {label}; once, it is then cached in {cache_dir()} ...",
               file=sys.stderr, end="", flush=True)
         t = time.perf_counter()
-        out = call_repairing(solve, *args)
-        print(f" {time.perf_counter() - t:.1f} s", file=sys.stderr, flush=True)
+        try:
+            out = call_repairing(solve, *args)
+        finally:
+            print(f" {time.perf_counter() - t:.1f} s", file=sys.stderr, flush=True)
         for k, v in _KERNELS.items():
             if v is first_call:
                 _KERNELS[k] = solve
