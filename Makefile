@@ -6,7 +6,7 @@ export PYTHONHASHSEED = 0
 
 ## derive: regenerate generated/ from the Lagrangians (SymPy; deterministic)
 derive:
-	$(PYTHON) -m derivation --out generated
+	$(PYTHON) -m knifeedge.derive --out generated
 
 ## check-generated: fail if generated/ differs from a fresh derivation
 check-generated: derive

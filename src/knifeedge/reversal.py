@@ -35,7 +35,6 @@ two values.  For ``epsilon`` much below the maximum amplitudes
 """
 from __future__ import annotations
 
-import importlib
 import math
 from dataclasses import dataclass
 
@@ -43,8 +42,7 @@ import numpy as np
 from scipy.integrate import quad
 from scipy.optimize import brentq
 
-from .generated import MODULES
-from .models import Model
+from .models import Model, available, load
 
 
 @dataclass(frozen=True)
@@ -85,10 +83,11 @@ class ReversalPrediction:
 
 
 def _amplitude_module(model: Model):
-    key = (model.name, "amplitude")
-    if key not in MODULES:
-        raise ValueError(f"`model` {model.name} has no amplitude equations; reversal times need a knife edge")
-    return importlib.import_module(f"{__package__}.generated.{MODULES[key]}")
+    folder = model.source_path.parent if model.source_path is not None else None
+    if (model.name, "amplitude") not in available(folder):
+        raise ValueError(f"`model` {model.name} has no amplitude equations (fidelity 'amplitude'); "
+                         f"reversal times need them")
+    return load(model.name, "amplitude", path=folder).module
 
 
 def initial_amplitudes(model: Model, p: np.ndarray, y0: np.ndarray) -> tuple[np.ndarray, float]:
@@ -100,9 +99,10 @@ def initial_amplitudes(model: Model, p: np.ndarray, y0: np.ndarray) -> tuple[np.
         names = model.closed_state_names
         return np.array([y0[names.index(n)] for n in model.tilt_names]), float(y0[names.index(model.spin_name)])
     omega = _amplitude_module(model).frequencies(p)
+    rate_of = dict(model.rate_pairs)
     amps = []
     for i, q in enumerate(model.tilt_names):
-        th, th_dot = y0[model.index(q)], y0[model.index(q + "_dot")]
+        th, th_dot = y0[model.index(q)], y0[model.index(rate_of[q])]
         amps.append(math.hypot(th, th_dot / omega[i]))
     return np.array(amps), float(y0[model.index(model.spin_name)])
 

@@ -12,12 +12,13 @@ argument); a failed integration is reported in ``success``/``status``/
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from .integrators import ALIASES, COMPILED_METHODS, Status, from_code, kernel
-from .models import Model
+from .models import Model, ValidityWarning
 
 #: the smallest relative tolerance accepted: below it the error estimate is round-off
 MIN_RTOL = 100 * np.finfo(float).eps
@@ -53,6 +54,11 @@ class SimulationResult:
         Accepted steps.
     nrejected : int
         Rejected steps (adaptive methods).
+    in_validity_domain : bool
+        False when the run left the domain where the model's fidelity holds
+        (``model.validity``); a :class:`~knifeedge.models.ValidityWarning`
+        is then issued and ``validity_message`` says which states left it.
+    validity_message : str
     """
 
     t: np.ndarray
@@ -69,6 +75,8 @@ class SimulationResult:
     outcome: Status = Status.SUCCESS
     nsteps: int = 0
     nrejected: int = 0
+    in_validity_domain: bool = True
+    validity_message: str = ""
 
     def __getitem__(self, name: str) -> np.ndarray:
         """Time series of the named state, e.g. ``r["phi_dot"]``."""
@@ -107,11 +115,10 @@ _PAIRS: dict = {}
 
 
 def _mode_pairs(model: Model) -> np.ndarray:
-    """``pair[i]``: the partner of a tilt and its rate (``theta`` <-> ``theta_dot``), else -1 (read-only)."""
+    """``pair[i]``: the partner of a coordinate and its rate (``model.rate_pairs``), else -1 (read-only)."""
     if model not in _PAIRS:
         pair = np.full(model.n_state, -1, dtype=np.int64)
-        for name in model.tilt_names:
-            rate = f"{name}_dot"
+        for name, rate in model.rate_pairs:
             if name in model.state_names and rate in model.state_names:
                 i, j = model.index(name), model.index(rate)
                 pair[i], pair[j] = j, i
@@ -120,12 +127,17 @@ def _mode_pairs(model: Model) -> np.ndarray:
     return _PAIRS[model]
 
 
+def _event_index(model: Model) -> int:
+    """Index of the state whose zero crossings are the reversals (``model.reversal_events``), -1 if none."""
+    return model.index(model.spin_name) if model.spin_name is not None else -1
+
+
 def _run_compiled(name: str):
     spec = COMPILED_METHODS[ALIASES.get(name, name)]
 
     def run(r: _Run):
         solve = kernel(r.model, name)
-        spin = r.model.index(r.model.spin_name)
+        spin = _event_index(r.model)
         every = r.t_eval is None
         t_eval = np.empty(0) if every else np.ascontiguousarray(r.t_eval)
         if spec.fixed_step:
@@ -143,7 +155,7 @@ def _run_scipy(scipy_method: str):
     def run(r: _Run):
         from scipy.integrate import solve_ivp  # imported on use: it adds ~0.3 s to the start-up
 
-        k = r.model.index(r.model.spin_name)
+        k = _event_index(r.model)
         rhs, p = r.model.rhs, r.p
 
         def fun(t, y):
@@ -153,10 +165,11 @@ def _run_scipy(scipy_method: str):
             return y[k]
 
         sol = solve_ivp(fun, (r.t0, r.t1), r.y0, method=scipy_method, rtol=r.rtol, atol=r.atol, t_eval=r.t_eval,
-                        events=reversal, max_step=r.max_step)
+                        events=reversal if k >= 0 else None, max_step=r.max_step)
         outcome = Status.SUCCESS if sol.status >= 0 else Status.STEP_SIZE_UNDERFLOW
         nsteps = len(sol.t) - 1 if r.t_eval is None else -1
-        return sol.t, sol.y, np.asarray(sol.t_events[0]), outcome, sol.nfev, nsteps, 0
+        events = np.asarray(sol.t_events[0]) if k >= 0 else np.empty(0)
+        return sol.t, sol.y, events, outcome, sol.nfev, nsteps, 0
 
     return run
 
@@ -307,8 +320,22 @@ def simulate(
     message = outcome.value
     if outcome is Status.NON_FINITE and t.size:
         message = f"{message} Last good state at t = {t[-1]:.6g}."
+    excess = model.validity_excess(y) if model.validity else {}
+    validity_message = ""
+    if excess:
+        validity_message = _validity_message(model, excess)
+        warnings.warn(validity_message, ValidityWarning, stacklevel=2)
     return SimulationResult(
         t=t, y=y, state_names=model.state_names, reversal_times=np.asarray(rev, dtype=float),
         success=outcome.success, status=outcome.code, message=message, nfev=int(nfev), method=method,
         model=model, p=p, outcome=outcome, nsteps=int(nsteps), nrejected=int(nrej),
+        in_validity_domain=not excess, validity_message=validity_message,
     )
+
+
+def _validity_message(model: Model, excess: dict) -> str:
+    """Which states left the domain of the fidelity, by how much, and what to use instead."""
+    parts = ", ".join(f"|{n}| reached {v:.3g} > {model.validity[n]:g}" for n, v in excess.items())
+    return (f"the run left the domain where {model.name} at fidelity {model.fidelity!r} holds ({parts}; "
+            f"{model.validity_doc or 'see model.validity'}); its results there are not those of the full model: "
+            f"use fidelity 'full'")
