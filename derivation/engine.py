@@ -423,9 +423,10 @@ class ReducedSystem:
         """Right-hand side of ``d(state)/dt`` as a list of expressions, aligned with :attr:`state`."""
         spec = self.spec
         tilts = [q for q in spec.independent if q not in spec.cyclic]
+        spins = [q for q in spec.independent if q in spec.cyclic]
         rates = [spec.velocity_of(q) for q in tilts]
-        n_t = len(tilts)
-        natural = rates + list(self.explicit[:n_t]) + list(self.explicit[n_t:])
+        # ``explicit`` follows the order of ``spec.independent``, which may interleave tilts and spins
+        natural = rates + [self.explicit[spec.independent.index(q)] for q in tilts + spins]
         by_name = dict(zip(map(str, spec.natural_state), natural))
         return [by_name[str(s)] for s in self.state]
 
