@@ -151,12 +151,12 @@ class ModelSpec:
     state_order: tuple = ()
     extra_source: str = ""
     exports: tuple = ()
-    defined_at: str = field(default="", compare=False)
+    #: ``file:line`` where the spec was constructed (set automatically; named in every error)
+    defined_at: str = field(default="", init=False, compare=False)
 
     def __post_init__(self):
         set_ = lambda k, v: object.__setattr__(self, k, v)  # noqa: E731 (frozen dataclass)
-        if not self.defined_at:
-            set_("defined_at", _caller_location())
+        set_("defined_at", _caller_location())
         for k in ("coordinates", "velocities", "constraints", "dependent", "params", "accelerations",
                   "constraint_labels", "small", "pose", "reversal_events", "forces", "quasi_velocities",
                   "state_order", "exports"):

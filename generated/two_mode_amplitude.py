@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:63459c2a93fdba5ecd88cb7b5a0021e1247f2378af3b8ec2dc0e46265a5bfe77
+SymPy 1.14.0; input hash sha256:91da481f8ba1d51a9d7627a1d184a1008561a3d9e218d3dc48bd24bbef310576
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -71,7 +71,7 @@ HAS_DISSIPATION = False
 EXPORTS = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy', 'log_A1_A2')
-INPUT_HASH = '63459c2a93fdba5ecd88cb7b5a0021e1247f2378af3b8ec2dc0e46265a5bfe77'
+INPUT_HASH = '91da481f8ba1d51a9d7627a1d184a1008561a3d9e218d3dc48bd24bbef310576'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 24, 'constants': 14, 'rhs_q': 10, 'energy': 12, 'invariants': 19, 'frequencies': 12, 'growth_rates': 11, 'drive_rates': 12}

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:bef8392568709994995c6b7eaf9ff5d78b22251b8c71e4a08d0ac2c3c6ca5d6f
+SymPy 1.14.0; input hash sha256:e8a1ec8cd2b33c3c3e1733cc954fbfe3322b4edeb60ad962fb8e115e0cc89c03
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -65,7 +65,7 @@ MULTIPLIER_NAMES = ('Const22', 'Const23')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'bef8392568709994995c6b7eaf9ff5d78b22251b8c71e4a08d0ac2c3c6ca5d6f'
+INPUT_HASH = 'e8a1ec8cd2b33c3c3e1733cc954fbfe3322b4edeb60ad962fb8e115e0cc89c03'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 152, 'constants': 107, 'rhs_q': 65, 'rhs_pose': 166, 'rhs_pose_q': 76, 'pose_rates': 13, 'energy': 58, 'multipliers': 166, 'frequencies': 12}

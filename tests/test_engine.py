@@ -51,19 +51,21 @@ def test_two_mode_mass_matrix_determinant(systems):
 
 def test_engine_rejects_nonlinear_constraints():
     spec = models.MODELS["single_mode"]
-    bad = replace(spec, constraints=(spec.constraints[0] ** 2, spec.constraints[1]))
-    with pytest.raises(ValueError, match="linear and homogeneous"):
-        engine.derive(bad)
+    with pytest.raises(ValueError, match="linear and homogeneous") as err:
+        replace(spec, constraints=(spec.constraints[0] ** 2, spec.constraints[1]))
+    assert "test_engine.py:" in str(err.value)  # where the faulty spec was built
 
 
 def test_engine_rejects_a_state_that_does_not_close():
     """If phi is declared non-cyclic-free but x is not substituted, the dependent velocity stays."""
     spec = models.MODELS["single_mode"]
     # declare only y as dependent: x_dot is then an independent velocity the state does not hold
-    bad = replace(spec, dependent=(models.y,), cyclic={models.y: 0, models.phi: 0},
-                  constraints=(spec.constraints[0],), constraint_labels=("vinculo1",))
-    with pytest.raises(ValueError):
-        engine.derive(bad)
+    with pytest.raises(ValueError):  # refused when built (x in the pose is not cyclic) or when derived
+        engine.derive(replace(spec, dependent=(models.y,), cyclic={models.y: 0, models.phi: 0},
+                              constraints=(spec.constraints[0],), constraint_labels=("vinculo1",)))
+    with pytest.raises(ValueError, match="do not determine the velocities of `dependent`"):
+        engine.derive(replace(spec, dependent=(models.y,), cyclic={models.y: 0, models.phi: 0}, pose=(models.phi,),
+                              constraints=(spec.constraints[0],), constraint_labels=("vinculo1",)))
 
 
 def test_emitter_refuses_undeclared_symbols():

@@ -183,3 +183,20 @@ def test_reduced_fidelity_outside_its_domain_warns_and_says_so():
     assert inside.in_validity_domain and inside.validity_message == ""
     full = ke.simulate(ke.load("single_mode"), y0, (0, 10), m.default_params)
     assert full.in_validity_domain
+
+
+def test_check_reports_a_hand_edit_and_never_overwrites_it(derived, tmp_path):
+    """Issue 11 item 5: `make check-generated` (python -m knifeedge.derive --check) derives into a temporary
+    folder and compares; a hand edit of the checked-in folder is reported and left in place."""
+    import shutil
+
+    target = tmp_path / "checked_in"
+    shutil.copytree(derived, target)
+    cmd = [sys.executable, "-m", "knifeedge.derive", "--check", "--out", str(target), str(MODEL_FILE)]
+    assert subprocess.run(cmd, capture_output=True).returncode == 0
+    module = target / "damped_sleigh_full.py"
+    edited = module.read_text().replace("DEFAULT_PARAMS = {'a': 0.5", "DEFAULT_PARAMS = {'a': 0.6")
+    module.write_text(edited)
+    r = subprocess.run(cmd, capture_output=True, text=True)
+    assert r.returncode == 1 and "'a': 0.6" in r.stderr and "run make derive" in r.stderr
+    assert module.read_text() == edited
