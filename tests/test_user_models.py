@@ -200,3 +200,15 @@ def test_check_reports_a_hand_edit_and_never_overwrites_it(derived, tmp_path):
     r = subprocess.run(cmd, capture_output=True, text=True)
     assert r.returncode == 1 and "'a': 0.6" in r.stderr and "run make derive" in r.stderr
     assert module.read_text() == edited
+
+
+def test_reversal_prediction_outside_small_tilts_warns_and_says_so():
+    """Issue 11 item 4: the averaged prediction from theta = 3.1 is flagged, from the default state it is not."""
+    m = ke.load("single_mode", fidelity="reduced")
+    with pytest.warns(ke.ValidityWarning, match="A_theta"):
+        far = ke.reversal_time(m, m.default_params, {**m.default_state, "theta": 3.1})
+    assert not far.in_validity_domain and "amplitude equations" in far.validity_message
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        near = ke.reversal_time(m, m.default_params, m.default_state)
+    assert near.in_validity_domain

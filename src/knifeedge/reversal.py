@@ -36,13 +36,14 @@ two values.  For ``epsilon`` much below the maximum amplitudes
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
 from scipy.integrate import quad
 from scipy.optimize import brentq
 
-from .models import Model, available, load
+from .models import Model, ValidityWarning, available, load
 
 
 @dataclass(frozen=True)
@@ -70,6 +71,12 @@ class ReversalPrediction:
         The invariant ``E = A_phi^2 + sum_i w_i A_i^2`` ((rad/time)^2).
     growth_rates, weights : ndarray, shape (n_modes,)
         ``c_i`` and ``w_i`` of the slow flow.
+    in_validity_domain : bool
+        False when the amplitudes the slow flow reaches (up to ``sqrt(E/w_i)``)
+        leave the domain where the amplitude equations hold (the amplitude
+        module's ``VALIDITY``); a :class:`~knifeedge.models.ValidityWarning`
+        is then issued and ``validity_message`` says so.
+    validity_message : str
     """
 
     first: float
@@ -80,6 +87,8 @@ class ReversalPrediction:
     energy: float
     growth_rates: np.ndarray
     weights: np.ndarray
+    in_validity_domain: bool = True
+    validity_message: str = ""
 
 
 def _amplitude_module(model: Model):
@@ -275,5 +284,16 @@ def reversal_time(model: Model, p, y0, background: float = 0.0, n_intervals: int
         raise ValueError(f"`model` {model.name}: reversal theory needs one mode or two modes of opposite chirality")
     interval = float(np.mean(intervals[-2:]))
     energy = spin**2 + float(np.sum(w * amps**2))
+    peak = np.sqrt(energy / w)  # the largest amplitude each mode reaches on this level set
+    bounds = [mod.VALIDITY.get(n) for n in mod.TILT_NAMES]
+    excess = {n: float(a) for n, a, b in zip(mod.TILT_NAMES, np.maximum(peak, amps), bounds)
+              if b is not None and a > b}
+    message = ""
+    if excess:
+        message = ("the prediction leaves the domain where the amplitude equations hold ("
+                   + ", ".join(f"{n} reaches {v:.3g} > {mod.VALIDITY[n]:g}" for n, v in excess.items())
+                   + f"; {mod.VALIDITY_DOC}): simulate the full model instead")
+        warnings.warn(message, ValidityWarning, stacklevel=2)
     return ReversalPrediction(first=float(first), interval=interval, intervals=intervals, amplitudes=amps,
-                              spin=spin, energy=energy, growth_rates=c, weights=w)
+                              spin=spin, energy=energy, growth_rates=c, weights=w,
+                              in_validity_domain=not excess, validity_message=message)
