@@ -1,6 +1,6 @@
 """Command line: ``knifeedge COMMAND --help``.
 
-Commands: ``demo``, ``simulate``, ``derive``, ``scene``, ``figures``, ``sweep``, ``bench``.
+Commands: ``demo``, ``simulate``, ``derive``, ``scene``, ``figures``, ``sweep``, ``animate``, ``bench``.
 Errors are one line on stderr and a non-zero exit status, not a traceback.
 """
 from __future__ import annotations
@@ -312,6 +312,36 @@ def figures_cmd(args) -> int:
     return 0
 
 
+# -- animate --------------------------------------------------------------------
+def _animate_args(sub: argparse.ArgumentParser) -> None:
+    from .scenes import SCENE_NAMES
+
+    sub.add_argument("name", help=f"the scene to draw: one of {', '.join(SCENE_NAMES)}")
+    sub.add_argument("--out", type=Path, help="file to write, .gif (pillow) or .mp4 (needs ffmpeg); default NAME.gif")
+    sub.add_argument("--frames", type=int, default=240, help="number of frames (default: %(default)s)")
+    sub.add_argument("--fps", type=float, default=20.0, help="frames per second (default: %(default)s)")
+    sub.add_argument("--magnify", default="auto",
+                     help="factor for the tilt angles, or 'auto' (largest tilt drawn at ~23 degrees; default)")
+    sub.add_argument("--dpi", type=int, default=80, help="pixels per inch of the 8 x 4.5 inch frame (default: %(default)s)")
+    sub.add_argument("--set", nargs="+", action="extend", default=[], metavar="NAME=VALUE",
+                     help="change the scene's main run: parameters, initial state, or rtol/atol/t_end/method")
+
+
+@command("animate", "GIF or MP4 of a scene's run: the body in 3D, its contact path, its spin rate, the time")
+def animate_cmd(args) -> int:
+    from .animation import animate
+    from .scenes import get_scene
+
+    magnify = args.magnify if args.magnify == "auto" else number(args.magnify)
+    scene = get_scene(args.name, **assignments(args.set))
+    out = args.out or Path(f"{scene.name}.gif")
+    info = animate(scene, out, frames=args.frames, fps=args.fps, magnify=magnify, dpi=args.dpi,
+                   title=f"scene {scene.name}: {scene.title}",
+                   progress=lambda msg: print(f"animate {scene.name}: {msg}", file=sys.stderr, flush=True))
+    print(info.summary())
+    return 0
+
+
 # -- sweep ----------------------------------------------------------------------
 def _sweep_args(sub: argparse.ArgumentParser) -> None:
     from .scenes import SCENE_NAMES
@@ -406,7 +436,7 @@ class _Parser(argparse.ArgumentParser):
 
 
 _ARGS = {"demo": _demo_args, "simulate": _simulate_args, "scene": _scene_args, "figures": _figures_args,
-         "sweep": _sweep_args, "derive": _derive_args}
+         "sweep": _sweep_args, "animate": _animate_args, "derive": _derive_args}
 
 
 def build_parser() -> argparse.ArgumentParser:
