@@ -12,13 +12,14 @@ argument); a failed integration is reported in ``success``/``status``/
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from . import _validate
 from .integrators import ALIASES, COMPILED_METHODS, Status, call_repairing, from_code, kernel
-from .models import Model
+from .models import Model, ValidityWarning
 
 #: the smallest relative tolerance accepted: below it the error estimate is round-off
 MIN_RTOL = 100 * np.finfo(float).eps
@@ -64,6 +65,11 @@ class SimulationResult:
         Zero crossings of each named state: the model's reversal states and
         those asked for with ``simulate(..., events=...)``, each located on
         the solver's dense output (increasing times).
+    in_validity_domain : bool
+        False when the run left the domain where the model's fidelity holds
+        (``model.validity``); a :class:`~knifeedge.models.ValidityWarning`
+        is then issued and ``validity_message`` says which states left it.
+    validity_message : str
     """
 
     t: np.ndarray
@@ -81,6 +87,8 @@ class SimulationResult:
     nsteps: int = 0
     nrejected: int = 0
     events: dict = field(default_factory=dict)
+    in_validity_domain: bool = True
+    validity_message: str = ""
 
     def __getitem__(self, name: str) -> np.ndarray:
         """Time series of the named state, e.g. ``r["phi_dot"]``."""
@@ -120,11 +128,10 @@ _PAIRS: dict = {}
 
 
 def _mode_pairs(model: Model) -> np.ndarray:
-    """``pair[i]``: the partner of a tilt and its rate (``theta`` <-> ``theta_dot``), else -1 (read-only)."""
+    """``pair[i]``: the partner of a coordinate and its rate (``model.rate_pairs``), else -1 (read-only)."""
     if model not in _PAIRS:
         pair = np.full(model.n_state, -1, dtype=np.int64)
-        for name in model.tilt_names:
-            rate = f"{name}_dot"
+        for name, rate in model.rate_pairs:
             if name in model.state_names and rate in model.state_names:
                 i, j = model.index(name), model.index(rate)
                 pair[i], pair[j] = j, i
@@ -516,8 +523,22 @@ def simulate(
         message = f"{message} Last good state at t = {t[-1]:.6g}."
     reversal = [found[k] for k in _reversal_names(model)]
     rev = np.sort(np.concatenate(reversal)) if len(reversal) > 1 else (reversal[0] if reversal else np.empty(0))
+    excess = model.validity_excess(y) if model.validity else {}
+    validity_message = ""
+    if excess:
+        validity_message = _validity_message(model, excess)
+        warnings.warn(validity_message, ValidityWarning, stacklevel=2)
     return SimulationResult(
         t=t, y=y, state_names=model.state_names, reversal_times=rev,
         success=outcome.success, status=outcome.code, message=message, nfev=int(nfev), method=method,
         model=model, p=p, outcome=outcome, nsteps=int(nsteps), nrejected=int(nrej), events=found,
+        in_validity_domain=not excess, validity_message=validity_message,
     )
+
+
+def _validity_message(model: Model, excess: dict) -> str:
+    """Which states left the domain of the fidelity, by how much, and what to use instead."""
+    parts = ", ".join(f"|{n}| reached {v:.3g} > {model.validity[n]:g}" for n, v in excess.items())
+    return (f"the run left the domain where {model.name} at fidelity {model.fidelity!r} holds ({parts}; "
+            f"{model.validity_doc or 'see model.validity'}); its results there are not those of the full model: "
+            f"use fidelity 'full'")
