@@ -225,6 +225,9 @@ def module_source(system, fidelity: str) -> str:
     """Source of the generated module of ``system`` (a reduced or an amplitude system)."""
     if isinstance(system, AmplitudeSystem):
         return amplitude_module_source(system, fidelity)
+    from . import rigid, rigid_emit  # rigid bodies: derivation/rigid.py
+    if isinstance(system, rigid.RollingSystem):
+        return rigid_emit.module_source(system, fidelity)
     spec = system.spec
     state = [str(s) for s in system.state]
     pose = [str(q) for q in spec.pose]
@@ -454,6 +457,9 @@ def build_all() -> dict:
         if spec.small:
             out[(name, "reduced")] = truncation.reduced(full)
             out[(name, "amplitude")] = averaging.average(out[(name, "reduced")])
+    from . import rigid, rigid_models  # rigid bodies built with the front end
+    for name, body in sorted(rigid_models.MODELS.items()):
+        out[(name, "full")] = rigid.derive(body)
     return out
 
 

@@ -6,6 +6,7 @@ Produced by derivation/emit.py (make derive); SymPy 1.14.0.
 
 #: (model, fidelity) -> module name inside this package
 MODULES = {
+    ('celt', 'full'): 'celt_full',
     ('chaplygin_sleigh', 'full'): 'chaplygin_sleigh_full',
     ('single_mode', 'amplitude'): 'single_mode_amplitude',
     ('single_mode', 'full'): 'single_mode_full',

@@ -57,6 +57,11 @@ class Model:
         self.tilt_names: tuple = mod.TILT_NAMES
         self.spin_name: str = mod.SPIN_NAME
         self.multiplier_names: tuple = mod.MULTIPLIER_NAMES
+        #: admissible values per parameter ("positive", "nonnegative", "real"), from the module when it says
+        self.param_domains: dict = {n: getattr(mod, "PARAM_DOMAINS", {}).get(
+            n, "real" if n in SIGNED_PARAMS else "positive") for n in self.param_names}
+        #: named parameter sets the module ships (``preset``)
+        self.preset_names: tuple = tuple(sorted(getattr(mod, "PRESETS", {})))
         self.rhs = mod.rhs_pose if self.pose else mod.rhs
         self.rhs_into = mod.rhs_pose_into if self.pose else mod.rhs_into
 
@@ -97,9 +102,54 @@ class Model:
         out = np.empty(len(self.param_names))
         for i, n in enumerate(self.param_names):
             out[i] = _finite_float(values[n], f"parameter `{n}`")
-            if n not in SIGNED_PARAMS and not out[i] > 0:
-                raise ValueError(f"parameter `{n}` must be positive, got {values[n]!r}")
+            if not _admissible(out[i], self.param_domains[n]):
+                raise ValueError(f"parameter `{n}` must be {self.param_domains[n]}, got {values[n]!r}")
         return out
+
+    def preset(self, name: str, /, **overrides) -> np.ndarray:
+        """Validated parameter vector of the named parameter set the module ships; keywords override.
+
+        ``m.preset("kane_levinson_1982", sigma=1e-4)``; the names are in :attr:`preset_names`.
+        """
+        presets = getattr(self.module, "PRESETS", {})
+        if not isinstance(name, str) or name not in presets:
+            accepted = ", ".join(self.preset_names) or "none"
+            raise ValueError(f"unknown preset `name` {name!r} for {self.name}; accepted: {accepted}")
+        unknown = [k for k in overrides if k not in self.param_names]
+        if unknown:
+            raise ValueError(f"unknown parameters {unknown} in the overrides of preset {name!r}; "
+                             f"expected some of {self.param_names}")
+        return self.params({**presets[name], **overrides})
+
+    def initial_state(self, **physical) -> np.ndarray:
+        """Initial state from a physical description, through the module's ``initial_state``.
+
+        The keywords are the module's (for a rigid body: ``n0``, the upward vertical in body axes,
+        normalized; ``omega0``, the angular velocity in body axes).  With ``pose=True`` the pose
+        (zero unless ``pose=(...)`` is given) is appended.
+        """
+        build = getattr(self.module, "initial_state", None)
+        if build is None:
+            raise ValueError(f"{self.name} at fidelity {self.fidelity!r} has no physical initial-state builder; "
+                             "use `state(...)`")
+        if self.pose:
+            physical.setdefault("pose", (0.0,) * len(self.pose_names))
+        elif physical.get("pose") is not None:
+            raise ValueError("`pose` needs a model loaded with `pose=True`")
+        else:
+            physical.pop("pose", None)
+        return self.check_state(build(**physical))
+
+    def dissipated_power(self, y, p) -> float | np.ndarray:
+        """Power dissipated by the model's non-conservative forces; ``y`` as in :meth:`energy`."""
+        power = getattr(self.module, "dissipated_power", None)
+        if power is None:
+            raise ValueError(f"{self.name} at fidelity {self.fidelity!r} is conservative: no dissipated power")
+        y = np.asarray(y, dtype=float)
+        p = np.asarray(p, dtype=float)
+        if y.ndim == 1:
+            return float(power(y, p))
+        return np.array([power(np.ascontiguousarray(y[:, k]), p) for k in range(y.shape[1])])
 
     def check_params(self, p) -> np.ndarray:
         """Validate a parameter vector or mapping; returns a float64 array."""
@@ -112,7 +162,7 @@ class Model:
             )
         values = arr.tolist()
         for n, v in zip(self.param_names, values):
-            if not math.isfinite(v) or (n not in SIGNED_PARAMS and not v > 0):
+            if not math.isfinite(v) or not _admissible(v, self.param_domains[n]):
                 return self.params(dict(zip(self.param_names, values)))  # raises, naming the parameter
         return np.array(values)
 
@@ -179,6 +229,10 @@ class Model:
         if not self.pose:
             raise ValueError("pose_rates needs the pose: load the model with `pose=True`")
         return self.module.pose_rates(np.asarray(y, dtype=float), np.asarray(p, dtype=float))
+
+
+def _admissible(v: float, domain: str) -> bool:
+    return v > 0 if domain == "positive" else v >= 0 if domain == "nonnegative" else True
 
 
 def _finite_float(v, what: str) -> float:
