@@ -219,9 +219,12 @@ class RollingSystem(ReducedSystem):
     """A derived :class:`RigidBody`: a :class:`~derivation.engine.ReducedSystem` plus rigid-body data.
 
     Extra attributes: ``body``; ``contact`` (``r(n)``); ``height`` (``z(n)``);
-    ``lagrangian_body`` (``L(V, omega, n, z)``); ``mass_matrix_omega`` and
-    ``forcing_omega`` (``M domega/dt = f``); ``power`` (power dissipated,
-    ``sigma |omega|^2``); ``omega_dot`` (the closed-form solution).
+    ``power`` (power dissipated,
+    ``sigma |omega|^2``); ``omega_dot`` (the closed-form solution).  As in
+    every reduced system, ``mass_matrix @ explicit = forcing`` with
+    ``accelerations`` the symbols of ``domega/dt``; :meth:`state_rhs` adds
+    ``dn/dt = n x omega`` and the rate of the vertical spin ``omega_n``
+    (``omega . dn/dt = 0``, so it is ``domega/dt . n``).
     """
 
     body: RigidBody | None = None
@@ -231,7 +234,8 @@ class RollingSystem(ReducedSystem):
     omega_dot: sp.Matrix | None = None
 
     def state_rhs(self) -> list:
-        return list(self.explicit)
+        """Rates of the closed state: ``dn/dt = n x omega``, ``domega/dt``, ``d(omega.n)/dt = domega/dt . n``."""
+        return [*N_VEC.cross(OMEGA), *self.explicit, self.explicit.dot(N_VEC)]
 
 
 def _solve3(A: sp.Matrix, b: sp.Matrix) -> sp.Matrix:
@@ -329,9 +333,6 @@ def derive(body: RigidBody) -> RollingSystem:
     M, f = parts["mass_matrix"], parts["forcing"]
     omega_dot = _solve3(M, f)
     wd = parts["omega_dot_symbols"]
-    n_dot = N_VEC.cross(OMEGA)
-    spin_rate = omega_dot.dot(N_VEC)  # omega . dn/dt = 0
-    explicit = sp.Matrix([*n_dot, *omega_dot, spin_rate])
     force = parts["force"].xreplace(dict(zip(wd, omega_dot)))
     energy = parts["kinetic"] + body.mass * body.gravity * parts["height"]
     psi_dot, x_dot, y_dot = heading_rates(body, parts["velocity"])
@@ -342,7 +343,7 @@ def derive(body: RigidBody) -> RollingSystem:
         accelerations=tuple(wd),
         mass_matrix=M,
         forcing=f,
-        explicit=explicit,
+        explicit=omega_dot,
         multipliers=force,
         multipliers_implicit=parts["force"],
         energy=energy,

@@ -5,6 +5,7 @@ import pytest
 import sympy as sp
 
 from derivation import emit, engine, models
+from derivation.rigid import RollingSystem
 from derivation.truncation import ORDER
 from derivation.verify import is_zero, tilt_order
 
@@ -34,7 +35,7 @@ def test_reduced_fidelity_is_the_degree_2_truncation(name, systems):
 
 def test_mass_matrix_and_explicit_forms_agree(systems):
     for (name, fid), s in systems.items():
-        if fid != "full":
+        if fid != "full" or isinstance(s, RollingSystem):  # rigid bodies (square roots): test_rigid.py, numerically
             continue
         residual = s.mass_matrix * s.explicit - s.forcing
         assert all(is_zero(e) for e in residual), name

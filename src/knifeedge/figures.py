@@ -18,7 +18,8 @@ from .scenes import SCENE_NAMES, get_scene
 from .scenes.base import format_number
 
 #: heaviest first, so that the parallel run ends sooner
-_ORDER = ("numerical2", "model_fidelity", "tinversion", "table_path", "ellipses", "amplitudes", "numerical")
+_ORDER = ("numerical2", "model_fidelity", "tinversion", "celt", "table_path", "ellipses", "celt_schoemer", "amplitudes",
+          "numerical")
 
 
 def render_scene(name: str, out_dir: str) -> dict:
