@@ -133,9 +133,10 @@ class ReducedSystem:
         """Right-hand side of ``d(state)/dt`` as a list of expressions."""
         spec = self.spec
         tilts = [q for q in spec.independent if q not in spec.cyclic]
+        spins = [q for q in spec.independent if q in spec.cyclic]
         rates = [spec.velocity_of(q) for q in tilts]
-        n_t = len(tilts)
-        return rates + list(self.explicit[:n_t]) + list(self.explicit[n_t:])
+        # ``explicit`` follows the order of ``spec.independent``, which may interleave tilts and spins
+        return rates + [self.explicit[spec.independent.index(q)] for q in tilts + spins]
 
 
 def _lagrange_terms(spec: ModelSpec):
@@ -182,15 +183,20 @@ def tidy(e: sp.Expr, variables) -> sp.Expr:
     """Cheap normal form of a rational function of the state.
 
     The numerator and denominator are expanded as polynomials in
-    ``variables`` and only their coefficients (small expressions in the
+    ``variables`` (and in the trigonometric functions of them) and only their coefficients (small expressions in the
     parameters and in trigonometric functions of constant angles) are
     simplified.  Simplifying small pieces keeps the derivation fast.
     """
     num, den = sp.fraction(sp.together(e))
     out = []
     for part in (num, den):
-        poly = sp.Poly(sp.expand(part), *variables)
-        out.append(sum((_trig_tidy(c) * sp.Mul(*(v**k for v, k in zip(variables, m))) for m, c in poly.terms()), sp.S.Zero))
+        part = sp.expand(part)
+        # trigonometric functions of the state (a lean angle inside sin/cos) are generators too
+        trig = sorted((f for f in part.atoms(sp.sin, sp.cos, sp.tan) if f.free_symbols & set(variables)),
+                      key=sp.default_sort_key)
+        gens = list(variables) + trig
+        poly = sp.Poly(part, *gens)
+        out.append(sum((_trig_tidy(c) * sp.Mul(*(v**k for v, k in zip(gens, m))) for m, c in poly.terms()), sp.S.Zero))
     return sp.factor_terms(out[0]) / sp.factor_terms(out[1])
 
 

@@ -12,6 +12,7 @@ from collections.abc import Mapping
 
 import numpy as np
 
+from . import _validate
 from .generated import MODULES
 
 MODEL_NAMES = tuple(sorted({m for m, _ in MODULES}))
@@ -236,20 +237,12 @@ def _admissible(v: float, domain: str) -> bool:
 
 
 def _finite_float(v, what: str) -> float:
-    if isinstance(v, bool) or not isinstance(v, (int, float, np.integer, np.floating)):
-        raise TypeError(f"{what} must be a real number, got {type(v).__name__} {v!r}")
-    v = float(v)
-    if not math.isfinite(v):
-        raise ValueError(f"{what} must be finite, got {v!r}")
-    return v
+    return _validate.finite(v, what)
 
 
 def _float_array(v, what: str) -> np.ndarray:
-    try:
-        arr = np.asarray(v, dtype=float)
-    except (TypeError, ValueError):
-        raise TypeError(f"{what} must be an array of real numbers or a mapping of names to numbers") from None
-    return arr
+    """Array of real numbers by the same rule as the mapping form (no bool, complex or strings)."""
+    return _validate.real_array(v, what)
 
 
 _CACHE: dict = {}

@@ -16,11 +16,17 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from . import _validate
 from .integrators import ALIASES, COMPILED_METHODS, Status, from_code, kernel
 from .models import Model
 
 #: the smallest relative tolerance accepted: below it the error estimate is round-off
 MIN_RTOL = 100 * np.finfo(float).eps
+#: tolerances must be below one: an error the size of the state controls nothing
+MAX_TOL = 1.0
+#: most output times `t_eval` may hold (8 MB per state)
+MAX_T_EVAL = 10_000_000
+MAX_STEPS_LIMIT = 2**63 - 1
 ERROR_CONTROLS = ("component", "mode")
 
 
@@ -170,10 +176,9 @@ for _m in SCIPY_METHODS:
 
 
 def _check_t_span(t_span) -> tuple:
-    try:
-        t0, t1 = (float(v) for v in t_span)
-    except (TypeError, ValueError):
-        raise TypeError(f"`t_span` must be a pair (t0, t1) of numbers, got {t_span!r}") from None
+    if isinstance(t_span, (str, bytes)) or not hasattr(t_span, "__len__") or len(t_span) != 2:
+        raise TypeError(f"`t_span` must be a pair (t0, t1) of numbers, got {t_span!r}")
+    t0, t1 = (_validate.real(v, "each end of `t_span`") for v in t_span)
     if not (math.isfinite(t0) and math.isfinite(t1)):
         raise ValueError(f"`t_span` must be finite, got {t_span!r}")
     if not t1 > t0:
@@ -182,38 +187,76 @@ def _check_t_span(t_span) -> tuple:
 
 
 def _check_positive(v, name: str) -> float:
-    if isinstance(v, bool) or not isinstance(v, (int, float, np.integer, np.floating)):
-        raise TypeError(f"`{name}` must be a positive number, got {v!r}")
-    v = float(v)
+    v = _validate.real(v, f"`{name}`")
     if not (math.isfinite(v) and v > 0):
         raise ValueError(f"`{name}` must be positive and finite, got {v!r}")
     return v
 
 
+def _check_rtol(rtol) -> float:
+    rtol = _check_positive(rtol, "rtol")
+    if rtol < MIN_RTOL:
+        raise ValueError(f"`rtol` must be at least {MIN_RTOL:.3g} (100 machine epsilons): below it round-off "
+                         f"dominates the error estimate; got {rtol!r}")
+    if rtol >= MAX_TOL:
+        raise ValueError(f"`rtol` must be less than {MAX_TOL:g}: a relative error of {rtol!r} or more leaves no "
+                         f"significant digit and the step-size control nothing to control")
+    return rtol
+
+
 def _check_atol(atol, n: int) -> np.ndarray:
-    if type(atol) is float and math.isfinite(atol) and atol > 0:  # the common case, without numpy's overhead
+    if type(atol) is float and 0 < atol < MAX_TOL:  # the common case, without numpy's overhead
         return np.full(n, atol)
-    if isinstance(atol, (bool, str)):
-        raise TypeError(f"`atol` must be a positive number or an array of shape ({n},), got {atol!r}")
-    try:
-        arr = np.asarray(atol, dtype=float)
-    except (TypeError, ValueError):
-        raise TypeError(f"`atol` must be a positive number or an array of shape ({n},), got {atol!r}") from None
-    if arr.ndim == 0:
-        arr = np.full(n, float(arr))
+    if isinstance(atol, (list, tuple)) or isinstance(atol, np.ndarray) and atol.ndim > 0:
+        arr = _validate.real_array(atol, "`atol`")
+    else:
+        arr = np.full(n, _validate.real(atol, "`atol`"))
     if arr.shape != (n,):
         raise ValueError(f"`atol` must be a number or have shape ({n},) (one per state), got shape {arr.shape}")
     if not all(math.isfinite(v) and v > 0 for v in arr.tolist()):
         raise ValueError(f"`atol` must be positive and finite, got {atol!r}")
+    if not all(v < MAX_TOL for v in arr.tolist()):
+        raise ValueError(f"`atol` must be less than {MAX_TOL:g} (the states are angles in rad and rates in "
+                         f"sqrt(g/ell): an absolute error of one or more leaves no significant digit); got {atol!r}")
     return np.ascontiguousarray(arr)
 
 
+def _check_t_eval(t_eval, t0: float, t1: float) -> np.ndarray:
+    arr = _validate.real_array(t_eval, "`t_eval`")
+    if arr.ndim != 1:
+        raise ValueError(f"`t_eval` must be a 1-D array of times, got shape {arr.shape}")
+    if arr.size > MAX_T_EVAL:
+        raise ValueError(f"`t_eval` has {arr.size} times, more than the {MAX_T_EVAL} allowed")
+    if not np.isfinite(arr).all() or (arr[1:] <= arr[:-1]).any() or (arr.size and (arr[0] < t0 or arr[-1] > t1)):
+        raise ValueError("`t_eval` must be a finite, strictly increasing 1-D array inside `t_span`")
+    return arr
+
+
+def _check_max_step(v) -> float:
+    v = _validate.real(v, "`max_step`")
+    if v == math.inf:
+        return v
+    return _check_positive(v, "max_step")
+
+
 def _check_max_steps(v) -> int:
-    if isinstance(v, bool) or not isinstance(v, (int, np.integer)):
+    if isinstance(v, (bool, np.bool_)) or not isinstance(v, (int, np.integer)):
         raise TypeError(f"`max_steps` must be a positive integer, got {v!r}")
     if v < 1:
         raise ValueError(f"`max_steps` must be a positive integer, got {v!r}")
+    if v > MAX_STEPS_LIMIT:
+        raise ValueError(f"`max_steps` must be at most 2**63 - 1 (a 64-bit step counter), got {v!r}")
     return int(v)
+
+
+def _check_fixed_step(h, t0: float, t1: float) -> float:
+    """A fixed step must advance t: at least 10 ulps of t (which also keeps the step count in 64 bits)."""
+    h = _check_positive(h, "h")
+    resolution = 10 * float(np.spacing(max(abs(t0), abs(t1))))
+    if h <= resolution:
+        raise ValueError(f"`h` = {h!r} is below the resolution of t over `t_span` ({resolution:.3g}, 10 ulps): "
+                         f"the steps would not advance t")
+    return h
 
 
 def simulate(
@@ -271,17 +314,12 @@ def simulate(
     y0 = model.check_state(y0)
     p = model.check_params(p)
     t0, t1 = _check_t_span(t_span)
-    rtol = _check_positive(rtol, "rtol")
-    if rtol < MIN_RTOL:
-        raise ValueError(f"`rtol` must be at least {MIN_RTOL:.3g} (100 machine epsilons): below it round-off "
-                         f"dominates the error estimate; got {rtol!r}")
+    rtol = _check_rtol(rtol)
     atol = _check_atol(atol, model.n_state)
     if t_eval is not None:
-        t_eval = np.asarray(t_eval, dtype=float)
-        if t_eval.ndim != 1 or not np.isfinite(t_eval).all() or (t_eval[1:] <= t_eval[:-1]).any() \
-                or (t_eval.size and (t_eval[0] < t0 or t_eval[-1] > t1)):
-            raise ValueError("`t_eval` must be a finite, strictly increasing 1-D array inside `t_span`")
-    max_step = _check_positive(max_step, "max_step") if max_step != math.inf else math.inf
+        t_eval = _check_t_eval(t_eval, t0, t1)
+    max_step = math.inf if type(max_step) is float and max_step == math.inf else _check_max_step(max_step)
+    max_steps = _check_max_steps(max_steps)
     spec = COMPILED_METHODS.get(ALIASES.get(method, method))
     fixed = spec is not None and spec.fixed_step
     if fixed and h is None:
@@ -289,8 +327,7 @@ def simulate(
     if not fixed and h is not None:
         raise ValueError(f"`h` is the step of a fixed-step method; {method!r} chooses its own steps (use `rtol`)")
     if h is not None:
-        h = _check_positive(h, "h")
-    max_steps = _check_max_steps(max_steps)
+        h = _check_fixed_step(h, t0, t1)
     if error_control not in ERROR_CONTROLS:
         raise ValueError(f"unknown `error_control` {error_control!r}; accepted: {', '.join(ERROR_CONTROLS)}")
     if error_control != "component" and (spec is None or fixed):
