@@ -354,3 +354,75 @@ def derive(body: RigidBody) -> RollingSystem:
         power=(body.sigma or sp.S.Zero) * OMEGA.dot(OMEGA),
         omega_dot=omega_dot,
     )
+
+
+#: Euler angles of :func:`euler_angle_spec`: R = Rz(psi) Rx(a1) Ry(a2) (body to space)
+a1, a2 = sp.symbols("a1 a2", real=True)
+psi_dot, a1_dot, a2_dot, x_dot, y_dot = sp.symbols("psi_dot a1_dot a2_dot x_dot y_dot", real=True)
+psi_ddot, a1_ddot, a2_ddot, x_ddot, y_ddot = sp.symbols("psi_ddot a1_ddot a2_ddot x_ddot y_ddot", real=True)
+
+
+def euler_angle_maps() -> tuple:
+    """``(R, n, B)`` for the angles of :func:`euler_angle_spec`: rotation body -> space, the upward
+    vertical in body axes and ``B`` with ``omega = B (psi_dot, a1_dot, a2_dot)`` (body axes).
+
+    ``n = (-sin(a2) cos(a1), sin(a1), cos(a2) cos(a1))``; ``B`` is singular at ``a1 = +-pi/2``.
+    """
+    def rx(q):
+        return sp.Matrix([[1, 0, 0], [0, sp.cos(q), -sp.sin(q)], [0, sp.sin(q), sp.cos(q)]])
+
+    def ry(q):
+        return sp.Matrix([[sp.cos(q), 0, sp.sin(q)], [0, 1, 0], [-sp.sin(q), 0, sp.cos(q)]])
+
+    def rz(q):
+        return sp.Matrix([[sp.cos(q), -sp.sin(q), 0], [sp.sin(q), sp.cos(q), 0], [0, 0, 1]])
+
+    ez, ex, ey = sp.Matrix([0, 0, 1]), sp.Matrix([1, 0, 0]), sp.Matrix([0, 1, 0])
+    R = rz(psi) * rx(a1) * ry(a2)
+    n = ry(a2).T * rx(a1).T * ez
+    B = sp.Matrix.hstack(ry(a2).T * rx(a1).T * ez, ry(a2).T * ex, ey)
+    return R, n, B
+
+
+def euler_angle_spec(body: RigidBody) -> ModelSpec:
+    """The same body as an engine :class:`ModelSpec` in Euler angles (Lagrange multipliers).
+
+    Coordinates ``(x, y, psi, a1, a2)``: the horizontal position of the centre
+    of mass and the angles of :func:`euler_angle_maps`.  The height of the
+    centre of mass is the holonomic ``z(n(a)) = -r.n``, substituted into the
+    Lagrangian ``L = m |v|^2/2 + omega.I omega/2 - m g z``; the rolling
+    constraints are the horizontal components of ``v + omega x r = 0`` in
+    space axes.  :func:`derivation.engine.unreduced_accelerations` solves its
+    Lagrange equations with multipliers at a numeric point: an independent
+    route to the accelerations of :func:`derive` (the tests compare them).
+    Dissipation is not included (``sigma`` must be ``None`` or zero).
+    """
+    if body.sigma not in (None, 0):
+        raise ValueError("euler_angle_spec: conservative bodies only (sigma = 0)")
+    R, n, B = euler_angle_maps()
+    q_ang = sp.Matrix([psi, a1, a2])
+    qd_ang = sp.Matrix([psi_dot, a1_dot, a2_dot])
+    w = B * qd_ang
+    r = body.shape.lowest_point(n)
+    z = -r.dot(n)
+    z_dot = (sp.Matrix([z]).jacobian(q_ang) * qd_ang)[0]
+    I = sp.Matrix(body.inertia)
+    m, g = body.mass, body.gravity
+    lag = m * (x_dot**2 + y_dot**2 + z_dot**2) / 2 + (w.T * I * w)[0] / 2 - m * g * z
+    slip = R * w.cross(r)  # velocity of the contact point relative to the centre of mass, space axes
+    constraints = (x_dot + slip[0], y_dot + slip[1])
+    return ModelSpec(
+        name=f"{body.name}_euler",
+        coordinates=(x, y, psi, a1, a2),
+        velocities=(x_dot, y_dot, psi_dot, a1_dot, a2_dot),
+        accelerations=(x_ddot, y_ddot, psi_ddot, a1_ddot, a2_ddot),
+        lagrangian=lag,
+        constraints=constraints,
+        constraint_labels=("rolling_x", "rolling_y"),
+        dependent=(x, y),
+        cyclic={x: 0, y: 0, psi: 0},
+        small=(a1, a2),
+        params=tuple(body.params),
+        pose=(psi, x, y),
+        description=f"{body.name} in Euler angles (Lagrange multipliers), for cross-checks",
+    )
