@@ -124,8 +124,8 @@ Parameter vector ``p``:
 {par_doc}
 Presets:
 {preset_doc}
-Multipliers: the contact force on the body in body axes [N], {", ".join(spec.constraint_labels)}.
-Energy in J; ``dissipated_power`` in W.
+Multipliers: the contact force on the body in body axes, {", ".join(spec.constraint_labels)}.
+Energy and ``dissipated_power`` in the units of the parameters (J and W for SI parameters).
 """
 import math
 
@@ -171,7 +171,7 @@ def pose_rates(s, p):
 
 @njit(cache=True)
 def energy(s, p):
-    """Mechanical energy [J] ({energy_ops} operations)."""
+    """Mechanical energy ({energy_ops} operations)."""
 {nl.join(unpack_s)}
 {nl.join(unpack_p)}
 {nl.join(energy_lines)}
@@ -180,7 +180,7 @@ def energy(s, p):
 
 @njit(cache=True)
 def dissipated_power(s, p):
-    """Power dissipated by the damping torque [W] ({power_ops} operations)."""
+    """Power dissipated by the damping torque ({power_ops} operations)."""
 {nl.join(unpack_s)}
 {nl.join(unpack_p)}
 {nl.join(power_lines)}
@@ -189,7 +189,7 @@ def dissipated_power(s, p):
 
 @njit(cache=True)
 def multipliers(s, p):
-    """Contact force on the body in body axes [N] ({lam_ops} operations)."""
+    """Contact force on the body in body axes ({lam_ops} operations)."""
     out = np.empty({len(lam)})
 {nl.join(unpack_s)}
 {nl.join(unpack_p)}

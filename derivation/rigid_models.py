@@ -2,5 +2,6 @@
 from __future__ import annotations
 
 from .celt import celt
+from .rigid_knife_edge import knife_edge_body
 
-MODELS = {"celt": celt()}
+MODELS = {"celt": celt(), "two_mode_rigid": knife_edge_body()}

@@ -14,4 +14,5 @@ MODULES = {
     ('two_mode', 'amplitude'): 'two_mode_amplitude',
     ('two_mode', 'full'): 'two_mode_full',
     ('two_mode', 'reduced'): 'two_mode_reduced',
+    ('two_mode_rigid', 'full'): 'two_mode_rigid_full',
 }

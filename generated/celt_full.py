@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/rigid_emit.py (make derive) from the rigid body 'celt'
 through derivation/rigid.py (Lagrange-d'Alembert in body quasi-velocities).
-SymPy 1.14.0; input hash sha256:e8283c58fd7fa21a9b1c1575cf6caec59655fe7b4e09c02ff07a987b89593829
+SymPy 1.14.0; input hash sha256:f74b876cb8419425687d77ee2f12a79cbea6f2d5e15e84b590b0f8128af04ab7
 
 Classical rattleback (celt): a rigid body with an ellipsoidal bottom (semi-axes a, b, c along the body axes x, y, z; centre of mass a distance h below the ellipsoid's centre), inertia tensor about the centre of mass with entries I_xx..I_yz in body axes, rolling without slipping on a horizontal table under gravity g, dissipation torque -sigma*omega.  State: upward vertical n and angular velocity omega in body axes, vertical spin omega_n = omega.n; pose: heading psi of the body x axis, centre of mass (x, y).
 
@@ -36,8 +36,8 @@ Parameter vector ``p``:
 Presets:
     kane_levinson_1982: Kane & Levinson, Int. J. Non-Linear Mech. 17 (1982) 175-186
     schoemer: E. Schoemer's rattleback (golden-ratio ellipsoid)
-Multipliers: the contact force on the body in body axes [N], contact_force_x, contact_force_y, contact_force_z.
-Energy in J; ``dissipated_power`` in W.
+Multipliers: the contact force on the body in body axes, contact_force_x, contact_force_y, contact_force_z.
+Energy and ``dissipated_power`` in the units of the parameters (J and W for SI parameters).
 """
 import math
 
@@ -62,7 +62,7 @@ PRESETS = {'kane_levinson_1982': {'a': 0.2, 'b': 0.03, 'c': 0.02, 'h': 0.01, 'm'
 PRESET_SOURCES = {'kane_levinson_1982': 'Kane & Levinson, Int. J. Non-Linear Mech. 17 (1982) 175-186', 'schoemer': "E. Schoemer's rattleback (golden-ratio ellipsoid)"}
 #: the model file the body comes from
 SOURCE = 'derivation.celt'
-INPUT_HASH = 'e8283c58fd7fa21a9b1c1575cf6caec59655fe7b4e09c02ff07a987b89593829'
+INPUT_HASH = 'f74b876cb8419425687d77ee2f12a79cbea6f2d5e15e84b590b0f8128af04ab7'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 247, 'constants': 23, 'rhs_q': 250, 'rhs_pose': 285, 'rhs_pose_q': 286, 'pose_rates': 71, 'energy': 72, 'multipliers': 265, 'dissipated_power': 6}
@@ -672,7 +672,7 @@ def pose_rates(s, p):
 
 @njit(cache=True)
 def energy(s, p):
-    """Mechanical energy [J] (72 operations)."""
+    """Mechanical energy (72 operations)."""
     n_x = s[0]
     n_y = s[1]
     n_z = s[2]
@@ -708,7 +708,7 @@ def energy(s, p):
 
 @njit(cache=True)
 def dissipated_power(s, p):
-    """Power dissipated by the damping torque [W] (6 operations)."""
+    """Power dissipated by the damping torque (6 operations)."""
     n_x = s[0]
     n_y = s[1]
     n_z = s[2]
@@ -735,7 +735,7 @@ def dissipated_power(s, p):
 
 @njit(cache=True)
 def multipliers(s, p):
-    """Contact force on the body in body axes [N] (265 operations)."""
+    """Contact force on the body in body axes (265 operations)."""
     out = np.empty(3)
     n_x = s[0]
     n_y = s[1]

@@ -18,7 +18,7 @@ from .scenes import SCENE_NAMES, get_scene
 from .scenes.base import format_number
 
 #: heaviest first, so that the parallel run ends sooner
-_ORDER = ("numerical2", "model_fidelity", "tinversion", "celt", "table_path", "ellipses", "celt_schoemer", "amplitudes",
+_ORDER = ("numerical2", "knife_edge_rigid", "model_fidelity", "tinversion", "celt", "table_path", "ellipses", "celt_schoemer", "amplitudes",
           "numerical")
 
 
