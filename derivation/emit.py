@@ -18,7 +18,7 @@ from pathlib import Path
 import sympy as sp
 from sympy.printing.pycode import PythonCodePrinter
 
-from . import averaging, engine, models, truncation
+from . import averaging, drawing, engine, models, truncation
 from .averaging import AmplitudeSystem
 
 GENERATOR = "derivation/emit.py (make derive)"
@@ -56,6 +56,7 @@ def input_hash(spec: engine.ModelSpec, fidelity: str) -> str:
         Path(__file__).read_text(),
         *((inspect.getsource(averaging),) if fidelity == "amplitude" else ()),
         *(sp.srepr(e) for _, _, e in spec.quasi_velocities),
+        *((drawing.source_text(),) if fidelity != "amplitude" else ()),
     ):
         h.update(part.encode())
         h.update(b"\0")
@@ -323,7 +324,7 @@ def multipliers(s, p):
 {nl.join(unpack_p)}
 {nl.join(lam_lines)}
     return out
-'''
+''' + drawing.module_source(system)
 
 
 def _coefficient_block(name: str, exprs, params, doc: str) -> tuple[str, int]:

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:381e57301bdd3406ed187d7e2102234f45cc7f9ee189546e0608746309c9ea88
+SymPy 1.14.0; input hash sha256:514dc04cbb045f5c00b9bc78f7911ca22a65a0dd9d02732d6be2c0f00311b176
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -42,7 +42,7 @@ SPIN_NAME = 'A_phi'
 MULTIPLIER_NAMES = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy',)
-INPUT_HASH = '381e57301bdd3406ed187d7e2102234f45cc7f9ee189546e0608746309c9ea88'
+INPUT_HASH = '514dc04cbb045f5c00b9bc78f7911ca22a65a0dd9d02732d6be2c0f00311b176'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 10, 'constants': 6, 'rhs_q': 4, 'energy': 9, 'invariants': 9, 'frequencies': 5, 'growth_rates': 2, 'drive_rates': 5}

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:a67226654018d4396bcd97a33d81c7390f65758f91326ec5ae276128714342c0
+SymPy 1.14.0; input hash sha256:e5a508cfe7e84754c33e2c30ac2d9b65af7829946ac83e5ea053b092cdd40741
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -46,7 +46,7 @@ SPIN_NAME = 'A_phi'
 MULTIPLIER_NAMES = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy', 'log_A1_A2')
-INPUT_HASH = 'a67226654018d4396bcd97a33d81c7390f65758f91326ec5ae276128714342c0'
+INPUT_HASH = 'e5a508cfe7e84754c33e2c30ac2d9b65af7829946ac83e5ea053b092cdd40741'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 24, 'constants': 14, 'rhs_q': 10, 'energy': 12, 'invariants': 19, 'frequencies': 12, 'growth_rates': 11, 'drive_rates': 12}

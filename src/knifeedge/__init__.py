@@ -16,7 +16,9 @@ from .simulate import METHODS, SimulationResult, simulate
 from .scenes import RunSpec, Scene, get_scene as scene, scene_names
 from .sweep import SweepTable, sweep
 from .reversal import ReversalPrediction, reversal_time
+from .animation import animate
 
 __version__ = "0.1.0"
 __all__ = ["load", "simulate", "Model", "SimulationResult", "METHODS", "MODEL_NAMES", "FIDELITIES",
-           "sweep", "SweepTable", "scene", "scene_names", "Scene", "RunSpec", "reversal_time", "ReversalPrediction"]
+           "sweep", "SweepTable", "scene", "scene_names", "Scene", "RunSpec", "reversal_time", "ReversalPrediction",
+           "animate"]
