@@ -17,7 +17,7 @@ from pathlib import Path
 
 import sympy as sp
 
-from . import emit, rigid
+from . import drawing, emit, rigid
 from .emit import _cse_block, _rhs_source, _unpack
 
 
@@ -30,7 +30,7 @@ def input_hash(system: rigid.RollingSystem, fidelity: str) -> str:
         spec.name, fidelity, sp.__version__, sp.srepr(spec.lagrangian), *(sp.srepr(c) for c in spec.constraints),
         sp.srepr(sp.Matrix(body.inertia)), sp.srepr(body.sigma), repr(sorted(body.presets.items())),
         inspect.getsource(rigid), inspect.getsource(model_file) if model_file else "", Path(__file__).read_text(),
-        Path(emit.__file__).read_text(), repr(sorted(body.param_units.items())),
+        Path(emit.__file__).read_text(), drawing.source_text(), repr(sorted(body.param_units.items())),
         repr(sorted(body.param_domains.items())), body.description,
     ):
         h.update(part.encode())
@@ -195,4 +195,4 @@ def multipliers(s, p):
 {nl.join(unpack_p)}
 {nl.join(lam_lines)}
     return out
-{_INITIAL_STATE.format(n=n, n_pose=n + npose)}'''
+{_INITIAL_STATE.format(n=n, n_pose=n + npose)}''' + drawing.module_source(system)
