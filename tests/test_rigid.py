@@ -358,3 +358,15 @@ def test_knife_edge_rigid_scene_reports_the_comparison():
     assert set(res.scene.reports) <= set(res.numbers)
     assert math.isnan(res.numbers["period_within_1pct_up_to_D0.5"])
     assert res.numbers["reversal_time_within_1pct_up_to_D0.05"] >= 0.1
+
+
+def test_knife_edge_vs_celt_scene_measures_the_spin_dependence():
+    """Scene knife_edge_vs_celt: the knife edge's reversal shortens with spin (paper Eq. tr), the
+    Kane & Levinson celt's lengthens over 1-5 rad/s; the reported exponents are those of the reported times."""
+    from knifeedge.scenes.common import fit_power_law
+
+    res = ke.scene("knife_edge_vs_celt")()
+    assert set(res.scene.reports) <= set(res.numbers)
+    for body, sign in (("knife_edge", -1), ("celt", 1)):
+        k, _, _ = fit_power_law(res.numbers[f"spins_{body}"], res.numbers[f"first_reversal_{body}"])
+        assert k == pytest.approx(res.numbers[f"exponent_{body}"]) and np.sign(k) == sign

@@ -2,7 +2,7 @@
 
 >>> import knifeedge as ke
 >>> ke.scene_names()
-('numerical', 'amplitudes', 'ellipses', 'numerical2', 'tinversion', 'table_path', 'model_fidelity', 'celt', 'celt_schoemer', 'knife_edge_rigid')
+('numerical', 'amplitudes', 'ellipses', 'numerical2', 'tinversion', 'table_path', 'model_fidelity', 'celt', 'celt_schoemer', 'knife_edge_rigid', 'knife_edge_vs_celt')
 >>> s = ke.scene("numerical")          # the paper's Fig. 'numerical'
 >>> s.run.model, s.run.fidelity
 ('single_mode', 'reduced')
@@ -17,7 +17,7 @@ from .base import RUN_SETTINGS, RunSpec, Scene, SceneResult
 #: scene names in the paper's order, then the classical rattleback (issue "rigid bodies");
 #: each is a module of this package defining ``SCENE``
 SCENE_NAMES = ("numerical", "amplitudes", "ellipses", "numerical2", "tinversion", "table_path", "model_fidelity",
-               "celt", "celt_schoemer", "knife_edge_rigid")
+               "celt", "celt_schoemer", "knife_edge_rigid", "knife_edge_vs_celt")
 
 
 def scene_names() -> tuple:
