@@ -107,9 +107,9 @@ def test_sweep_command_resumes_from_its_file(capsys, tmp_path):
             "--out", str(out_file)]
     rc, out, err = run(capsys, *argv)
     assert rc == 0, err
-    assert "2 runs (2 computed, 0 read back" in out
+    assert "2 runs: 2 computed, 0 read back" in out
     rc, out, err = run(capsys, *argv)
-    assert "2 runs (0 computed, 2 read back" in out
+    assert "2 runs: 0 computed, 2 read back" in out
 
 
 def test_figures_command_writes_pngs_and_an_index(capsys, tmp_path):

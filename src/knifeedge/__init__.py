@@ -13,7 +13,8 @@ integrates them and never imports SymPy.
 """
 from .models import FIDELITIES, MODEL_NAMES, Model, load
 from .simulate import METHODS, SimulationResult, simulate
-from .scenes import RunSpec, Scene, get_scene as scene, scene_names
+from .runspec import RunSpec
+from .scenes import Scene, get_scene as scene, scene_names
 from .sweep import SweepTable, sweep
 from .reversal import ReversalPrediction, reversal_time
 from .animation import animate

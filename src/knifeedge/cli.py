@@ -444,8 +444,11 @@ def _sweep_args(sub: argparse.ArgumentParser) -> None:
                           "Cartesian product; NAME=START:STOP:N is N geometrically spaced values")
     sub.add_argument("--set", nargs="+", action="extend", default=[], metavar="NAME=VALUE",
                      help="change the base run (parameters, initial state, rtol, atol, t_end)")
-    sub.add_argument("--out", type=Path, help="results file (.csv or .jsonl), appended run by run; resumed if it exists")
-    sub.add_argument("--fresh", action="store_true", help="overwrite --out instead of resuming from it")
+    sub.add_argument("--out", type=Path,
+                     help="results store: NAME.sqlite (SQLite, one row per run, committed as each run finishes), or "
+                          "NAME.csv / NAME.jsonl (a text export of the rows, kept in NAME.sqlite); an existing store "
+                          "is resumed, and sweeps running at once on one store share the work")
+    sub.add_argument("--fresh", action="store_true", help="recompute the runs already in --out (and replace them)")
     sub.add_argument("--workers", type=int, help="local processes (default: all cores)")
     sub.add_argument("--dask", metavar="ADDRESS",
                      help="run on a Dask cluster: a scheduler address (tcp://host:8786), or 'local' for a LocalCluster")
@@ -453,19 +456,19 @@ def _sweep_args(sub: argparse.ArgumentParser) -> None:
 
 @command("sweep", "run a scene over a grid of parameters / initial states; a tidy table, resumable, local or on Dask")
 def sweep_cmd(args) -> int:
+    import warnings
+
     from .scenes import get_scene
     from .sweep import sweep
 
     if args.workers is not None and args.workers < 1:
         raise ValueError(f"`--workers` must be at least 1, got {args.workers}")
-    if args.out is not None and args.out.suffix.lower() not in (".csv", ".jsonl"):
-        raise ValueError(f"`--out` must end in .csv or .jsonl, got {args.out.name!r}")
     scene = get_scene(args.scene, **assignments(args.set))
     grid = grid_assignments(args.grid)
     n_runs = math.prod(len(v) for v in grid.values())
     if n_runs > MAX_SWEEP_RUNS:
         raise ValueError(f"`--grid` makes {n_runs:.3g} runs, more than the {MAX_SWEEP_RUNS} one sweep may start")
-    client = None
+    client = cluster = None
     try:
         executor = None
         if args.dask:
@@ -474,20 +477,33 @@ def sweep_cmd(args) -> int:
             except ImportError:
                 raise OSError("`--dask` needs the distributed package: pip install 'dask[distributed]'") from None
             if args.dask == "local":
-                client = Client(LocalCluster(n_workers=args.workers or None, threads_per_worker=1))
+                cluster = LocalCluster(n_workers=args.workers or None, threads_per_worker=1, dashboard_address=None)
+                client = Client(cluster)
             else:
                 client = Client(args.dask)
             executor = client.get_executor()
-        table = sweep(scene, grid, executor=executor, max_workers=args.workers, out=args.out, resume=not args.fresh)
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always", RuntimeWarning)
+            table = sweep(scene, grid, executor=executor, max_workers=args.workers, out=args.out,
+                          resume=not args.fresh)
     finally:
         if client is not None:
             client.close()
+        if cluster is not None:
+            cluster.close()
+    for w in caught:
+        if "have no result" not in str(w.message):  # said below
+            print(f"knifeedge sweep: warning: {w.message}", file=sys.stderr)
     print(table)
-    failed = table.failures()
-    print(f"{len(table)} runs ({table.n_computed} computed, {table.n_reused} read back from {args.out}), "
-          f"{len(failed)} failed" if args.out else f"{len(table)} runs, {len(failed)} failed")
-    for row in failed:
+    print(table.summary())
+    for row in table.failures():
         print(f"  failed run {row['run_id']}: {row['message']}")
+    for row in table.missing():
+        print(f"  no result for run {row['run_id']}: {row['message']}")
+    if table.n_missing:
+        print(f"knifeedge sweep: {table.n_missing} run(s) have no result (their worker died); run the same "
+              "command again to compute them", file=sys.stderr)
+        return 1
     return 0
 
 
