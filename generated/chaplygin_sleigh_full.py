@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'chaplygin_sleigh',
 constraints knife_edge) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:2867a8dfadb6a38ca1a02a3fae08ae82a38166e05ef0ccb678c617230302593c
+SymPy 1.14.0; input hash sha256:bdbbcdc07c76959ce83874d423b10a39becc398cde8b796ee218c5f2fa9b7393
 
 Chaplygin sleigh: a rigid body on the plane with a knife edge at its rear contact point (x, y) that forbids sideways motion; heading phi, centre of mass at distance a ahead of the contact, radius of gyration k about the centre of mass; v is the speed along the axis.
 
@@ -34,7 +34,7 @@ TILT_NAMES = ()
 #: the spin rate, whose zero crossings are the spin reversals
 SPIN_NAME = "phi_dot"
 MULTIPLIER_NAMES = ('knife_edge',)
-INPUT_HASH = '2867a8dfadb6a38ca1a02a3fae08ae82a38166e05ef0ccb678c617230302593c'
+INPUT_HASH = 'bdbbcdc07c76959ce83874d423b10a39becc398cde8b796ee218c5f2fa9b7393'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 9, 'constants': 5, 'rhs_q': 4, 'rhs_pose': 13, 'rhs_pose_q': 8, 'pose_rates': 4, 'energy': 9, 'multipliers': 6}

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:4b78d33c8e3c89b633b1b68efc82252db8f6b5eb8c6a680617b3da27181b637e
+SymPy 1.14.0; input hash sha256:8ebe206ca33e87e6e6ef73777b86e01320a8c02d980af3f6b68efa644b874aa8
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -40,7 +40,7 @@ TILT_NAMES = ('theta1', 'theta2')
 #: the spin rate, whose zero crossings are the spin reversals
 SPIN_NAME = "phi_dot"
 MULTIPLIER_NAMES = ('Const22', 'Const23')
-INPUT_HASH = '4b78d33c8e3c89b633b1b68efc82252db8f6b5eb8c6a680617b3da27181b637e'
+INPUT_HASH = '8ebe206ca33e87e6e6ef73777b86e01320a8c02d980af3f6b68efa644b874aa8'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 152, 'constants': 107, 'rhs_q': 65, 'rhs_pose': 166, 'rhs_pose_q': 76, 'pose_rates': 13, 'energy': 58, 'multipliers': 166}

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/rigid_emit.py (make derive) from the rigid body 'two_mode_rigid'
 through derivation/rigid.py (Lagrange-d'Alembert in body quasi-velocities).
-SymPy 1.14.0; input hash sha256:96e7b51515c0145ac89793a45139930753d18ee390cc35e78c192f93404ca8e5
+SymPy 1.14.0; input hash sha256:0d2dd2932cca5200664cb63fce059fd6fa84e54b63c3318279d07295a2ae2443
 
 Chiral knife edge of the paper's section III as the real rigid body: massless inverted-U bar of half-length L, masses M/2 a distance ell below its ends, contact at the lowest point of a circle of radius D in a vertical plane at the chiral angle alpha to the bar; per unit mass, exact in the tilts.
 
@@ -53,7 +53,7 @@ PRESETS = {}
 PRESET_SOURCES = {}
 #: the model file the body comes from
 SOURCE = 'derivation.rigid_knife_edge'
-INPUT_HASH = '96e7b51515c0145ac89793a45139930753d18ee390cc35e78c192f93404ca8e5'
+INPUT_HASH = '0d2dd2932cca5200664cb63fce059fd6fa84e54b63c3318279d07295a2ae2443'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 253, 'constants': 25, 'rhs_q': 221, 'rhs_pose': 293, 'rhs_pose_q': 261, 'pose_rates': 73, 'energy': 56, 'multipliers': 267, 'dissipated_power': 0}
