@@ -61,8 +61,8 @@ def _error(n, spin, want) -> float:
 def knifeedge_side(repeats: int, want) -> dict:
     """Build and generate (SymPy), first call (compile or cache load), median simulate time, error."""
     import knifeedge as ke
-    from derivation import rigid, rigid_emit
-    from derivation.celt import celt
+    from knifeedge.derive import rigid, rigid_emit
+    from knifeedge.derive.celt import celt
 
     t0 = time.perf_counter()
     system = rigid.derive(celt())

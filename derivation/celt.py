@@ -67,4 +67,5 @@ def celt() -> RigidBody:
         presets=PRESETS,
         preset_sources=PRESET_SOURCES,
         source=__name__,
+        default_state={"n0": (0.0087262, 0.0087265, 0.9999238), "omega0": (0.0, 0.0, 5.0)},
     )

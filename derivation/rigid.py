@@ -164,6 +164,8 @@ class RigidBody:
     small : state names scaled as small by truncations (reserved).
     description : one paragraph for the generated module.
     presets : ``{preset name: {parameter name: value}}`` with their sources in ``preset_sources``.
+    defaults : default parameter values (the CLI's) -- by default the first preset -- and
+        ``default_state``: ``{"n0": ..., "omega0": ...}`` for ``initial_state``.
     source : name of the module that defines the body (its text enters the input hash).
     """
 
@@ -182,6 +184,8 @@ class RigidBody:
     presets: dict = field(default_factory=dict)
     preset_sources: dict = field(default_factory=dict)
     source: str = ""
+    defaults: dict = field(default_factory=dict)
+    default_state: dict = field(default_factory=dict)
 
     def check(self) -> None:
         """Collect every problem of the description and raise one ``ValueError``."""
@@ -306,18 +310,30 @@ def heading_rates(body: RigidBody, velocity: sp.Matrix) -> tuple:
     return psi_dot, sp.cos(psi) * vx - sp.sin(psi) * vy, sp.sin(psi) * vx + sp.cos(psi) * vy
 
 
-def spec_of(body: RigidBody, parts: dict) -> ModelSpec:
-    """The engine's :class:`ModelSpec` view of a rigid body (name, parameters, pose, labels, hash input)."""
-    return ModelSpec(
+@dataclass(frozen=True)
+class RigidSpec:
+    """What the emitter reads of a rigid body (the engine's :class:`ModelSpec` fields it uses)."""
+
+    name: str
+    lagrangian: sp.Expr
+    constraints: tuple
+    constraint_labels: tuple
+    small: tuple
+    params: tuple
+    pose: tuple
+    description: str
+    param_units: dict
+    quasi_velocities: tuple = ()
+    drawing: object = None
+
+
+def spec_of(body: RigidBody, parts: dict) -> RigidSpec:
+    """The emitter's view of a rigid body (name, parameters, pose, labels, hash input)."""
+    return RigidSpec(
         name=body.name,
-        coordinates=(),
-        velocities=(),
-        accelerations=(),
         lagrangian=parts["lagrangian"] + sp.Symbol("_height") * parts["height"],
         constraints=tuple(parts["constraints"]),
         constraint_labels=MULTIPLIER_LABELS,
-        dependent=(),
-        cyclic={},
         small=body.small,
         params=tuple(body.params),
         pose=POSE,

@@ -6,7 +6,7 @@ A rigid module has what every generated module has (``rhs``/``rhs_into``/
 reads generically: units (``STATE_UNITS``, ``PARAM_UNITS``), admissible
 parameter values (``PARAM_DOMAINS``), named parameter sets (``PRESETS`` with
 ``PRESET_SOURCES``), ``initial_state(n0, omega0)`` from the physical
-description, and ``dissipated_power(s, p)``.
+description, and ``power_dissipated(s, p)``.
 """
 from __future__ import annotations
 
@@ -95,9 +95,29 @@ def module_source(system: rigid.RollingSystem, fidelity: str) -> str:
     lam = list(system.multipliers)
     lam_lines, lam_ops = _cse_block(lam, [f"out[{i}]" for i in range(len(lam))], allowed)
     digest = input_hash(system, fidelity)
+    nl = "\n"
+    power_src = (f'''@njit(cache=True)
+def power_dissipated(s, p):
+    """Power dissipated by the damping torque ({power_ops} operations)."""
+{nl.join(_unpack([str(x) for x in system.state], "s"))}
+{nl.join(_unpack([str(x) for x in spec.params], "p"))}
+{nl.join(power_lines)}
+    return power
+''' if body.sigma is not None and body.sigma != 0 else "")
     units = {**rigid.STATE_UNITS, **{str(k): v for k, v in body.param_units.items()}}
     domains = {p: body.param_domains.get(p, "positive") for p in params}
     presets = {k: {p: float(v[p]) for p in params} for k, v in sorted(body.presets.items())}
+    if body.defaults:
+        defaults = {p: float(body.defaults[p]) for p in params}
+    else:
+        defaults = presets[sorted(body.presets)[0]] if body.presets else {}
+    n0 = body.default_state.get("n0", (0.0, 0.0, 1.0))
+    omega0 = body.default_state.get("omega0", (0.0, 0.0, 1.0))
+    nrm = sum(float(c) ** 2 for c in n0) ** 0.5
+    n0 = [float(c) / nrm for c in n0]
+    omega0 = [float(c) for c in omega0]
+    default_state = dict(zip(state, n0 + omega0 + [sum(a * b for a, b in zip(n0, omega0))]))
+    dissipative = body.sigma is not None and body.sigma != 0
     state_doc = "\n".join(f"    s[{i}] = {nm:<12} [{units.get(nm, '?')}]" for i, nm in enumerate(state))
     pose_doc = "\n".join(f"    s[{n + i}] = {nm:<12} [{units.get(nm, '?')}]" for i, nm in enumerate(pose))
     par_doc = "\n".join(f"    p[{i}] = {nm:<12} [{units.get(nm, '?')}] {domains[nm]}" for i, nm in enumerate(params))
@@ -106,7 +126,9 @@ def module_source(system: rigid.RollingSystem, fidelity: str) -> str:
     unpack_pose = [f"    {q} = s[{n + i}]" for i, q in enumerate(pose)]
     model_file = body.source
     nl = "\n"
-    ops = dict(rhs_ops, pose_rates=pose_ops, energy=energy_ops, multipliers=lam_ops, dissipated_power=power_ops)
+    ops = dict(rhs_ops, pose_rates=pose_ops, energy=energy_ops, multipliers=lam_ops)
+    if dissipative:
+        ops["power_dissipated"] = power_ops
     return f'''"""{spec.name}, fidelity {fidelity}: rigid body rolling without slipping, nothing dropped.
 
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
@@ -125,7 +147,7 @@ Parameter vector ``p``:
 Presets:
 {preset_doc}
 Multipliers: the contact force on the body in body axes, {", ".join(spec.constraint_labels)}.
-Energy and ``dissipated_power`` in the units of the parameters (J and W for SI parameters).
+Energy and ``power_dissipated`` in the units of the parameters (J and W for SI parameters).
 """
 import math
 
@@ -134,17 +156,36 @@ from numba import njit
 
 MODEL = {spec.name!r}
 FIDELITY = {fidelity!r}
+#: what this fidelity is
+FIDELITY_DOC = "rigid body rolling without slipping, exact in the orientation (derivation/rigid.py)"
 STATE_NAMES = {tuple(state)!r}
+#: unit of each state
+STATE_UNITS = {tuple(units[k] for k in state)!r}
 POSE_NAMES = {tuple(pose)!r}
+POSE_UNITS = {tuple(units[k] for k in pose)!r}
+#: what the pose coordinates mean
+POSE_DOC = "psi: heading of the horizontal projection of the body axis {tuple(body.heading_axis)}; (x, y): centre of mass"
 PARAM_NAMES = {tuple(params)!r}
+PARAM_UNITS = {tuple(units[k] for k in params)!r}
+#: admissible values of each parameter: 'positive' (> 0), 'nonnegative' (>= 0) or 'real' (any finite value)
+PARAM_DOMAINS = {tuple(domains[k] for k in params)!r}
+#: default parameter set and initial state (the CLI's defaults)
+DEFAULT_PARAMS = {defaults!r}
+DEFAULT_STATE = {default_state!r}
+#: (coordinate, rate) pairs of the state: none (n and omega are not coordinate and rate)
+RATE_PAIRS = ()
 TILT_NAMES = ()
-#: the vertical spin omega . n, whose zero crossings are the spin reversals
-SPIN_NAME = "omega_n"
+#: the vertical spin omega . n (carried as a state), whose zero crossings are the spin reversals
+REVERSAL_EVENTS = ('omega_n',)
+EVENT_NAMES = ()
+#: largest |value| of each named state where this fidelity holds (empty: everywhere)
+VALIDITY = {{}}
+VALIDITY_DOC = ''
 MULTIPLIER_NAMES = {tuple(spec.constraint_labels)!r}
-STATE_UNITS = {{{", ".join(f"{k!r}: {units[k]!r}" for k in state + pose)}}}
-PARAM_UNITS = {{{", ".join(f"{k!r}: {units[k]!r}" for k in params)}}}
-#: admissible values of each parameter: "positive", "nonnegative" or "real"
-PARAM_DOMAINS = {domains!r}
+#: non-conservative forces (the torque -sigma omega): the module has ``power_dissipated(s, p)``
+HAS_DISSIPATION = {dissipative!r}
+#: model-specific helpers: named parameter sets and the initial state from the physical description
+EXPORTS = ('PRESETS', 'PRESET_SOURCES', 'initial_state')
 #: named parameter sets (SI units); sources in PRESET_SOURCES
 PRESETS = {presets!r}
 PRESET_SOURCES = {dict(sorted(body.preset_sources.items()))!r}
@@ -178,14 +219,7 @@ def energy(s, p):
     return energy
 
 
-@njit(cache=True)
-def dissipated_power(s, p):
-    """Power dissipated by the damping torque ({power_ops} operations)."""
-{nl.join(unpack_s)}
-{nl.join(unpack_p)}
-{nl.join(power_lines)}
-    return power
-
+{power_src}
 
 @njit(cache=True)
 def multipliers(s, p):

@@ -53,6 +53,8 @@ def knife_edge_body() -> RigidBody:
             "radius D in a vertical plane at the chiral angle alpha to the bar; per unit mass, exact in the tilts."
         ),
         source=__name__,
+        defaults={"g": 1.0, "ell": 1.0, "L": 2.0, "D": 0.5, "alpha": 0.7853981633974483},
+        default_state={"n0": (-0.01, 0.01, 1.0), "omega0": (-0.001, 0.001, 0.1)},
     )
 
 

@@ -9,7 +9,7 @@ builds them (``derivation.rigid``).
 """
 import sympy as sp
 
-from derivation.rigid import Circle, RigidBody
+from knifeedge.derive.rigid import Circle, RigidBody
 
 g, r, m = sp.symbols("g r m", positive=True)
 

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/rigid_emit.py (make derive) from the rigid body 'celt'
 through derivation/rigid.py (Lagrange-d'Alembert in body quasi-velocities).
-SymPy 1.14.0; input hash sha256:412f21d30cce67246a042bbf368616e9915b18278df12b09b5448d407fb56572
+SymPy 1.14.0; input hash sha256:f48818acb1aa30bb45eec134275c68f1b1068a2e503a34cf947342ef7c319bbc
 
 Classical rattleback (celt): a rigid body with an ellipsoidal bottom (semi-axes a, b, c along the body axes x, y, z; centre of mass a distance h below the ellipsoid's centre), inertia tensor about the centre of mass with entries I_xx..I_yz in body axes, rolling without slipping on a horizontal table under gravity g, dissipation torque -sigma*omega.  State: upward vertical n and angular velocity omega in body axes, vertical spin omega_n = omega.n; pose: heading psi of the body x axis, centre of mass (x, y).
 
@@ -37,7 +37,7 @@ Presets:
     kane_levinson_1982: Kane & Levinson, Int. J. Non-Linear Mech. 17 (1982) 175-186
     schoemer: E. Schoemer's rattleback (golden-ratio ellipsoid)
 Multipliers: the contact force on the body in body axes, contact_force_x, contact_force_y, contact_force_z.
-Energy and ``dissipated_power`` in the units of the parameters (J and W for SI parameters).
+Energy and ``power_dissipated`` in the units of the parameters (J and W for SI parameters).
 """
 import math
 
@@ -46,26 +46,45 @@ from numba import njit
 
 MODEL = 'celt'
 FIDELITY = 'full'
+#: what this fidelity is
+FIDELITY_DOC = "rigid body rolling without slipping, exact in the orientation (derivation/rigid.py)"
 STATE_NAMES = ('n_x', 'n_y', 'n_z', 'omega_x', 'omega_y', 'omega_z', 'omega_n')
+#: unit of each state
+STATE_UNITS = ('1', '1', '1', 'rad/s', 'rad/s', 'rad/s', 'rad/s')
 POSE_NAMES = ('psi', 'x', 'y')
+POSE_UNITS = ('rad', 'm', 'm')
+#: what the pose coordinates mean
+POSE_DOC = "psi: heading of the horizontal projection of the body axis (1, 0, 0); (x, y): centre of mass"
 PARAM_NAMES = ('a', 'b', 'c', 'h', 'm', 'g', 'I_xx', 'I_yy', 'I_zz', 'I_xy', 'I_xz', 'I_yz', 'sigma')
+PARAM_UNITS = ('m', 'm', 'm', 'm', 'kg', 'm/s^2', 'kg m^2', 'kg m^2', 'kg m^2', 'kg m^2', 'kg m^2', 'kg m^2', 'N m s')
+#: admissible values of each parameter: 'positive' (> 0), 'nonnegative' (>= 0) or 'real' (any finite value)
+PARAM_DOMAINS = ('positive', 'positive', 'positive', 'positive', 'positive', 'positive', 'positive', 'positive', 'positive', 'real', 'real', 'real', 'nonnegative')
+#: default parameter set and initial state (the CLI's defaults)
+DEFAULT_PARAMS = {'a': 0.2, 'b': 0.03, 'c': 0.02, 'h': 0.01, 'm': 1.0, 'g': 9.81, 'I_xx': 0.0002, 'I_yy': 0.0016, 'I_zz': 0.0017, 'I_xy': 2e-05, 'I_xz': 0.0, 'I_yz': 0.0, 'sigma': 0.0}
+DEFAULT_STATE = {'n_x': 0.00872620041809352, 'n_y': 0.008726500418107894, 'n_z': 0.9999238479087875, 'omega_x': 0.0, 'omega_y': 0.0, 'omega_z': 5.0, 'omega_n': 4.999619239543938}
+#: (coordinate, rate) pairs of the state: none (n and omega are not coordinate and rate)
+RATE_PAIRS = ()
 TILT_NAMES = ()
-#: the vertical spin omega . n, whose zero crossings are the spin reversals
-SPIN_NAME = "omega_n"
+#: the vertical spin omega . n (carried as a state), whose zero crossings are the spin reversals
+REVERSAL_EVENTS = ('omega_n',)
+EVENT_NAMES = ()
+#: largest |value| of each named state where this fidelity holds (empty: everywhere)
+VALIDITY = {}
+VALIDITY_DOC = ''
 MULTIPLIER_NAMES = ('contact_force_x', 'contact_force_y', 'contact_force_z')
-STATE_UNITS = {'n_x': '1', 'n_y': '1', 'n_z': '1', 'omega_x': 'rad/s', 'omega_y': 'rad/s', 'omega_z': 'rad/s', 'omega_n': 'rad/s', 'psi': 'rad', 'x': 'm', 'y': 'm'}
-PARAM_UNITS = {'a': 'm', 'b': 'm', 'c': 'm', 'h': 'm', 'm': 'kg', 'g': 'm/s^2', 'I_xx': 'kg m^2', 'I_yy': 'kg m^2', 'I_zz': 'kg m^2', 'I_xy': 'kg m^2', 'I_xz': 'kg m^2', 'I_yz': 'kg m^2', 'sigma': 'N m s'}
-#: admissible values of each parameter: "positive", "nonnegative" or "real"
-PARAM_DOMAINS = {'a': 'positive', 'b': 'positive', 'c': 'positive', 'h': 'positive', 'm': 'positive', 'g': 'positive', 'I_xx': 'positive', 'I_yy': 'positive', 'I_zz': 'positive', 'I_xy': 'real', 'I_xz': 'real', 'I_yz': 'real', 'sigma': 'nonnegative'}
+#: non-conservative forces (the torque -sigma omega): the module has ``power_dissipated(s, p)``
+HAS_DISSIPATION = True
+#: model-specific helpers: named parameter sets and the initial state from the physical description
+EXPORTS = ('PRESETS', 'PRESET_SOURCES', 'initial_state')
 #: named parameter sets (SI units); sources in PRESET_SOURCES
 PRESETS = {'kane_levinson_1982': {'a': 0.2, 'b': 0.03, 'c': 0.02, 'h': 0.01, 'm': 1.0, 'g': 9.81, 'I_xx': 0.0002, 'I_yy': 0.0016, 'I_zz': 0.0017, 'I_xy': 2e-05, 'I_xz': 0.0, 'I_yz': 0.0, 'sigma': 0.0}, 'schoemer': {'a': 1.618033988749895, 'b': 1.0, 'c': 1.0, 'h': 0.1875, 'm': 0.2, 'g': 9.81, 'I_xx': 0.05796875, 'I_yy': 0.09032943, 'I_zz': 0.12236068, 'I_xy': -0.025, 'I_xz': 0.0, 'I_yz': 0.0, 'sigma': 0.0}}
 PRESET_SOURCES = {'kane_levinson_1982': 'Kane & Levinson, Int. J. Non-Linear Mech. 17 (1982) 175-186', 'schoemer': "E. Schoemer's rattleback (golden-ratio ellipsoid)"}
 #: the model file the body comes from
-SOURCE = 'derivation.celt'
-INPUT_HASH = '412f21d30cce67246a042bbf368616e9915b18278df12b09b5448d407fb56572'
+SOURCE = 'knifeedge.derive.celt'
+INPUT_HASH = 'f48818acb1aa30bb45eec134275c68f1b1068a2e503a34cf947342ef7c319bbc'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
-OP_COUNTS = {'rhs': 247, 'constants': 23, 'rhs_q': 250, 'rhs_pose': 285, 'rhs_pose_q': 286, 'pose_rates': 71, 'energy': 72, 'multipliers': 265, 'dissipated_power': 6}
+OP_COUNTS = {'rhs': 247, 'constants': 23, 'rhs_q': 250, 'rhs_pose': 285, 'rhs_pose_q': 286, 'pose_rates': 71, 'energy': 72, 'multipliers': 265, 'power_dissipated': 6}
 
 
 @njit(cache=True)
@@ -707,7 +726,7 @@ def energy(s, p):
 
 
 @njit(cache=True)
-def dissipated_power(s, p):
+def power_dissipated(s, p):
     """Power dissipated by the damping torque (6 operations)."""
     n_x = s[0]
     n_y = s[1]

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/rigid_emit.py (make derive) from the rigid body 'two_mode_rigid'
 through derivation/rigid.py (Lagrange-d'Alembert in body quasi-velocities).
-SymPy 1.14.0; input hash sha256:0d2dd2932cca5200664cb63fce059fd6fa84e54b63c3318279d07295a2ae2443
+SymPy 1.14.0; input hash sha256:ac61bdb18cc8f0eddca8e1a3dcdce8e7d9c4cc190cefc71d019e9b95b473bf1c
 
 Chiral knife edge of the paper's section III as the real rigid body: massless inverted-U bar of half-length L, masses M/2 a distance ell below its ends, contact at the lowest point of a circle of radius D in a vertical plane at the chiral angle alpha to the bar; per unit mass, exact in the tilts.
 
@@ -28,7 +28,7 @@ Parameter vector ``p``:
 Presets:
 
 Multipliers: the contact force on the body in body axes, contact_force_x, contact_force_y, contact_force_z.
-Energy and ``dissipated_power`` in the units of the parameters (J and W for SI parameters).
+Energy and ``power_dissipated`` in the units of the parameters (J and W for SI parameters).
 """
 import math
 
@@ -37,26 +37,45 @@ from numba import njit
 
 MODEL = 'two_mode_rigid'
 FIDELITY = 'full'
+#: what this fidelity is
+FIDELITY_DOC = "rigid body rolling without slipping, exact in the orientation (derivation/rigid.py)"
 STATE_NAMES = ('n_x', 'n_y', 'n_z', 'omega_x', 'omega_y', 'omega_z', 'omega_n')
+#: unit of each state
+STATE_UNITS = ('1', '1', '1', 'rad/s', 'rad/s', 'rad/s', 'rad/s')
 POSE_NAMES = ('psi', 'x', 'y')
+POSE_UNITS = ('rad', 'm', 'm')
+#: what the pose coordinates mean
+POSE_DOC = "psi: heading of the horizontal projection of the body axis (1, 0, 0); (x, y): centre of mass"
 PARAM_NAMES = ('g', 'ell', 'L', 'D', 'alpha')
+PARAM_UNITS = ('length/time^2', 'length', 'length', 'length', 'rad')
+#: admissible values of each parameter: 'positive' (> 0), 'nonnegative' (>= 0) or 'real' (any finite value)
+PARAM_DOMAINS = ('positive', 'positive', 'positive', 'positive', 'real')
+#: default parameter set and initial state (the CLI's defaults)
+DEFAULT_PARAMS = {'g': 1.0, 'ell': 1.0, 'L': 2.0, 'D': 0.5, 'alpha': 0.7853981633974483}
+DEFAULT_STATE = {'n_x': -0.009999000149975006, 'n_y': 0.009999000149975006, 'n_z': 0.9999000149975006, 'omega_x': -0.001, 'omega_y': 0.001, 'omega_z': 0.1, 'omega_n': 0.10000999950005002}
+#: (coordinate, rate) pairs of the state: none (n and omega are not coordinate and rate)
+RATE_PAIRS = ()
 TILT_NAMES = ()
-#: the vertical spin omega . n, whose zero crossings are the spin reversals
-SPIN_NAME = "omega_n"
+#: the vertical spin omega . n (carried as a state), whose zero crossings are the spin reversals
+REVERSAL_EVENTS = ('omega_n',)
+EVENT_NAMES = ()
+#: largest |value| of each named state where this fidelity holds (empty: everywhere)
+VALIDITY = {}
+VALIDITY_DOC = ''
 MULTIPLIER_NAMES = ('contact_force_x', 'contact_force_y', 'contact_force_z')
-STATE_UNITS = {'n_x': '1', 'n_y': '1', 'n_z': '1', 'omega_x': 'rad/s', 'omega_y': 'rad/s', 'omega_z': 'rad/s', 'omega_n': 'rad/s', 'psi': 'rad', 'x': 'm', 'y': 'm'}
-PARAM_UNITS = {'g': 'length/time^2', 'ell': 'length', 'L': 'length', 'D': 'length', 'alpha': 'rad'}
-#: admissible values of each parameter: "positive", "nonnegative" or "real"
-PARAM_DOMAINS = {'g': 'positive', 'ell': 'positive', 'L': 'positive', 'D': 'positive', 'alpha': 'real'}
+#: non-conservative forces (the torque -sigma omega): the module has ``power_dissipated(s, p)``
+HAS_DISSIPATION = False
+#: model-specific helpers: named parameter sets and the initial state from the physical description
+EXPORTS = ('PRESETS', 'PRESET_SOURCES', 'initial_state')
 #: named parameter sets (SI units); sources in PRESET_SOURCES
 PRESETS = {}
 PRESET_SOURCES = {}
 #: the model file the body comes from
-SOURCE = 'derivation.rigid_knife_edge'
-INPUT_HASH = '0d2dd2932cca5200664cb63fce059fd6fa84e54b63c3318279d07295a2ae2443'
+SOURCE = 'knifeedge.derive.rigid_knife_edge'
+INPUT_HASH = 'ac61bdb18cc8f0eddca8e1a3dcdce8e7d9c4cc190cefc71d019e9b95b473bf1c'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
-OP_COUNTS = {'rhs': 253, 'constants': 25, 'rhs_q': 221, 'rhs_pose': 293, 'rhs_pose_q': 261, 'pose_rates': 73, 'energy': 56, 'multipliers': 267, 'dissipated_power': 0}
+OP_COUNTS = {'rhs': 253, 'constants': 25, 'rhs_q': 221, 'rhs_pose': 293, 'rhs_pose_q': 261, 'pose_rates': 73, 'energy': 56, 'multipliers': 267}
 
 
 @njit(cache=True)
@@ -648,23 +667,6 @@ def energy(s, p):
     return energy
 
 
-@njit(cache=True)
-def dissipated_power(s, p):
-    """Power dissipated by the damping torque (0 operations)."""
-    n_x = s[0]
-    n_y = s[1]
-    n_z = s[2]
-    omega_x = s[3]
-    omega_y = s[4]
-    omega_z = s[5]
-    omega_n = s[6]
-    g = p[0]
-    ell = p[1]
-    L = p[2]
-    D = p[3]
-    alpha = p[4]
-    power = 0
-    return power
 
 
 @njit(cache=True)

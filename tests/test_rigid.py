@@ -17,8 +17,8 @@ import sympy as sp
 
 import knifeedge as ke
 import rigid_reference as ref
-from derivation import rigid
-from derivation.celt import celt
+from knifeedge.derive import rigid
+from knifeedge.derive.celt import celt
 
 TILT = math.radians(0.5)
 #: Kane & Levinson's initial vertical: al = be = 0.5 deg
@@ -121,7 +121,7 @@ def test_energy_plus_dissipated_work_is_constant(m):
                     t_eval=t)
     assert r.success
     E = m.energy(r.y, p)
-    W = cumulative_simpson(m.dissipated_power(r.y, p), x=r.t, initial=0.0)
+    W = cumulative_simpson(m.power_dissipated(r.y, p), x=r.t, initial=0.0)
     assert W[-1] > 1e-4 * E[0]  # the damping does work
     assert np.max(np.abs(E + W - E[0])) <= 1e-9 * abs(E[0])
 
@@ -236,7 +236,7 @@ def test_euler_angle_lagrangian_through_the_engine_gives_the_same_accelerations(
     solved at 30 digits) gives the body-frame angular accelerations of the front end's closed form."""
     import dataclasses
 
-    from derivation import engine
+    from knifeedge.derive import engine
 
     body = dataclasses.replace(celt(), sigma=None)
     spec = rigid.euler_angle_spec(body)
@@ -289,7 +289,7 @@ def test_rolling_disk_rebuilt_with_the_front_end_gives_the_same_equations():
     At a state of the Euler-angle model (q1 = q3 = 0, so the body frame is the lean frame) the body
     angular acceleration from the engine's accelerations, D^T d(omega_space)/dt, equals the front
     end's domega/dt exactly."""
-    from derivation import engine
+    from knifeedge.derive import engine
 
     disk = _load_example("rolling_disk")
     body = _load_example("rolling_disk_rigid").BODY
@@ -319,8 +319,8 @@ def test_paper_two_mode_model_is_the_small_tilt_limit_of_the_rigid_knife_edge_ex
     of the paper's two-mode Lagrangian are the body's second-order limit; the potential misses the rise
     (1/2) g D theta_alpha^2 of the centre of mass when the circle rolls in its plane (verdict recorded in
     derivation/rigid_knife_edge.py VERDICT)."""
-    from derivation import models
-    from derivation.rigid_knife_edge import VERDICT, verdict
+    from knifeedge.derive import models
+    from knifeedge.derive.rigid_knife_edge import VERDICT, verdict
 
     expected_extra = -models.g * models.D * models.theta_alpha**2 / 2  # L_rigid - L_paper
     for heading in (0, sp.pi / 3):

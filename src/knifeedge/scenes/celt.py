@@ -62,7 +62,7 @@ def energy_balance(r) -> float:
     from scipy.integrate import cumulative_simpson
 
     E = r.energy
-    W = cumulative_simpson(r.model.dissipated_power(r.y, r.p), x=r.t, initial=0.0)
+    W = cumulative_simpson(r.model.power_dissipated(r.y, r.p), x=r.t, initial=0.0)
     return float(np.max(np.abs(E + W - E[0])) / abs(E[0]))
 
 
