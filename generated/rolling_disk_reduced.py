@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk',
 constraints no_slip_along, no_slip_across) through derivation/engine.py and derivation/truncation.py.
-SymPy 1.14.0; input hash sha256:02b5120a2f7a087adf85036181d66e21500fb51dd5105b2176d4a7ecae0a56a8
+SymPy 1.14.0; input hash sha256:7dfe5d2005df681195f9cebfefdfb4910426cd8210a1ece5ee1a603ef3fbe224
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table: heading q1, lean q2 from the vertical, rotation q3 about the axle, contact point (x, y).
 
@@ -62,7 +62,7 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '02b5120a2f7a087adf85036181d66e21500fb51dd5105b2176d4a7ecae0a56a8'
+INPUT_HASH = '7dfe5d2005df681195f9cebfefdfb4910426cd8210a1ece5ee1a603ef3fbe224'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 27, 'constants': 7, 'rhs_q': 22, 'rhs_pose': 32, 'rhs_pose_q': 27, 'pose_rates': 5, 'energy': 26, 'multipliers': 16}
