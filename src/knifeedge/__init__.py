@@ -11,12 +11,12 @@ integrates them and never imports SymPy.
 >>> m.state_names
 ('theta', 'theta_dot', 'phi_dot')
 """
-from .models import FIDELITIES, MODEL_NAMES, Model, load
+from .models import FIDELITIES, MODEL_NAMES, Model, ValidityWarning, available, load
 from .simulate import METHODS, SimulationResult, simulate
 from .scenes import RunSpec, Scene, get_scene as scene, scene_names
 from .sweep import SweepTable, sweep
 from .reversal import ReversalPrediction, reversal_time
 
 __version__ = "0.1.0"
-__all__ = ["load", "simulate", "Model", "SimulationResult", "METHODS", "MODEL_NAMES", "FIDELITIES",
+__all__ = ["load", "available", "ValidityWarning", "simulate", "Model", "SimulationResult", "METHODS", "MODEL_NAMES", "FIDELITIES",
            "sweep", "SweepTable", "scene", "scene_names", "Scene", "RunSpec", "reversal_time", "ReversalPrediction"]

@@ -12,15 +12,22 @@ argument); a failed integration is reported in ``success``/``status``/
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
 
+from . import _validate
 from .integrators import ALIASES, COMPILED_METHODS, Status, from_code, kernel
-from .models import Model
+from .models import Model, ValidityWarning
 
 #: the smallest relative tolerance accepted: below it the error estimate is round-off
 MIN_RTOL = 100 * np.finfo(float).eps
+#: tolerances must be below one: an error the size of the state controls nothing
+MAX_TOL = 1.0
+#: most output times `t_eval` may hold (8 MB per state)
+MAX_T_EVAL = 10_000_000
+MAX_STEPS_LIMIT = 2**63 - 1
 ERROR_CONTROLS = ("component", "mode")
 
 
@@ -53,6 +60,11 @@ class SimulationResult:
         Accepted steps.
     nrejected : int
         Rejected steps (adaptive methods).
+    in_validity_domain : bool
+        False when the run left the domain where the model's fidelity holds
+        (``model.validity``); a :class:`~knifeedge.models.ValidityWarning`
+        is then issued and ``validity_message`` says which states left it.
+    validity_message : str
     """
 
     t: np.ndarray
@@ -69,6 +81,8 @@ class SimulationResult:
     outcome: Status = Status.SUCCESS
     nsteps: int = 0
     nrejected: int = 0
+    in_validity_domain: bool = True
+    validity_message: str = ""
 
     def __getitem__(self, name: str) -> np.ndarray:
         """Time series of the named state, e.g. ``r["phi_dot"]``."""
@@ -107,11 +121,10 @@ _PAIRS: dict = {}
 
 
 def _mode_pairs(model: Model) -> np.ndarray:
-    """``pair[i]``: the partner of a tilt and its rate (``theta`` <-> ``theta_dot``), else -1 (read-only)."""
+    """``pair[i]``: the partner of a coordinate and its rate (``model.rate_pairs``), else -1 (read-only)."""
     if model not in _PAIRS:
         pair = np.full(model.n_state, -1, dtype=np.int64)
-        for name in model.tilt_names:
-            rate = f"{name}_dot"
+        for name, rate in model.rate_pairs:
             if name in model.state_names and rate in model.state_names:
                 i, j = model.index(name), model.index(rate)
                 pair[i], pair[j] = j, i
@@ -120,12 +133,17 @@ def _mode_pairs(model: Model) -> np.ndarray:
     return _PAIRS[model]
 
 
+def _event_index(model: Model) -> int:
+    """Index of the state whose zero crossings are the reversals (``model.reversal_events``), -1 if none."""
+    return model.index(model.spin_name) if model.spin_name is not None else -1
+
+
 def _run_compiled(name: str):
     spec = COMPILED_METHODS[ALIASES.get(name, name)]
 
     def run(r: _Run):
         solve = kernel(r.model, name)
-        spin = r.model.index(r.model.spin_name)
+        spin = _event_index(r.model)
         every = r.t_eval is None
         t_eval = np.empty(0) if every else np.ascontiguousarray(r.t_eval)
         if spec.fixed_step:
@@ -143,7 +161,7 @@ def _run_scipy(scipy_method: str):
     def run(r: _Run):
         from scipy.integrate import solve_ivp  # imported on use: it adds ~0.3 s to the start-up
 
-        k = r.model.index(r.model.spin_name)
+        k = _event_index(r.model)
         rhs, p = r.model.rhs, r.p
 
         def fun(t, y):
@@ -153,10 +171,11 @@ def _run_scipy(scipy_method: str):
             return y[k]
 
         sol = solve_ivp(fun, (r.t0, r.t1), r.y0, method=scipy_method, rtol=r.rtol, atol=r.atol, t_eval=r.t_eval,
-                        events=reversal, max_step=r.max_step)
+                        events=reversal if k >= 0 else None, max_step=r.max_step)
         outcome = Status.SUCCESS if sol.status >= 0 else Status.STEP_SIZE_UNDERFLOW
         nsteps = len(sol.t) - 1 if r.t_eval is None else -1
-        return sol.t, sol.y, np.asarray(sol.t_events[0]), outcome, sol.nfev, nsteps, 0
+        events = np.asarray(sol.t_events[0]) if k >= 0 else np.empty(0)
+        return sol.t, sol.y, events, outcome, sol.nfev, nsteps, 0
 
     return run
 
@@ -170,10 +189,9 @@ for _m in SCIPY_METHODS:
 
 
 def _check_t_span(t_span) -> tuple:
-    try:
-        t0, t1 = (float(v) for v in t_span)
-    except (TypeError, ValueError):
-        raise TypeError(f"`t_span` must be a pair (t0, t1) of numbers, got {t_span!r}") from None
+    if isinstance(t_span, (str, bytes)) or not hasattr(t_span, "__len__") or len(t_span) != 2:
+        raise TypeError(f"`t_span` must be a pair (t0, t1) of numbers, got {t_span!r}")
+    t0, t1 = (_validate.real(v, "each end of `t_span`") for v in t_span)
     if not (math.isfinite(t0) and math.isfinite(t1)):
         raise ValueError(f"`t_span` must be finite, got {t_span!r}")
     if not t1 > t0:
@@ -182,38 +200,76 @@ def _check_t_span(t_span) -> tuple:
 
 
 def _check_positive(v, name: str) -> float:
-    if isinstance(v, bool) or not isinstance(v, (int, float, np.integer, np.floating)):
-        raise TypeError(f"`{name}` must be a positive number, got {v!r}")
-    v = float(v)
+    v = _validate.real(v, f"`{name}`")
     if not (math.isfinite(v) and v > 0):
         raise ValueError(f"`{name}` must be positive and finite, got {v!r}")
     return v
 
 
+def _check_rtol(rtol) -> float:
+    rtol = _check_positive(rtol, "rtol")
+    if rtol < MIN_RTOL:
+        raise ValueError(f"`rtol` must be at least {MIN_RTOL:.3g} (100 machine epsilons): below it round-off "
+                         f"dominates the error estimate; got {rtol!r}")
+    if rtol >= MAX_TOL:
+        raise ValueError(f"`rtol` must be less than {MAX_TOL:g}: a relative error of {rtol!r} or more leaves no "
+                         f"significant digit and the step-size control nothing to control")
+    return rtol
+
+
 def _check_atol(atol, n: int) -> np.ndarray:
-    if type(atol) is float and math.isfinite(atol) and atol > 0:  # the common case, without numpy's overhead
+    if type(atol) is float and 0 < atol < MAX_TOL:  # the common case, without numpy's overhead
         return np.full(n, atol)
-    if isinstance(atol, (bool, str)):
-        raise TypeError(f"`atol` must be a positive number or an array of shape ({n},), got {atol!r}")
-    try:
-        arr = np.asarray(atol, dtype=float)
-    except (TypeError, ValueError):
-        raise TypeError(f"`atol` must be a positive number or an array of shape ({n},), got {atol!r}") from None
-    if arr.ndim == 0:
-        arr = np.full(n, float(arr))
+    if isinstance(atol, (list, tuple)) or isinstance(atol, np.ndarray) and atol.ndim > 0:
+        arr = _validate.real_array(atol, "`atol`")
+    else:
+        arr = np.full(n, _validate.real(atol, "`atol`"))
     if arr.shape != (n,):
         raise ValueError(f"`atol` must be a number or have shape ({n},) (one per state), got shape {arr.shape}")
     if not all(math.isfinite(v) and v > 0 for v in arr.tolist()):
         raise ValueError(f"`atol` must be positive and finite, got {atol!r}")
+    if not all(v < MAX_TOL for v in arr.tolist()):
+        raise ValueError(f"`atol` must be less than {MAX_TOL:g} (the states are angles in rad and rates in "
+                         f"sqrt(g/ell): an absolute error of one or more leaves no significant digit); got {atol!r}")
     return np.ascontiguousarray(arr)
 
 
+def _check_t_eval(t_eval, t0: float, t1: float) -> np.ndarray:
+    arr = _validate.real_array(t_eval, "`t_eval`")
+    if arr.ndim != 1:
+        raise ValueError(f"`t_eval` must be a 1-D array of times, got shape {arr.shape}")
+    if arr.size > MAX_T_EVAL:
+        raise ValueError(f"`t_eval` has {arr.size} times, more than the {MAX_T_EVAL} allowed")
+    if not np.isfinite(arr).all() or (arr[1:] <= arr[:-1]).any() or (arr.size and (arr[0] < t0 or arr[-1] > t1)):
+        raise ValueError("`t_eval` must be a finite, strictly increasing 1-D array inside `t_span`")
+    return arr
+
+
+def _check_max_step(v) -> float:
+    v = _validate.real(v, "`max_step`")
+    if v == math.inf:
+        return v
+    return _check_positive(v, "max_step")
+
+
 def _check_max_steps(v) -> int:
-    if isinstance(v, bool) or not isinstance(v, (int, np.integer)):
+    if isinstance(v, (bool, np.bool_)) or not isinstance(v, (int, np.integer)):
         raise TypeError(f"`max_steps` must be a positive integer, got {v!r}")
     if v < 1:
         raise ValueError(f"`max_steps` must be a positive integer, got {v!r}")
+    if v > MAX_STEPS_LIMIT:
+        raise ValueError(f"`max_steps` must be at most 2**63 - 1 (a 64-bit step counter), got {v!r}")
     return int(v)
+
+
+def _check_fixed_step(h, t0: float, t1: float) -> float:
+    """A fixed step must advance t: at least 10 ulps of t (which also keeps the step count in 64 bits)."""
+    h = _check_positive(h, "h")
+    resolution = 10 * float(np.spacing(max(abs(t0), abs(t1))))
+    if h <= resolution:
+        raise ValueError(f"`h` = {h!r} is below the resolution of t over `t_span` ({resolution:.3g}, 10 ulps): "
+                         f"the steps would not advance t")
+    return h
 
 
 def simulate(
@@ -271,17 +327,12 @@ def simulate(
     y0 = model.check_state(y0)
     p = model.check_params(p)
     t0, t1 = _check_t_span(t_span)
-    rtol = _check_positive(rtol, "rtol")
-    if rtol < MIN_RTOL:
-        raise ValueError(f"`rtol` must be at least {MIN_RTOL:.3g} (100 machine epsilons): below it round-off "
-                         f"dominates the error estimate; got {rtol!r}")
+    rtol = _check_rtol(rtol)
     atol = _check_atol(atol, model.n_state)
     if t_eval is not None:
-        t_eval = np.asarray(t_eval, dtype=float)
-        if t_eval.ndim != 1 or not np.isfinite(t_eval).all() or (t_eval[1:] <= t_eval[:-1]).any() \
-                or (t_eval.size and (t_eval[0] < t0 or t_eval[-1] > t1)):
-            raise ValueError("`t_eval` must be a finite, strictly increasing 1-D array inside `t_span`")
-    max_step = _check_positive(max_step, "max_step") if max_step != math.inf else math.inf
+        t_eval = _check_t_eval(t_eval, t0, t1)
+    max_step = math.inf if type(max_step) is float and max_step == math.inf else _check_max_step(max_step)
+    max_steps = _check_max_steps(max_steps)
     spec = COMPILED_METHODS.get(ALIASES.get(method, method))
     fixed = spec is not None and spec.fixed_step
     if fixed and h is None:
@@ -289,8 +340,7 @@ def simulate(
     if not fixed and h is not None:
         raise ValueError(f"`h` is the step of a fixed-step method; {method!r} chooses its own steps (use `rtol`)")
     if h is not None:
-        h = _check_positive(h, "h")
-    max_steps = _check_max_steps(max_steps)
+        h = _check_fixed_step(h, t0, t1)
     if error_control not in ERROR_CONTROLS:
         raise ValueError(f"unknown `error_control` {error_control!r}; accepted: {', '.join(ERROR_CONTROLS)}")
     if error_control != "component" and (spec is None or fixed):
@@ -307,8 +357,22 @@ def simulate(
     message = outcome.value
     if outcome is Status.NON_FINITE and t.size:
         message = f"{message} Last good state at t = {t[-1]:.6g}."
+    excess = model.validity_excess(y) if model.validity else {}
+    validity_message = ""
+    if excess:
+        validity_message = _validity_message(model, excess)
+        warnings.warn(validity_message, ValidityWarning, stacklevel=2)
     return SimulationResult(
         t=t, y=y, state_names=model.state_names, reversal_times=np.asarray(rev, dtype=float),
         success=outcome.success, status=outcome.code, message=message, nfev=int(nfev), method=method,
         model=model, p=p, outcome=outcome, nsteps=int(nsteps), nrejected=int(nrej),
+        in_validity_domain=not excess, validity_message=validity_message,
     )
+
+
+def _validity_message(model: Model, excess: dict) -> str:
+    """Which states left the domain of the fidelity, by how much, and what to use instead."""
+    parts = ", ".join(f"|{n}| reached {v:.3g} > {model.validity[n]:g}" for n, v in excess.items())
+    return (f"the run left the domain where {model.name} at fidelity {model.fidelity!r} holds ({parts}; "
+            f"{model.validity_doc or 'see model.validity'}); its results there are not those of the full model: "
+            f"use fidelity 'full'")
