@@ -18,7 +18,7 @@ from pathlib import Path
 import sympy as sp
 from sympy.printing.pycode import PythonCodePrinter
 
-from . import averaging, engine, models, truncation
+from . import averaging, drawing, engine, models, truncation
 from .averaging import AmplitudeSystem
 from .fidelities import FIDELITIES
 
@@ -91,6 +91,7 @@ def input_hash(spec: engine.ModelSpec, fidelity: str) -> str:
         *((path.read_text(),) if path is not None else ()),
         *((sp.srepr(spec.dissipation),) if spec.dissipation is not None else ()),
         *(sp.srepr(sp.sympify(f)) for f in spec.forces),
+        *((drawing.source_text(),) if fidelity != "amplitude" else ()),
     ):
         h.update(part.encode())
         h.update(b"\0")
@@ -465,7 +466,7 @@ def multipliers(s, p):
 {nl.join(unpack_p)}
 {nl.join(lam_lines)}
     return out
-{extra_src}'''
+''' + drawing.module_source(system) + extra_src
 
 
 def _coefficient_block(name: str, exprs, params, doc: str) -> tuple[str, int]:

@@ -121,6 +121,8 @@ class ModelSpec:
     16. ``extra_source`` (str) and ``exports`` (names it defines): plain
         ``math``/``numpy``/``numba`` Python appended to every generated
         module of the model (model-specific helpers such as presets).
+    17. ``drawing``: an optional :class:`~knifeedge.derive.drawing.Drawing`
+        (how ``knifeedge animate`` draws the model).
     """
 
     name: str
@@ -151,6 +153,7 @@ class ModelSpec:
     state_order: tuple = ()
     extra_source: str = ""
     exports: tuple = ()
+    drawing: object = None
     #: ``file:line`` where the spec was constructed (set automatically; named in every error)
     defined_at: str = field(default="", init=False, compare=False)
 

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/sleigh.py (model 'chaplygin_sleigh',
 constraints knife_edge) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:291ae37d3d2412ab66f502e16bbf553d5c5bc04f98d6a6ff742ed31f638d5e93
+SymPy 1.14.0; input hash sha256:be046516b0603c5678d935c0f362cadbbaf422d8b0de5e6a180ae335d6e0a822
 
 Chaplygin sleigh: a rigid body on the plane with a knife edge at its rear contact point (x, y) that forbids sideways motion; heading phi, centre of mass at distance a ahead of the contact, radius of gyration k about the centre of mass; v is the speed along the axis.
 
@@ -59,7 +59,7 @@ MULTIPLIER_NAMES = ('knife_edge',)
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '291ae37d3d2412ab66f502e16bbf553d5c5bc04f98d6a6ff742ed31f638d5e93'
+INPUT_HASH = 'be046516b0603c5678d935c0f362cadbbaf422d8b0de5e6a180ae335d6e0a822'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 9, 'constants': 5, 'rhs_q': 4, 'rhs_pose': 13, 'rhs_pose_q': 8, 'pose_rates': 4, 'energy': 9, 'multipliers': 6}
@@ -189,4 +189,74 @@ def multipliers(s, p):
     k = p[1]
     _c0 = (k*k)
     out[0] = _c0*phi_dot*v/(_c0 + (a*a))
+    return out
+
+
+
+#: how to draw the body (derivation/drawing.py): names of the rows of ``body_points``,
+#: segments between them, the contact point, the point masses, the tilts a picture may
+#: magnify, the outline curves of ``body_outlines``
+DRAWING = {'points': ('C', 'blade_back', 'blade_front', 'blade_top', 'G', 'nose'), 'segments': (('blade_back', 'blade_front'), ('blade_top', 'C'), ('blade_top', 'G'), ('G', 'nose')), 'contact': 'C', 'masses': ('G',), 'magnify': (), 'outlines': ('body',), 'description': 'flat disc (radius sqrt(2) k, so its radius of gyration is k) with its centre of mass G a ahead of the knife edge at the contact C; the knife edge along the axis'}
+
+
+@njit(cache=True)
+def body_points(s, p):
+    """World coordinates (z up, table z = 0) of DRAWING["points"] at the pose-extended state ``s``; shape (6, 3) (22 operations)."""
+    out = np.empty((6, 3))
+    v = s[0]
+    phi_dot = s[1]
+    phi = s[2]
+    x = s[3]
+    y = s[4]
+    a = p[0]
+    k = p[1]
+    _c0 = math.cos(phi)
+    _c1 = ((1.0/2.0))*k
+    _c2 = _c0*_c1
+    _c3 = math.sin(phi)
+    _c4 = _c1*_c3
+    _c5 = ((1.0/3.0))*k
+    _c6 = a + math.sqrt(2)*k
+    out[0, 0] = x
+    out[0, 1] = y
+    out[0, 2] = 0
+    out[1, 0] = -_c2 + x
+    out[1, 1] = -_c4 + y
+    out[1, 2] = 0
+    out[2, 0] = _c2 + x
+    out[2, 1] = _c4 + y
+    out[2, 2] = 0
+    out[3, 0] = x
+    out[3, 1] = y
+    out[3, 2] = _c5
+    out[4, 0] = _c0*a + x
+    out[4, 1] = _c3*a + y
+    out[4, 2] = _c5
+    out[5, 0] = _c0*_c6 + x
+    out[5, 1] = _c3*_c6 + y
+    out[5, 2] = _c5
+    return out
+
+
+@njit(cache=True)
+def body_outlines(s, p, uu):
+    """World coordinates of the curves DRAWING["outlines"] at the parameters ``uu`` in [0, 2 pi); shape (1, len(uu), 3) (19 operations)."""
+    out = np.empty((1, uu.shape[0], 3))
+    v = s[0]
+    phi_dot = s[1]
+    phi = s[2]
+    x = s[3]
+    y = s[4]
+    a = p[0]
+    k = p[1]
+    for j in range(uu.shape[0]):
+        u = uu[j]
+        _c0 = math.sin(phi)
+        _c1 = math.sqrt(2)*k
+        _c2 = _c1*math.sin(u)
+        _c3 = math.cos(phi)
+        _c4 = _c1*math.cos(u) + a
+        out[0, j, 0] = -_c0*_c2 + _c3*_c4 + x
+        out[0, j, 1] = _c0*_c4 + _c2*_c3 + y
+        out[0, j, 2] = ((1.0/3.0))*k
     return out

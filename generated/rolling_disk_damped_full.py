@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk_damped',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:2117fcc2939ee049067c44846bdb92d49741219c13eab297b5eb73dd9aff8677
+SymPy 1.14.0; input hash sha256:535fa241f26047e7078071154c3dd896ed2512f79eb78d57259b55410b5fda15
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table, its rotation resisted by a viscous torque -c r^2 omega per unit mass (Rayleigh function c r^2 |omega|^2/2).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = True
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '2117fcc2939ee049067c44846bdb92d49741219c13eab297b5eb73dd9aff8677'
+INPUT_HASH = '535fa241f26047e7078071154c3dd896ed2512f79eb78d57259b55410b5fda15'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 182, 'constants': 20, 'rhs_q': 178, 'rhs_pose': 186, 'rhs_pose_q': 183, 'pose_rates': 5, 'energy': 45, 'multipliers': 195, 'power_dissipated': 19}
@@ -522,6 +522,10 @@ def multipliers(s, p):
     out[0] = ((1.0/3.0))*_c12*r*(-_c0*_c13*_c7*q1_dot - _c1*_c19 + _c1*_c2*q1_dot*q2_dot + 12*_c1*_c25*q1_dot*q2_dot - _c10*_c24 - _c11*_c24 - _c13*_c15 - 16*_c15*_c7*c - _c16*_c18 - _c18*_c22 - _c19*_c3 + 4*_c2**7*q1_dot*q2_dot + 4*_c2*_c4*q1_dot*q2_dot - _c20*_c4 - _c20*_c5 + 12*_c21*_c8*q1_dot*q2_dot + _c21*q1_dot*q2_dot - 4*_c23*_c9 + 2*_c25*_c8*q1_dot*q2_dot)
     out[1] = _c12*(4*_c0**8*_c26 - _c0*_c21*_c29 - _c0*_c37*_c5 + _c0*_c39*_c6 + _c1*_c2*_c36 + 6*_c1*_c26*_c3 + _c10*_c40 + _c11*_c40 - 8*_c14*_c25*g - _c16*_c2*_c29 + _c17*_c25*_c35*_c8 - 2*_c2**8*_c26 + _c21*_c36 + _c22*_c37 + _c22*_c39 + 10*_c27*_c7 + _c27 - 2*_c28*_c8 + _c28 + _c3*_c41 + 12*_c3*_c42 + 7*_c32*_c7 + _c32 + 12*_c34*_c7 + _c34 + _c37*_c38 + _c38*_c39 + _c41*_c7 + 2*_c42*_c7)
     return out
+
+
+#: this model has no drawing (derivation/drawing.py)
+DRAWING = None
 
 
 @njit(cache=True)

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:a13467693f3fd7bd85e71679b26bf747ac61f43a33949b7fd77d6a2a5554f523
+SymPy 1.14.0; input hash sha256:5f2f1863999739db9fab8daacd4178cd8df22d9e0d53721426265ab1b9b39753
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table: heading q1, lean q2 from the vertical, rotation q3 about the axle, contact point (x, y).
 
@@ -62,7 +62,7 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'a13467693f3fd7bd85e71679b26bf747ac61f43a33949b7fd77d6a2a5554f523'
+INPUT_HASH = '5f2f1863999739db9fab8daacd4178cd8df22d9e0d53721426265ab1b9b39753'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 129, 'constants': 7, 'rhs_q': 125, 'rhs_pose': 134, 'rhs_pose_q': 130, 'pose_rates': 5, 'energy': 45, 'multipliers': 113}
@@ -400,3 +400,7 @@ def multipliers(s, p):
     out[0] = ((1.0/3.0))*_c0*_c1*q2_dot
     out[1] = (-2*_c0**8*_c13 - _c0**5*_c16*_c2 - 8*(_c0*_c0*_c0)*_c26*g - _c0*_c16*_c17 + _c10*_c29 + _c10*_c30 + _c11*_c30 + _c12*_c22 + 4*_c13*_c2**8 + 6*_c13*_c3*_c4 + 10*_c14*_c9 + _c14 - 2*_c15*_c8 + _c15 - _c2*_c23*_c6 + _c2*_c25*_c7 + 7*_c20*_c9 + _c20 + _c22 + _c23*_c24 + _c23*_c27 + _c24*_c25 + _c25*_c27 + _c28*_c3*_c9 + _c28*_c4*_c8 + 2*_c29*_c4)/(_c10*_c8 + _c11*_c8 + _c12*_c3 + _c3 + _c4 + 4*_c5 + _c7)
     return out
+
+
+#: this model has no drawing (derivation/drawing.py)
+DRAWING = None

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:3c1d7087787b87919822f7e89617c6d7ba653c0978d6702922c6b6332330e133
+SymPy 1.14.0; input hash sha256:69a6daa3d468454c41767175ae0c13d1266030d0208bc55d15fedbb00b703401
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -67,7 +67,7 @@ HAS_DISSIPATION = False
 EXPORTS = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy',)
-INPUT_HASH = '3c1d7087787b87919822f7e89617c6d7ba653c0978d6702922c6b6332330e133'
+INPUT_HASH = '69a6daa3d468454c41767175ae0c13d1266030d0208bc55d15fedbb00b703401'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 10, 'constants': 6, 'rhs_q': 4, 'energy': 9, 'invariants': 9, 'frequencies': 5, 'growth_rates': 2, 'drive_rates': 5}

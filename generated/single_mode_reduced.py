@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py and derivation/truncation.py.
-SymPy 1.14.0; input hash sha256:ba23351d6fb613651f183013e950966b877f04f91979de63e98c58b76c41eef5
+SymPy 1.14.0; input hash sha256:1b293397c8538610b5305e8d5fd98ba90d54f64816cde98f1c397bd7ee674a05
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -62,7 +62,7 @@ MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'ba23351d6fb613651f183013e950966b877f04f91979de63e98c58b76c41eef5'
+INPUT_HASH = '1b293397c8538610b5305e8d5fd98ba90d54f64816cde98f1c397bd7ee674a05'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 11, 'constants': 7, 'rhs_q': 7, 'rhs_pose': 17, 'rhs_pose_q': 14, 'pose_rates': 7, 'energy': 23, 'multipliers': 7, 'frequencies': 5}
@@ -236,6 +236,78 @@ def multipliers(s, p):
     D = p[3]
     out[0] = phi_dot*(D*phi_dot*theta - ell*theta_dot)
     out[1] = -g*theta
+    return out
+
+
+
+#: how to draw the body (derivation/drawing.py): names of the rows of ``body_points``,
+#: segments between them, the contact point, the point masses, the tilts a picture may
+#: magnify, the outline curves of ``body_outlines``
+DRAWING = {'points': ('O', 'end_minus', 'end_plus', 'mass_minus', 'mass_plus', 'C'), 'segments': (('end_minus', 'end_plus'), ('end_minus', 'mass_minus'), ('end_plus', 'mass_plus')), 'contact': 'C', 'masses': ('mass_minus', 'mass_plus'), 'magnify': ('theta',), 'outlines': (), 'description': 'bar of length 2L on the table (middle point O), masses M/2 hanging ell below its ends, contact point C = O + D theta u_phi on the bar (vinculo1, vinculo2)'}
+
+
+@njit(cache=True)
+def body_points(s, p):
+    """World coordinates (z up, table z = 0) of DRAWING["points"] at the pose-extended state ``s``; shape (6, 3) (27 operations)."""
+    out = np.empty((6, 3))
+    theta = s[0]
+    theta_dot = s[1]
+    phi_dot = s[2]
+    phi = s[3]
+    x = s[4]
+    y = s[5]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    _c0 = math.cos(phi)
+    _c1 = L*_c0
+    _c2 = _c1 - x
+    _c3 = math.sin(phi)
+    _c4 = L*_c3
+    _c5 = _c1 + x
+    _c6 = _c4 + y
+    _c7 = ell*math.sin(theta)
+    _c8 = _c3*_c7
+    _c9 = _c0*_c7
+    _c10 = -ell*math.cos(theta)
+    _c11 = D*theta
+    out[0, 0] = x
+    out[0, 1] = y
+    out[0, 2] = 0
+    out[1, 0] = -_c2
+    out[1, 1] = -_c4 + y
+    out[1, 2] = 0
+    out[2, 0] = _c5
+    out[2, 1] = _c6
+    out[2, 2] = 0
+    out[3, 0] = -_c2 - _c8
+    out[3, 1] = -_c4 + _c9 + y
+    out[3, 2] = _c10
+    out[4, 0] = _c5 - _c8
+    out[4, 1] = _c6 + _c9
+    out[4, 2] = _c10
+    out[5, 0] = _c0*_c11 + x
+    out[5, 1] = _c11*_c3 + y
+    out[5, 2] = 0
+    return out
+
+
+@njit(cache=True)
+def body_outlines(s, p, uu):
+    """World coordinates of the curves DRAWING["outlines"] at the parameters ``uu`` in [0, 2 pi); shape (0, len(uu), 3) (0 operations)."""
+    out = np.empty((0, uu.shape[0], 3))
+    theta = s[0]
+    theta_dot = s[1]
+    phi_dot = s[2]
+    phi = s[3]
+    x = s[4]
+    y = s[5]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+
     return out
 
 

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py and derivation/truncation.py.
-SymPy 1.14.0; input hash sha256:5f0b664a979267b1c5b4e1bcf87020c4e2e7ee3b55c3131f3294e72efd3401d8
+SymPy 1.14.0; input hash sha256:6dd1b55fc4a1e878abc2865b18c13de022497fd101ac0cfee78d830713162b6b
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -65,7 +65,7 @@ MULTIPLIER_NAMES = ('Const22', 'Const23')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '5f0b664a979267b1c5b4e1bcf87020c4e2e7ee3b55c3131f3294e72efd3401d8'
+INPUT_HASH = '6dd1b55fc4a1e878abc2865b18c13de022497fd101ac0cfee78d830713162b6b'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 80, 'constants': 52, 'rhs_q': 35, 'rhs_pose': 91, 'rhs_pose_q': 46, 'pose_rates': 13, 'energy': 58, 'multipliers': 56, 'frequencies': 12}
@@ -385,6 +385,140 @@ def multipliers(s, p):
     _c11 = _c4*phi_dot
     out[0] = _c3*(D*_c2*_c4*_c8*theta2 - D*_c5*_c6*_c8 + _c1*_c4*g*theta2 - _c10*_c11*theta1_dot - _c5*_c7 + _c6*phi_dot*theta2_dot*(D*_c0*(_c4*_c4) - _c9))
     out[1] = _c3*(-_c1*_c7*theta2 - _c10*_c11*theta2_dot + _c10*_c6*phi_dot*theta1_dot - _c4*_c5*g)
+    return out
+
+
+
+#: how to draw the body (derivation/drawing.py): names of the rows of ``body_points``,
+#: segments between them, the contact point, the point masses, the tilts a picture may
+#: magnify, the outline curves of ``body_outlines``
+DRAWING = {'points': ('O', 'end_minus', 'end_plus', 'mass_minus', 'mass_plus', 'C', 'circle_centre'), 'segments': (('end_minus', 'end_plus'), ('end_minus', 'mass_minus'), ('end_plus', 'mass_plus'), ('O', 'circle_centre')), 'contact': 'C', 'masses': ('mass_minus', 'mass_plus'), 'magnify': ('theta1', 'theta2'), 'outlines': ('contact_circle',), 'description': 'bar of length 2L (middle point O), masses M/2 hanging ell below its ends, the contact circle of radius D at the chiral angle alpha, contact point C its lowest point'}
+
+
+@njit(cache=True)
+def body_points(s, p):
+    """World coordinates (z up, table z = 0) of DRAWING["points"] at the pose-extended state ``s``; shape (7, 3) (98 operations)."""
+    out = np.empty((7, 3))
+    theta1 = s[0]
+    theta2 = s[1]
+    theta1_dot = s[2]
+    theta2_dot = s[3]
+    phi_dot = s[4]
+    phi = s[5]
+    x = s[6]
+    y = s[7]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+    _c0 = math.cos(theta1)
+    _c1 = math.cos(theta2)
+    _c2 = math.sin(alpha)
+    _c3 = math.sin(theta1)
+    _c4 = _c2*_c3
+    _c5 = math.cos(alpha)
+    _c6 = math.sin(theta2)
+    _c7 = _c0*_c6
+    _c8 = _c4 - _c5*_c7
+    _c9 = 1/math.sqrt((_c0*_c0)*(_c1*_c1) + (_c8*_c8))
+    _c10 = _c0*_c1
+    _c11 = -D*_c10*_c9 + D
+    _c12 = -_c8
+    _c13 = D*_c12*_c9
+    _c14 = -D*_c0*_c12*_c5*_c6*_c9 + _c10*_c11 + _c13*_c4
+    _c15 = math.cos(phi)
+    _c16 = math.sin(phi)
+    _c17 = _c16*_c6
+    _c18 = _c1*_c15 - _c17*_c3
+    _c19 = L*_c18
+    _c20 = _c19 - x
+    _c21 = _c1*_c16
+    _c22 = _c15*_c6
+    _c23 = _c21 + _c22*_c3
+    _c24 = L*_c23
+    _c25 = _c24 - y
+    _c26 = L*_c7
+    _c27 = _c14 - _c26
+    _c28 = _c19 + x
+    _c29 = _c24 + y
+    _c30 = _c14 + _c26
+    _c31 = _c21*_c3 + _c22
+    _c32 = _c31*ell
+    _c33 = -_c1*_c15*_c3 + _c17
+    _c34 = _c33*ell
+    _c35 = _c10*ell
+    _c36 = _c0*_c13*_c2
+    _c37 = _c13*_c5
+    out[0, 0] = x
+    out[0, 1] = y
+    out[0, 2] = -_c14
+    out[1, 0] = -_c20
+    out[1, 1] = -_c25
+    out[1, 2] = -_c27
+    out[2, 0] = _c28
+    out[2, 1] = _c29
+    out[2, 2] = -_c30
+    out[3, 0] = -_c20 - _c32
+    out[3, 1] = -_c25 - _c34
+    out[3, 2] = -_c27 - _c35
+    out[4, 0] = _c28 - _c32
+    out[4, 1] = _c29 - _c34
+    out[4, 2] = -_c30 - _c35
+    out[5, 0] = _c11*_c31 - _c16*_c36 + _c18*_c37 + x
+    out[5, 1] = _c11*_c33 + _c15*_c36 + _c23*_c37 + y
+    out[5, 2] = 0
+    out[6, 0] = D*_c31 + x
+    out[6, 1] = D*_c33 + y
+    out[6, 2] = D*_c0*_c1 - _c14
+    return out
+
+
+@njit(cache=True)
+def body_outlines(s, p, uu):
+    """World coordinates of the curves DRAWING["outlines"] at the parameters ``uu`` in [0, 2 pi); shape (1, len(uu), 3) (77 operations)."""
+    out = np.empty((1, uu.shape[0], 3))
+    theta1 = s[0]
+    theta2 = s[1]
+    theta1_dot = s[2]
+    theta2_dot = s[3]
+    phi_dot = s[4]
+    phi = s[5]
+    x = s[6]
+    y = s[7]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+    for j in range(uu.shape[0]):
+        u = uu[j]
+        _c0 = math.sin(phi)
+        _c1 = math.sin(alpha)
+        _c2 = math.cos(theta1)
+        _c3 = math.sin(u)
+        _c4 = D*_c3
+        _c5 = _c1*_c2*_c4
+        _c6 = math.cos(phi)
+        _c7 = math.cos(theta2)
+        _c8 = math.sin(theta1)
+        _c9 = math.sin(theta2)
+        _c10 = _c0*_c9
+        _c11 = math.cos(alpha)
+        _c12 = _c11*_c4
+        _c13 = -D*math.cos(u) + D
+        _c14 = _c6*_c9
+        _c15 = _c0*_c7
+        _c16 = _c11*_c2*_c9
+        _c17 = _c2*_c7
+        _c18 = _c1*_c8
+        _c19 = -_c16 + _c18
+        _c20 = 1/math.sqrt((_c19*_c19) + (_c2*_c2)*(_c7*_c7))
+        _c21 = D*_c20
+        _c22 = -_c19
+        out[0, j, 0] = -_c0*_c5 + _c12*(-_c10*_c8 + _c6*_c7) + _c13*(_c14 + _c15*_c8) + x
+        out[0, j, 1] = _c12*(_c14*_c8 + _c15) + _c13*(_c10 - _c6*_c7*_c8) + _c5*_c6 + y
+        out[0, j, 2] = D*_c1*_c3*_c8 + D*_c11*_c2*_c20*_c22*_c9 + _c13*_c2*_c7 - _c16*_c4 - _c17*(D - _c17*_c21) - _c18*_c21*_c22
     return out
 
 

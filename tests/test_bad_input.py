@@ -139,3 +139,225 @@ def test_smallest_fixed_step_still_accepted_and_step_budget_reported(two):
     r = _call(two, method="RK4", h=1e-9, t_span=(0.0, 1.0), max_steps=1000)
     assert not r.success and r.outcome is Status.MAX_STEPS and r.nsteps == 1000
     assert r.t[-1] == pytest.approx(1e-6)
+
+
+# -- SciPy methods honour `max_steps` -------------------------------------------
+SCIPY = ["scipy:RK45", "scipy:DOP853", "scipy:LSODA", "scipy:Radau"]
+
+
+@pytest.mark.parametrize("method", SCIPY)
+def test_scipy_methods_stop_at_max_steps_and_say_so(two, method):
+    """`--t-end 1e12` with a SciPy method used to run until interrupted: the budget now ends it."""
+    r = _call(two, method=method, t_span=(0.0, 1e12), max_steps=25)
+    assert not r.success and r.outcome is Status.MAX_STEPS and r.status == Status.MAX_STEPS.code
+    assert r.nsteps == 25 and r.t.size == 26 and r.t[-1] < 1e12
+    assert np.isfinite(r.y).all()
+    r = _call(two, method=method, t_span=(0.0, 1e12), max_steps=25, t_eval=[0.0, 1.0, 1e12])
+    assert not r.success and r.nsteps == 25 and r.t[-1] < 1e12
+
+
+@pytest.mark.parametrize("method", SCIPY)
+def test_scipy_methods_stepped_here_agree_with_solve_ivp(method):
+    """Stepping SciPy's solver ourselves gives solve_ivp's output and events (the same steps, the same
+    dense output, the same root finder), with every step stored and at `t_eval`: the single-mode scene
+    of the paper's Fig. 'numerical', whose spin reverses once near t = 106."""
+    from scipy.integrate import solve_ivp
+
+    m = ke.load("single_mode", "full")
+    p, y0 = m.params(g=1.0, ell=1.0, L=1.0, D=1.0), m.state(theta=1e-3, theta_dot=0.0, phi_dot=0.1)
+    k = m.index("phi_dot")
+    rtol = 1e-6 if method == "scipy:Radau" else 1e-9
+
+    def spin(t, y):
+        return y[k]
+
+    fun = lambda t, y: m.rhs(t, y, p)  # noqa: E731
+    for t_eval in (None, np.linspace(0.0, 150.0, 57)):
+        ref = solve_ivp(fun, (0.0, 150.0), y0, method=method.split(":")[1], rtol=rtol, atol=1e-12,
+                        t_eval=t_eval, events=spin)
+        r = ke.simulate(m, y0, (0.0, 150.0), p, method=method, rtol=rtol, atol=1e-12, t_eval=t_eval)
+        assert r.success and ref.status == 0
+        assert r.reversal_times.size == 1 and ref.t_events[0].size == 1
+        np.testing.assert_array_equal(r.t, ref.t)
+        np.testing.assert_allclose(r.y, ref.y, rtol=0, atol=1e-15)
+        np.testing.assert_allclose(r.reversal_times, ref.t_events[0], rtol=1e-14)
+        assert r.nfev == ref.nfev
+
+
+# -- the command line: one line `error: ...`, exit status 2, never a traceback ----------------
+from knifeedge.cli import main  # noqa: E402
+
+BAD_CLI = [
+    # what the command line would allocate is bounded, and the flag named
+    (["simulate", "--n-eval", "100000000000"], "`--n-eval`"),
+    (["simulate", "--n-eval", "1"], "`--n-eval`"),
+    (["simulate", "--n-eval", "2.5"], "`--n-eval`"),
+    (["simulate", "--n-eval", "x"], "`--n-eval`"),
+    (["simulate", "--max-steps", "2**70"], "`--max-steps`"),
+    (["simulate", "--max-steps", "0"], "`--max-steps`"),
+    (["simulate", "--h", "0.1"], "`h`"),
+    (["simulate", "--method", "RK4"], "`h`"),
+    (["simulate", "--method", "RK4", "--h", "1e-17"], "`h`"),
+    (["simulate", "--rtol", "10"], "`rtol`"),
+    (["simulate", "--atol", "1e300"], "`atol`"),
+    (["simulate", "--max-step", "-1"], "`max_step`"),
+    (["simulate", "--t-start", "5", "--t-end", "5"], "`--t-end`"),
+    (["simulate", "--set", "D=1", "--set", "D=2"], "`--set`"),
+    (["simulate", "--set", "theta=1j"], "`--set theta`"),
+    (["simulate", "--set", "D=10**400"], "`--set D`"),
+    (["simulate", "--set", "method=DP54"], "`--set method`"),
+    (["simulate", "--set", "E=1"], "`--set`"),
+    (["simulate", "--set", "D=-1"], "`D`"),
+    (["simulate", "--out", "x.txt"], "`--out`"),
+    (["scene", "numerical", "--set", "n_eval=1e12"], "`--set n_eval`"),
+    (["scene", "numerical", "--set", "n_eval=2.5"], "`--set n_eval`"),
+    (["scene", "numerical", "--set", "max_steps=2**70"], "`--set max_steps`"),
+    (["scene", "numerical", "--set", "pose=maybe"], "`--set pose`"),
+    (["scene", "numerical", "--set", "method=", "t_end=1"], "`--set method`"),
+    (["sweep", "numerical", "--grid", "D=1:2:1e12"], "`--grid D`"),
+    (["sweep", "numerical", "--grid", "D=1:2:2.7"], "`--grid D`"),
+    (["sweep", "numerical", "--grid", "D=1,2", "--grid", "D=3"], "`--grid`"),
+    (["sweep", "numerical", "--grid", "D=1:2:3:4"], "`--grid D`"),
+    (["sweep", "numerical", "--grid", "D=0:2:3"], "`--grid D`"),
+    (["sweep", "numerical", "--grid", "method=a:b:3"], "`--grid method`"),
+    (["sweep", "numerical", "--grid", "D=1:2:1000", "phi_dot=1:2:1000", "L=1:2:1000"], "`--grid`"),
+    (["demo", "--out", "noext"], "`--out`"),
+    (["demo", "--t-end", "nan"], "--t-end"),
+]
+
+
+@pytest.mark.parametrize("argv,needle", BAD_CLI, ids=[" ".join(a)[:60] for a, _ in BAD_CLI])
+def test_cli_refuses_bad_input_in_one_line(capsys, argv, needle):
+    try:
+        rc = main(argv)
+    except SystemExit as exc:  # argparse's own refusals
+        rc = exc.code
+    out, err = capsys.readouterr()
+    assert rc == 2, (out, err)
+    assert "Traceback" not in err and err.count("\n") == 1 and "error:" in err
+    assert needle in err
+
+
+def test_cli_takes_the_step_and_the_step_budget(capsys):
+    """`--h` and `--max-steps` exist (the RK4 error asks for `h`); a spent budget is a reported failure (exit 1)."""
+    assert main(["simulate", "--method", "RK4", "--h", "0.05", "--t-end", "10"]) == 0
+    out, _ = capsys.readouterr()
+    assert "RK4, h=0.05: 200 steps" in out
+    assert main(["simulate", "--method", "scipy:RK45", "--t-end", "1e12", "--max-steps", "20"]) == 1
+    out, err = capsys.readouterr()
+    assert "20 steps" in out and "maximum number of solver steps" in err
+
+
+def test_cli_set_takes_the_run_settings_its_help_lists(tmp_path, capsys):
+    """`scene --set` says it takes method and fidelity: they are text, not numbers."""
+    from knifeedge.cli import assignments, grid_assignments
+
+    assert assignments(["method=DP54", "fidelity=full", "pose=true", "n_eval=1e3", "max_steps=2**20", "D=pi/4"]) == {
+        "method": "DP54", "fidelity": "full", "pose": True, "n_eval": 1000, "max_steps": 2**20, "D": math.pi / 4}
+    assert grid_assignments(["method=DP54,RK45", "D=1:4:3"]) == {"method": ["DP54", "RK45"], "D": [1.0, 2.0, 4.0]}
+    png = tmp_path / "s.png"
+    assert main(["scene", "numerical", "--set", "method=DP54", "fidelity=full", "--out", str(png)]) == 0
+    out, _ = capsys.readouterr()
+    assert "DP54" in out and "(full" in out and png.exists()
+
+
+# -- reversal theory and the noisy loop: bounded work, named arguments, progress -----------------
+from knifeedge.background import noisy_intervals, simulate_noisy  # noqa: E402
+from knifeedge.reversal import MAX_INTERVALS, reversal_time  # noqa: E402
+
+
+@pytest.fixture(scope="module")
+def reduced2():
+    return ke.load("two_mode", "reduced")
+
+
+BAD_REVERSAL = [
+    (dict(n_intervals=10**7), ValueError, "`n_intervals`"),
+    (dict(n_intervals=MAX_INTERVALS + 1), ValueError, "`n_intervals`"),
+    (dict(n_intervals=1), ValueError, "`n_intervals`"),
+    (dict(n_intervals=4.0), TypeError, "`n_intervals`"),
+    (dict(n_intervals=True), TypeError, "`n_intervals`"),
+    (dict(n_intervals="4"), TypeError, "`n_intervals`"),
+    (dict(background=1e-6j), TypeError, "`background`"),
+    (dict(background="1e-6"), TypeError, "`background`"),
+    (dict(background=[True, 0]), TypeError, "`background`"),
+    (dict(background=[1e-6]), ValueError, "`background`"),
+    (dict(background=-1e-6), ValueError, "`background`"),
+    (dict(background=math.nan), ValueError, "`background`"),
+    (dict(progress="yes"), TypeError, "`progress`"),
+    (dict(y0=[True, 0, 0, 0, 0.1]), TypeError, "`y0`"),
+]
+
+
+@pytest.mark.parametrize("kw,exc,text", BAD_REVERSAL, ids=[repr(c[0])[:50] for c in BAD_REVERSAL])
+def test_reversal_time_refuses_bad_input(reduced2, kw, exc, text):
+    kw = {"p": P2, "y0": Y2, **kw}
+    with pytest.raises(exc) as info:
+        reversal_time(reduced2, kw.pop("p"), kw.pop("y0"), **kw)
+    assert text in str(info.value)
+
+
+def test_reversal_time_reports_progress_of_many_intervals(reduced2):
+    """`n_intervals` up to the bound is computed, and a callback sees every interval; with a background
+    the intervals alternate between two values (module docstring of knifeedge.reversal)."""
+    seen = []
+    r = reversal_time(reduced2, P2, Y2, background=1e-6, n_intervals=50, progress=lambda d, n: seen.append((d, n)))
+    assert seen == [(i, 50) for i in range(1, 51)]
+    assert r.intervals.shape == (50,)
+    np.testing.assert_allclose(r.intervals[2::2], r.intervals[0], rtol=1e-9)
+    np.testing.assert_allclose(r.intervals[3::2], r.intervals[1], rtol=1e-9)
+
+
+@pytest.mark.parametrize("kw,exc,text", [
+    (dict(t_end=1e12), ValueError, "`t_end`"),
+    (dict(t_end=1e6, h=1e-12), ValueError, "`h`"),
+    (dict(t_end="10"), TypeError, "`t_end`"),
+    (dict(sigma="1e-6"), TypeError, "`sigma`"),
+    (dict(sigma=-1.0), ValueError, "`sigma`"),
+    (dict(seed=-1), ValueError, "`seed`"),
+    (dict(seed=1.5), TypeError, "`seed`"),
+    (dict(max_reversals=0), ValueError, "`max_reversals`"),
+    (dict(max_reversals=10**12), ValueError, "`max_reversals`"),
+])
+def test_noisy_loop_refuses_unbounded_or_bad_input(kw, exc, text):
+    """The noisy RK4 loop is one compiled call: its work is bounded before it starts (at most
+    MAX_NOISY_STEPS steps), and a step below the resolution of t (which never advanced t) is refused."""
+    m = ke.load("two_mode", "full")
+    kw = {"t_end": 10.0, "sigma": 1e-6, **kw}
+    with pytest.raises(exc) as info:
+        simulate_noisy(m, Y2, kw.pop("t_end"), P2, kw.pop("sigma"), **kw)
+    assert text in str(info.value)
+
+
+def test_noisy_intervals_bounded(reduced2):
+    with pytest.raises(ValueError, match="`n_intervals`"):
+        noisy_intervals(ke.load("two_mode", "full"), P2, Y2, 1e-6, 10**6)
+
+
+# -- Model's compiled quantities: the compiled functions do not check bounds, so the wrappers do ----------
+@pytest.mark.parametrize("call,exc,text", [
+    (lambda m, mp, p: m.energy([1e-3, 0.1], p), ValueError, "`y`"),  # read past the end before
+    (lambda m, mp, p: m.energy("abc", p), TypeError, "`y`"),
+    (lambda m, mp, p: m.energy([True] * 5, p), TypeError, "`y`"),
+    (lambda m, mp, p: m.energy(np.zeros((5, 2, 2)), p), ValueError, "`y`"),
+    (lambda m, mp, p: m.energy(np.full(5, np.nan), p), ValueError, "`y`"),
+    (lambda m, mp, p: m.energy(np.zeros(5), [1.0, 2.0]), ValueError, "`p`"),
+    (lambda m, mp, p: m.multipliers([1e-3, 0.1], p), ValueError, "`y`"),
+    (lambda m, mp, p: m.multipliers(np.zeros(5), "p"), TypeError, "`p`"),
+    (lambda m, mp, p: mp.pose_rates(np.zeros(5), p), ValueError, "`y`"),  # returned uninitialized memory before
+    (lambda m, mp, p: mp.pose_rates(np.zeros((8, 3)), p), ValueError, "`y`"),
+    (lambda m, mp, p: m.params([1, 1, 2, 0.5, 0.7]), TypeError, "`p`"),
+    (lambda m, mp, p: m.state([0, 0, 0, 0, 0.1]), TypeError, "`y0`"),
+])
+def test_model_functions_refuse_wrong_shapes_and_types(call, exc, text):
+    m, mp = ke.load("two_mode"), ke.load("two_mode", pose=True)
+    with pytest.raises(exc) as info:
+        call(m, mp, m.params(**P2))
+    assert text in str(info.value)
+
+
+def test_model_functions_accept_the_closed_state_of_a_pose_model():
+    """Energy of a pose-extended model ignores the pose: the closed state alone gives the same number."""
+    m, mp = ke.load("two_mode"), ke.load("two_mode", pose=True)
+    p, y = m.params(**P2), m.state(**Y2)
+    assert mp.energy(y, p) == mp.energy(np.r_[y, 0.3, 1.0, -2.0], p) == m.energy(y, p)

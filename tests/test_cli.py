@@ -63,7 +63,7 @@ def test_simulate_two_mode_by_name_to_npz(capsys, tmp_path):
     (["simulate", "--fidelity", "exact"], "`fidelity`"),
     (["simulate", "--model", "three_mode"], "`--model`"),
     (["simulate", "--method", "Euler"], "`method`"),
-    (["simulate", "--t-end", "-5"], "`t_span`"),
+    (["simulate", "--t-end", "-5"], "`--t-end`"),
     (["simulate", "--out", "x.txt"], "`--out`"),
     (["scene", "nope"], "`name`"),
     (["scene"], "scene NAME"),
@@ -107,9 +107,9 @@ def test_sweep_command_resumes_from_its_file(capsys, tmp_path):
             "--out", str(out_file)]
     rc, out, err = run(capsys, *argv)
     assert rc == 0, err
-    assert "2 runs (2 computed, 0 read back" in out
+    assert "2 runs: 2 computed, 0 read back" in out
     rc, out, err = run(capsys, *argv)
-    assert "2 runs (0 computed, 2 read back" in out
+    assert "2 runs: 0 computed, 2 read back" in out
 
 
 def test_figures_command_writes_pngs_and_an_index(capsys, tmp_path):
@@ -121,7 +121,10 @@ def test_figures_command_writes_pngs_and_an_index(capsys, tmp_path):
     for text in (html, md):
         assert "Numerical solution of the single mode rattleback" in text  # the paper's caption
         assert "t_R_theory" in text and "supports" in text
-    assert "figures: [2/2]" in err  # progress
+    assert "figures: [3/3]" in err  # progress: two scenes and the animation of numerical
+    assert (tmp_path / "numerical.gif").exists() and not (tmp_path / "amplitudes.gif").exists()
+    for text in (html, md):
+        assert "numerical.gif" in text and "tilt angles drawn x4" in text
 
 
 def test_bench_points_to_make_bench(capsys):

@@ -13,10 +13,13 @@ integrates them and never imports SymPy.
 """
 from .models import FIDELITIES, MODEL_NAMES, Model, ValidityWarning, available, load
 from .simulate import METHODS, SimulationResult, simulate
-from .scenes import RunSpec, Scene, get_scene as scene, scene_names
+from .runspec import RunSpec
+from .scenes import Scene, get_scene as scene, scene_names
 from .sweep import SweepTable, sweep
 from .reversal import ReversalPrediction, reversal_time
+from .animation import animate
 
 __version__ = "0.1.0"
-__all__ = ["load", "available", "ValidityWarning", "simulate", "Model", "SimulationResult", "METHODS", "MODEL_NAMES", "FIDELITIES",
-           "sweep", "SweepTable", "scene", "scene_names", "Scene", "RunSpec", "reversal_time", "ReversalPrediction"]
+__all__ = ["load", "available", "ValidityWarning", "simulate", "Model", "SimulationResult", "METHODS", "MODEL_NAMES",
+           "FIDELITIES", "sweep", "SweepTable", "scene", "scene_names", "Scene", "RunSpec", "reversal_time",
+           "ReversalPrediction", "animate"]

@@ -41,10 +41,13 @@ import math
 import numpy as np
 from numba import njit
 
+from . import _validate
 from .models import Model
 from .reversal import ReversalPrediction, _amplitude_module
 
 EULER_GAMMA = 0.5772156649015329
+#: most RK4 steps one :func:`simulate_noisy` call takes (about 1-2 microseconds each, in one compiled loop)
+MAX_NOISY_STEPS = 10**7
 
 
 def noise_floor(model: Model, p, prediction: ReversalPrediction, sigma: float) -> np.ndarray:
@@ -62,8 +65,7 @@ def noise_floor(model: Model, p, prediction: ReversalPrediction, sigma: float) -
     ndarray, shape (n_tilts,)
         ``epsilon_i`` (rad), to pass as ``background`` to ``reversal_time``.
     """
-    if isinstance(sigma, bool) or not isinstance(sigma, (int, float, np.integer, np.floating)) \
-            or not (math.isfinite(sigma) and sigma >= 0):
+    if not (math.isfinite(_validate.real(sigma, "`sigma`")) and sigma >= 0):
         raise ValueError(f"`sigma` must be a finite number >= 0, got {sigma!r}")
     p = model.check_params(p)
     omega = np.asarray(_amplitude_module(model).frequencies(p))
@@ -134,10 +136,21 @@ def simulate_noisy(model: Model, y0, t_end: float, p, sigma: float, h: float = 0
     y0 = model.check_state(y0)
     p = model.check_params(p)
     for name, v in (("t_end", t_end), ("h", h)):
-        if isinstance(v, bool) or not isinstance(v, (int, float)) or not (math.isfinite(v) and v > 0):
+        if not (math.isfinite(_validate.real(v, f"`{name}`")) and v > 0):
             raise ValueError(f"`{name}` must be a positive number, got {v!r}")
-    if isinstance(sigma, bool) or not isinstance(sigma, (int, float)) or not (math.isfinite(sigma) and sigma >= 0):
+    t_end, h = float(t_end), float(h)
+    if h <= 10 * math.ulp(t_end):
+        raise ValueError(f"`h` = {h!r} is below the resolution of t up to `t_end` = {t_end:g}: t would not advance")
+    if t_end / h > MAX_NOISY_STEPS:
+        raise ValueError(f"`t_end`/`h` = {t_end / h:.3g} steps, more than the {MAX_NOISY_STEPS:.0e} allowed "
+                         f"in one call (a compiled loop that Ctrl-C cannot stop): shorten `t_end` or enlarge `h`")
+    if not (math.isfinite(_validate.real(sigma, "`sigma`")) and sigma >= 0):
         raise ValueError(f"`sigma` must be a finite number >= 0, got {sigma!r}")
+    for name, v, high in (("seed", seed, 2**32 - 1), ("max_reversals", max_reversals, 10**6)):
+        if isinstance(v, (bool, np.bool_)) or not isinstance(v, (int, np.integer)):
+            raise TypeError(f"`{name}` must be an integer, got {v!r}")
+        if not (0 if name == "seed" else 1) <= v <= high:
+            raise ValueError(f"`{name}` must be an integer from {0 if name == 'seed' else 1} to {high}, got {v!r}")
     rate_of = dict(model.rate_pairs)
     noise_index = np.array([model.index(rate_of[q]) for q in model.tilt_names], dtype=np.int64)
     rev, t = _loop(model.rhs, y0, p, float(t_end), float(h), noise_index, float(sigma),
@@ -155,10 +168,12 @@ def noisy_intervals(model: Model, p, y0, sigma: float, n_intervals: int = 6) -> 
         ``T_{2j-1} = T_{2j} = T(epsilon sqrt(j))``, ``epsilon`` from
         :func:`noise_floor` (see the module docstring).
     """
-    from .reversal import reversal_time
+    from .reversal import MAX_INTERVALS, reversal_time
 
-    if isinstance(n_intervals, bool) or not isinstance(n_intervals, (int, np.integer)) or n_intervals < 1:
-        raise ValueError(f"`n_intervals` must be a positive integer, got {n_intervals!r}")
+    if isinstance(n_intervals, (bool, np.bool_)) or not isinstance(n_intervals, (int, np.integer)):
+        raise TypeError(f"`n_intervals` must be a positive integer, got {n_intervals!r}")
+    if not 1 <= n_intervals <= MAX_INTERVALS:
+        raise ValueError(f"`n_intervals` must be an integer from 1 to {MAX_INTERVALS}, got {n_intervals!r}")
     clean = reversal_time(model, p, y0)
     eps = noise_floor(model, p, clean, sigma)
     out = np.empty(n_intervals)

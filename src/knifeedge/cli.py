@@ -1,6 +1,6 @@
 """Command line: ``knifeedge COMMAND --help``.
 
-Commands: ``demo``, ``simulate``, ``derive``, ``scene``, ``figures``, ``sweep``, ``bench``.
+Commands: ``demo``, ``simulate``, ``derive``, ``scene``, ``figures``, ``sweep``, ``animate``, ``bench``.
 Errors are one line on stderr and a non-zero exit status, not a traceback.
 """
 from __future__ import annotations
@@ -9,6 +9,7 @@ import argparse
 import ast
 import math
 import operator
+import os
 import sys
 from pathlib import Path
 
@@ -25,7 +26,7 @@ def command(name: str, help: str):
 
 def _demo_args(sub: argparse.ArgumentParser) -> None:
     sub.add_argument("--out", type=Path, default=Path("knifeedge-demo.png"), help="PNG to write (default: %(default)s)")
-    sub.add_argument("--t-end", type=float, default=300.0, help="end time in units of sqrt(ell/g) (default: %(default)s)")
+    sub.add_argument("--t-end", type=number, default=300.0, help="end time in units of sqrt(ell/g) (default: %(default)s)")
 
 
 @command("demo", "single-mode spin reversal (paper Fig. 'numerical'): print the result, write a plot")
@@ -34,6 +35,8 @@ def demo(args) -> int:
 
     from . import load, simulate
 
+    if args.out.suffix.lower() != ".png":
+        raise ValueError(f"`--out` must end in .png, got {args.out.name!r}")
     model = load("single_mode", fidelity="full")
     p = model.params(g=1.0, ell=1.0, L=1.0, D=1.0)
     y0 = {"theta": 1e-3, "theta_dot": 0.0, "phi_dot": 0.1}
@@ -97,37 +100,109 @@ def number(text: str) -> float:
         raise ValueError(f"{text!r} is not a number (accepted: 0.5, 1e-3, pi/4, 2*pi)") from None
 
 
+#: most output samples (``--n-eval``, ``n_eval``) the command line will allocate: 8 MB per state
+MAX_N_EVAL = 1_000_000
+#: most values one ``--grid`` range may make, and most runs a sweep may start
+MAX_GRID_VALUES = 100_000
+MAX_SWEEP_RUNS = 1_000_000
+
+
+def count(text: str, what: str, high: int | None = None) -> int:
+    """A positive integer from text (``4001``, ``1e4``, ``2**20``), at most ``high``; errors name ``what``."""
+    try:
+        v = number(text)
+    except ValueError:
+        raise ValueError(f"{what} must be a positive integer, got {text!r}") from None
+    if not (math.isfinite(v) and v == int(v) and v >= 1):
+        raise ValueError(f"{what} must be a positive integer, got {text!r}")
+    if high is not None and v > high:
+        limit = "2**63 - 1" if high == 2**63 - 1 else str(high)
+        raise ValueError(f"{what} must be at most {limit}, got {text!r}")
+    return int(v)
+
+
+def _flag(text: str, what: str) -> bool:
+    t = text.strip().lower()
+    if t in ("true", "yes", "1", "on"):
+        return True
+    if t in ("false", "no", "0", "off"):
+        return False
+    raise ValueError(f"{what} must be true or false, got {text!r}")
+
+
+def _text(text: str, what: str) -> str:
+    t = text.strip()
+    if not t:
+        raise ValueError(f"{what} needs a value")
+    return t
+
+
+#: run settings that are not real numbers, and how the command line reads them (the others are numbers)
+SETTING_READERS = {
+    "method": _text,
+    "fidelity": _text,
+    "pose": _flag,
+    "n_eval": lambda text, what: count(text, what, MAX_N_EVAL),
+    "max_steps": lambda text, what: count(text, what, 2**63 - 1),
+}
+
+
+def value(name: str, text: str, what: str):
+    """The value of ``NAME=TEXT``: a number, or what :data:`SETTING_READERS` reads for a setting."""
+    reader = SETTING_READERS.get(name)
+    if reader is not None:
+        return reader(text, f"`{what} {name}`")
+    try:
+        return number(text)
+    except ValueError as exc:
+        raise ValueError(f"`{what} {name}`: {exc}") from None
+
+
 def assignments(items, what: str = "--set") -> dict:
-    """``["D=0.5", "phi_dot=pi/30"]`` -> ``{"D": 0.5, "phi_dot": 0.1047...}``."""
+    """``["D=0.5", "phi_dot=pi/30", "method=DP54"]`` -> ``{"D": 0.5, "phi_dot": 0.1047..., "method": "DP54"}``.
+
+    A name given twice is refused (not silently the last).
+    """
     out = {}
     for item in items or ():
-        name, sep, value = item.partition("=")
-        if not sep or not name.strip():
+        name, sep, text = item.partition("=")
+        name = name.strip()
+        if not sep or not name:
             raise ValueError(f"`{what}` expects NAME=VALUE, got {item!r}")
-        out[name.strip()] = number(value)
+        if name in out:
+            raise ValueError(f"`{what}` gives {name!r} twice; give each name once")
+        out[name] = value(name, text, what)
     return out
 
 
 def grid_assignments(items) -> dict:
-    """``["phi_dot=0.05,0.1,0.2"]`` -> ``{"phi_dot": [0.05, 0.1, 0.2]}``; also ``NAME=START:STOP:N`` (geometric)."""
+    """``["phi_dot=0.05,0.1,0.2"]`` -> ``{"phi_dot": [0.05, 0.1, 0.2]}``; also ``NAME=START:STOP:N`` (geometric).
+
+    ``N`` must be a whole number (at most :data:`MAX_GRID_VALUES`); a name given twice is refused.
+    """
     out = {}
     for item in items or ():
         name, sep, values = item.partition("=")
-        if not sep or not name.strip() or not values.strip():
+        name = name.strip()
+        if not sep or not name or not values.strip():
             raise ValueError(f"`--grid` expects NAME=V1,V2,... or NAME=START:STOP:N, got {item!r}")
+        if name in out:
+            raise ValueError(f"`--grid` gives {name!r} twice; list all its values in one --grid {name}=V1,V2,...")
         if ":" in values:
             parts = values.split(":")
             if len(parts) != 3:
-                raise ValueError(f"`--grid` range must be START:STOP:N, got {values!r}")
-            a, b = number(parts[0]), number(parts[1])
-            n = int(number(parts[2]))
-            if n < 1 or a <= 0 or b <= 0:
-                raise ValueError(f"`--grid` range {values!r}: START, STOP must be positive and N >= 1 (geometric spacing)")
+                raise ValueError(f"`--grid {name}` range must be START:STOP:N, got {values!r}")
+            if name in SETTING_READERS:
+                raise ValueError(f"`--grid {name}` takes a list of values ({name}=V1,V2,...), not a range")
+            a, b = value(name, parts[0], "--grid"), value(name, parts[1], "--grid")
+            n = count(parts[2], f"`--grid {name}` range's N", MAX_GRID_VALUES)
+            if a <= 0 or b <= 0:
+                raise ValueError(f"`--grid {name}` range {values!r}: START and STOP must be positive (geometric spacing)")
             import numpy as np
 
-            out[name.strip()] = [float(v) for v in np.geomspace(a, b, n)]
+            out[name] = [float(v) for v in np.geomspace(a, b, n)]
         else:
-            out[name.strip()] = [number(v) for v in values.split(",")]
+            out[name] = [value(name, v, "--grid") for v in values.split(",")]
     return out
 
 
@@ -137,6 +212,23 @@ def default_state(model) -> dict:
     y0 = dict(model.default_state)
     y0.update({n: 0.0 for n in model.state_names if n not in y0 and n in model.pose_names})
     return y0
+
+
+def _n_eval(text: str) -> int:
+    try:
+        n = count(text, "`--n-eval`", MAX_N_EVAL)
+    except ValueError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
+    if n < 2:
+        raise argparse.ArgumentTypeError(f"`--n-eval` must be at least 2, got {text!r}")
+    return n
+
+
+def _max_steps(text: str) -> int:
+    try:
+        return count(text, "`--max-steps`", 2**63 - 1)
+    except ValueError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
 
 
 def _simulate_args(sub: argparse.ArgumentParser) -> None:
@@ -158,9 +250,22 @@ def _simulate_args(sub: argparse.ArgumentParser) -> None:
     sub.add_argument("--method", default="DOP853", help="integration method, see knifeedge.METHODS (default: %(default)s)")
     sub.add_argument("--rtol", type=number, default=1e-10, help="relative tolerance (default: %(default)s)")
     sub.add_argument("--atol", type=number, default=1e-12, help="absolute tolerance (default: %(default)s)")
-    sub.add_argument("--n-eval", type=int, default=4001, help="output samples, equally spaced (default: %(default)s)")
+    sub.add_argument("--n-eval", type=_n_eval, default=4001,
+                     help=f"output samples, equally spaced, 2 to {MAX_N_EVAL} (default: %(default)s)")
+    sub.add_argument("--h", type=number, help="step of a fixed-step method (RK4, implicit_midpoint, gauss4, gauss6)")
+    sub.add_argument("--max-steps", type=_max_steps, default=1_000_000,
+                     help="steps allowed before the run stops and reports a failure (default: %(default)s)")
+    sub.add_argument("--max-step", type=number, default=math.inf,
+                     help="largest step of an adaptive method (default: unbounded)")
+    sub.add_argument("--error-control", default="component", choices=("component", "mode"),
+                     help="compiled adaptive methods: 'component' (as SciPy) or 'mode' (default: %(default)s)")
     sub.add_argument("--out", type=Path, help="write the trajectory: .csv (t and states) or .npz")
     sub.add_argument("--plot", type=Path, help="write a PNG of the tilts and the spin")
+
+
+#: settings that ``simulate`` takes as options rather than through ``--set``
+_SIMULATE_OPTIONS = ("method", "fidelity", "model", "pose", "rtol", "atol", "t_end", "t_start", "n_eval", "h",
+                     "max_steps", "max_step", "error_control")
 
 
 @command("simulate", "integrate one model; print the spin reversals; optionally write CSV/NPZ and a PNG")
@@ -174,8 +279,8 @@ def simulate_cmd(args) -> int:
         raise ValueError(f"`--out` must end in .csv or .npz, got {args.out.name!r}")
     if args.plot is not None and args.plot.suffix.lower() != ".png":
         raise ValueError(f"`--plot` must end in .png, got {args.plot.name!r}")
-    if args.n_eval < 2:
-        raise ValueError(f"`--n-eval` must be at least 2, got {args.n_eval}")
+    if not args.t_end > args.t_start:
+        raise ValueError(f"`--t-end` must exceed `--t-start` ({args.t_start:g}), got {args.t_end:g}")
     fidelity = args.fidelity
     if args.path is None:
         if args.model not in MODEL_NAMES:
@@ -186,6 +291,10 @@ def simulate_cmd(args) -> int:
     elif fidelity is None:
         fidelity = "full"
     m = load(args.model, fidelity=fidelity, pose=args.pose, path=args.path)
+    settings = [k for k in (item.partition("=")[0].strip() for item in args.set) if k in _SIMULATE_OPTIONS]
+    if settings:
+        k = settings[0]
+        raise ValueError(f"`--set {k}`: {k} is an option of simulate here, give it as --{k.replace('_', '-')} VALUE")
     values = assignments(args.set)
     unknown = [k for k in values if k not in m.param_names and k not in m.state_names]
     if unknown:
@@ -195,9 +304,10 @@ def simulate_cmd(args) -> int:
     lacking = [n for n in m.param_names if n not in p] + [n for n in m.state_names if n not in y0]
     if lacking:
         raise ValueError(f"{m.name} declares no default for {lacking}: give them with `--set NAME=VALUE`")
-    t_eval = np.linspace(args.t_start, args.t_end, args.n_eval) if args.t_end > args.t_start else None
+    t_eval = np.linspace(args.t_start, args.t_end, args.n_eval)
     r = simulate(m, y0, (args.t_start, args.t_end), p, method=args.method, rtol=args.rtol, atol=args.atol,
-                 t_eval=t_eval)
+                 t_eval=t_eval, max_step=args.max_step, h=args.h, max_steps=args.max_steps,
+                 error_control=args.error_control)
     print(f"{m.name} ({m.fidelity}{', pose' if m.pose else ''}), " + ", ".join(f"{k}={v:g}" for k, v in p.items()))
     print("  y0: " + ", ".join(f"{k}={v:g}" for k, v in y0.items()))
     rev = r.reversal_times
@@ -208,7 +318,8 @@ def simulate_cmd(args) -> int:
         print(f"  intervals between reversals: {', '.join(f'{d:.6g}' for d in np.diff(rev))}")
     if not r.in_validity_domain:
         print(f"  warning: {r.validity_message}")
-    print(f"  {r.method}, rtol={args.rtol:g}, atol={args.atol:g}: {r.nfev} rhs evaluations; {r.message}")
+    control = f"h={args.h:g}" if args.h is not None else f"rtol={args.rtol:g}, atol={args.atol:g}"
+    print(f"  {r.method}, {control}: {r.nsteps} steps, {r.nfev} rhs evaluations; {r.message}")
     if args.out is not None:
         args.out.parent.mkdir(parents=True, exist_ok=True)
         if args.out.suffix.lower() == ".csv":
@@ -312,6 +423,36 @@ def figures_cmd(args) -> int:
     return 0
 
 
+# -- animate --------------------------------------------------------------------
+def _animate_args(sub: argparse.ArgumentParser) -> None:
+    from .scenes import SCENE_NAMES
+
+    sub.add_argument("name", help=f"the scene to draw: one of {', '.join(SCENE_NAMES)}")
+    sub.add_argument("--out", type=Path, help="file to write, .gif (pillow) or .mp4 (needs ffmpeg); default NAME.gif")
+    sub.add_argument("--frames", type=int, default=240, help="number of frames (default: %(default)s)")
+    sub.add_argument("--fps", type=float, default=20.0, help="frames per second (default: %(default)s)")
+    sub.add_argument("--magnify", default="auto",
+                     help="factor for the tilt angles, or 'auto' (largest tilt drawn at ~23 degrees; default)")
+    sub.add_argument("--dpi", type=int, default=80, help="pixels per inch of the 8 x 4.5 inch frame (default: %(default)s)")
+    sub.add_argument("--set", nargs="+", action="extend", default=[], metavar="NAME=VALUE",
+                     help="change the scene's main run: parameters, initial state, or rtol/atol/t_end/method")
+
+
+@command("animate", "GIF or MP4 of a scene's run: the body in 3D, its contact path, its spin rate, the time")
+def animate_cmd(args) -> int:
+    from .animation import animate
+    from .scenes import get_scene
+
+    magnify = args.magnify if args.magnify == "auto" else number(args.magnify)
+    scene = get_scene(args.name, **assignments(args.set))
+    out = args.out or Path(f"{scene.name}.gif")
+    info = animate(scene, out, frames=args.frames, fps=args.fps, magnify=magnify, dpi=args.dpi,
+                   title=f"scene {scene.name}: {scene.title}",
+                   progress=lambda msg: print(f"animate {scene.name}: {msg}", file=sys.stderr, flush=True))
+    print(info.summary())
+    return 0
+
+
 # -- sweep ----------------------------------------------------------------------
 def _sweep_args(sub: argparse.ArgumentParser) -> None:
     from .scenes import SCENE_NAMES
@@ -322,8 +463,11 @@ def _sweep_args(sub: argparse.ArgumentParser) -> None:
                           "Cartesian product; NAME=START:STOP:N is N geometrically spaced values")
     sub.add_argument("--set", nargs="+", action="extend", default=[], metavar="NAME=VALUE",
                      help="change the base run (parameters, initial state, rtol, atol, t_end)")
-    sub.add_argument("--out", type=Path, help="results file (.csv or .jsonl), appended run by run; resumed if it exists")
-    sub.add_argument("--fresh", action="store_true", help="overwrite --out instead of resuming from it")
+    sub.add_argument("--out", type=Path,
+                     help="results store: NAME.sqlite (SQLite, one row per run, committed as each run finishes), or "
+                          "NAME.csv / NAME.jsonl (a text export of the rows, kept in NAME.sqlite); an existing store "
+                          "is resumed, and sweeps running at once on one store share the work")
+    sub.add_argument("--fresh", action="store_true", help="recompute the runs already in --out (and replace them)")
     sub.add_argument("--workers", type=int, help="local processes (default: all cores)")
     sub.add_argument("--dask", metavar="ADDRESS",
                      help="run on a Dask cluster: a scheduler address (tcp://host:8786), or 'local' for a LocalCluster")
@@ -331,16 +475,19 @@ def _sweep_args(sub: argparse.ArgumentParser) -> None:
 
 @command("sweep", "run a scene over a grid of parameters / initial states; a tidy table, resumable, local or on Dask")
 def sweep_cmd(args) -> int:
+    import warnings
+
     from .scenes import get_scene
     from .sweep import sweep
 
     if args.workers is not None and args.workers < 1:
         raise ValueError(f"`--workers` must be at least 1, got {args.workers}")
-    if args.out is not None and args.out.suffix.lower() not in (".csv", ".jsonl"):
-        raise ValueError(f"`--out` must end in .csv or .jsonl, got {args.out.name!r}")
     scene = get_scene(args.scene, **assignments(args.set))
     grid = grid_assignments(args.grid)
-    client = None
+    n_runs = math.prod(len(v) for v in grid.values())
+    if n_runs > MAX_SWEEP_RUNS:
+        raise ValueError(f"`--grid` makes {n_runs:.3g} runs, more than the {MAX_SWEEP_RUNS} one sweep may start")
+    client = cluster = None
     try:
         executor = None
         if args.dask:
@@ -349,20 +496,33 @@ def sweep_cmd(args) -> int:
             except ImportError:
                 raise OSError("`--dask` needs the distributed package: pip install 'dask[distributed]'") from None
             if args.dask == "local":
-                client = Client(LocalCluster(n_workers=args.workers or None, threads_per_worker=1))
+                cluster = LocalCluster(n_workers=args.workers or None, threads_per_worker=1, dashboard_address=None)
+                client = Client(cluster)
             else:
                 client = Client(args.dask)
             executor = client.get_executor()
-        table = sweep(scene, grid, executor=executor, max_workers=args.workers, out=args.out, resume=not args.fresh)
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always", RuntimeWarning)
+            table = sweep(scene, grid, executor=executor, max_workers=args.workers, out=args.out,
+                          resume=not args.fresh)
     finally:
         if client is not None:
             client.close()
+        if cluster is not None:
+            cluster.close()
+    for w in caught:
+        if "have no result" not in str(w.message):  # said below
+            print(f"knifeedge sweep: warning: {w.message}", file=sys.stderr)
     print(table)
-    failed = table.failures()
-    print(f"{len(table)} runs ({table.n_computed} computed, {table.n_reused} read back from {args.out}), "
-          f"{len(failed)} failed" if args.out else f"{len(table)} runs, {len(failed)} failed")
-    for row in failed:
+    print(table.summary())
+    for row in table.failures():
         print(f"  failed run {row['run_id']}: {row['message']}")
+    for row in table.missing():
+        print(f"  no result for run {row['run_id']}: {row['message']}")
+    if table.n_missing:
+        print(f"knifeedge sweep: {table.n_missing} run(s) have no result (their worker died); run the same "
+              "command again to compute them", file=sys.stderr)
+        return 1
     return 0
 
 
@@ -406,7 +566,7 @@ class _Parser(argparse.ArgumentParser):
 
 
 _ARGS = {"demo": _demo_args, "simulate": _simulate_args, "scene": _scene_args, "figures": _figures_args,
-         "sweep": _sweep_args, "derive": _derive_args}
+         "sweep": _sweep_args, "animate": _animate_args, "derive": _derive_args}
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -437,3 +597,12 @@ def main(argv=None) -> int:
     except KeyboardInterrupt:
         print(f"knifeedge {args.command}: interrupted", file=sys.stderr)
         return 130
+    except MemoryError:
+        print(f"knifeedge {args.command}: error: out of memory (ask for fewer samples, runs or steps)", file=sys.stderr)
+        return 1
+    except Exception as exc:  # a defect of knifeedge, not of the input: one line, and the traceback on request
+        if os.environ.get("KNIFEEDGE_TRACEBACK"):
+            raise
+        print(f"knifeedge {args.command}: internal error: {type(exc).__name__}: {exc} (please report it; "
+              f"set KNIFEEDGE_TRACEBACK=1 to see the traceback)", file=sys.stderr)
+        return 1

@@ -2,8 +2,10 @@
 
 Writes one PNG per scene and an ``index.html`` and ``index.md`` that put
 each figure beside the paper's caption, the model the scene used and why,
-and the numbers that support or contradict the caption.  Scenes run in
-parallel processes; progress goes to stderr.
+and the numbers that support or contradict the caption; the scenes of
+:data:`ANIMATIONS` also get a GIF of the body (:func:`knifeedge.animate`)
+beside their figure.  Scenes and animations run in parallel processes;
+progress goes to stderr.
 """
 from __future__ import annotations
 
@@ -19,6 +21,11 @@ from .scenes.base import format_number
 
 #: heaviest first, so that the parallel run ends sooner
 _ORDER = ("numerical2", "model_fidelity", "tinversion", "table_path", "ellipses", "amplitudes", "numerical")
+#: scenes whose run is also animated, with the animation's settings (modest size and frame count)
+ANIMATIONS = {
+    "numerical": {"frames": 150, "fps": 12.5, "size": (8.0, 4.5), "dpi": 70},
+    "numerical2": {"frames": 180, "fps": 12.5, "size": (8.0, 4.5), "dpi": 70},
+}
 
 
 def render_scene(name: str, out_dir: str) -> dict:
@@ -33,6 +40,35 @@ def render_scene(name: str, out_dir: str) -> dict:
     except Exception as exc:  # noqa: BLE001 - reported in the index, the other scenes go on
         return {"name": name, "ok": False, "error": f"{type(exc).__name__}: {exc}", "numbers": {}, "claims": [],
                 "seconds": time.perf_counter() - t0}
+
+
+def render_animation(name: str, out_dir: str) -> dict:
+    """Animate one scene's run into ``NAME.gif``; returns plain data (runs in a worker)."""
+    from .animation import animate
+
+    t0 = time.perf_counter()
+    scene = get_scene(name)
+    try:
+        info = animate(scene, Path(out_dir) / f"{name}.gif", title=f"scene {name}: {scene.title}", **ANIMATIONS[name])
+        return {"name": name, "ok": True, "gif": info.path.name, "summary": _animation_caption(info),
+                "seconds": time.perf_counter() - t0}
+    except Exception as exc:  # noqa: BLE001 - reported in the index
+        return {"name": name, "ok": False, "error": f"{type(exc).__name__}: {exc}", "seconds": time.perf_counter() - t0}
+
+
+def _animation_caption(info) -> str:
+    tps = info.time_per_second
+    mag = f"tilt angles drawn x{info.magnification:g}" if info.magnification != 1 else "tilt angles true"
+    return (f"{info.n_frames} frames at {info.fps:g} frames/s; 1 s of video covers {tps.min():.3g} time units "
+            f"around the reversals and up to {tps.max():.3g} elsewhere; {mag}. Drawn by {info.drawn_by}.")
+
+
+def _animation_needs(name: str) -> set:
+    """The integrators an animation of scene ``name`` uses: its run's model with the pose."""
+    if name not in ANIMATIONS:
+        return set()
+    run = get_scene(name).run
+    return {(run.model, run.fidelity, True, run.method)}
 
 
 def warm(model: str, fidelity: str, pose: bool, method: str) -> str:
@@ -58,10 +94,11 @@ def _schedule(pool, workers: int, order: list, out: Path, report, progress, t0: 
     that at most ``workers`` tasks run at once, a scene as soon as all its
     integrators are compiled, otherwise the next compilation.
     """
-    needs = {n: {(*u, get_scene(n).run.method) for u in get_scene(n).uses} for n in order}
+    needs = {("scene", n): {(*u, get_scene(n).run.method) for u in get_scene(n).uses} for n in order}
+    needs.update({("animation", n): _animation_needs(n) for n in order if n in ANIMATIONS})
     warms = sorted(set().union(*needs.values()), key=lambda k: -sum(k in v for v in needs.values()))
     compiled: set = set()
-    scenes = list(order)
+    scenes = list(needs)
     running: dict = {}
     n_warm = len(warms)
     while scenes or running:
@@ -69,7 +106,8 @@ def _schedule(pool, workers: int, order: list, out: Path, report, progress, t0: 
             ready = [n for n in scenes if needs[n] <= compiled]
             if ready:
                 scenes.remove(ready[0])
-                running[pool.submit(render_scene, ready[0], str(out))] = ("scene", ready[0])
+                task = render_scene if ready[0][0] == "scene" else render_animation
+                running[pool.submit(task, ready[0][1], str(out))] = ready[0]
             elif warms and (compiled or not any(kind == "warm" for kind, _ in running.values())):
                 k = warms.pop(0)
                 running[pool.submit(warm, *k)] = ("warm", k)
@@ -78,8 +116,8 @@ def _schedule(pool, workers: int, order: list, out: Path, report, progress, t0: 
         done, _ = cf.wait(list(running), return_when=cf.FIRST_COMPLETED)
         for fut in done:
             kind, what = running.pop(fut)
-            if kind == "scene":
-                report(fut.result())
+            if kind in ("scene", "animation"):
+                report(kind, fut.result())
                 continue
             try:
                 label = fut.result()
@@ -107,22 +145,31 @@ def make_figures(out: str | Path, names=None, max_workers: int | None = None, pr
     records: dict = {}
     workers = max_workers or min(len(order), os.cpu_count() or 1)
 
-    def report(rec: dict) -> None:
-        records[rec["name"]] = rec
+    animations: dict = {}
+    n_tasks = len(order) + sum(n in ANIMATIONS for n in order)
+
+    def report(kind: str, rec: dict) -> None:
+        (records if kind == "scene" else animations)[rec["name"]] = rec
         if progress:
             state = f"{rec['seconds']:.1f} s" if rec["ok"] else f"FAILED: {rec['error']}"
-            print(f"figures: [{len(records)}/{len(order)}] {rec['name']} ({state}); "
+            what = rec["name"] if kind == "scene" else f"{rec['name']} (animation)"
+            print(f"figures: [{len(records) + len(animations)}/{n_tasks}] {what} ({state}); "
                   f"{time.perf_counter() - t0:.1f} s elapsed", file=sys.stderr, flush=True)
 
     if progress:
         print(f"figures: {len(order)} scenes on {workers} process(es) -> {out}/", file=sys.stderr, flush=True)
     if workers <= 1:
         for n in order:
-            report(render_scene(n, str(out)))
+            report("scene", render_scene(n, str(out)))
+            if n in ANIMATIONS:
+                report("animation", render_animation(n, str(out)))
     else:
         with cf.ProcessPoolExecutor(max_workers=workers) as pool:
             _schedule(pool, workers, order, out, report, progress, t0)
     recs = [records[n] for n in names]
+    for rec in recs:
+        if rec["name"] in animations:
+            rec["animation"] = animations[rec["name"]]
     (out / "index.md").write_text(index_markdown(recs))
     (out / "index.html").write_text(index_html(recs))
     if progress:
@@ -150,6 +197,11 @@ def index_markdown(records: list) -> str:
             lines += [f"![{rec['name']}]({rec['png']})", ""]
         else:
             lines += [f"**This scene failed:** {rec['error']}", ""]
+        anim = rec.get("animation")
+        if anim:
+            lines += ([f"![{rec['name']}, animated]({anim['gif']})", "", f"*Animation.* {anim['summary']} "
+                       f"(made in {anim['seconds']:.1f} s)", ""] if anim["ok"]
+                      else [f"**The animation failed:** {anim['error']}", ""])
         lines += [f"**Paper's caption.** {scene.caption}", "",
                   f"**Model.** {scene.run.describe()}  ", f"**Why this model.** {scene.why}", ""]
         if rec["claims"]:
@@ -172,7 +224,7 @@ def index_html(records: list) -> str:
              ".scene{display:flex;gap:1.5em;border-top:1px solid #ccc;padding:1em 0}"
              ".fig{flex:0 0 55%}.fig img{max-width:100%}.text{flex:1;font-size:14px}"
              "table{border-collapse:collapse;font-size:12px}td,th{border:1px solid #ddd;padding:2px 6px;vertical-align:top}"
-             ".supports{color:#060}.contradicts{color:#b00;font-weight:bold}.na{color:#555}",
+             ".anim{font-size:12px;color:#444}.supports{color:#060}.contradicts{color:#b00;font-weight:bold}.na{color:#555}",
              "</style></head><body><h1>knifeedge: the figures of the paper</h1>",
              "<p>Jagla &amp; Rojo, <i>The chiral knife edge</i> (arXiv:2309.06154). Each figure is recomputed by a scene "
              "(<code>knifeedge scene NAME</code>); errata in docs/errata.md, models in docs/models.md.</p>"]
@@ -180,6 +232,11 @@ def index_html(records: list) -> str:
         scene = get_scene(rec["name"])
         fig = (f"<img src='{e(rec['png'])}' alt='{e(rec['name'])}'>" if rec["ok"]
                else f"<p class='contradicts'>This scene failed: {e(rec['error'])}</p>")
+        anim = rec.get("animation")
+        if anim:
+            fig += (f"<img src='{e(anim['gif'])}' alt='{e(rec['name'])}, animated'>"
+                    f"<p class='anim'>{e(anim['summary'])} <i>(made in {anim['seconds']:.1f} s)</i></p>"
+                    if anim["ok"] else f"<p class='contradicts'>The animation failed: {e(anim['error'])}</p>")
         claims = "".join(
             f"<tr><td>{e(c)}</td><td class='{'na' if v == 'n/a' else v}'>{e(_verdict_mark(v))}</td><td>{e(ev)}</td></tr>"
             for c, v, ev in rec["claims"])

@@ -36,6 +36,7 @@ two values.  For ``epsilon`` much below the maximum amplitudes
 from __future__ import annotations
 
 import math
+import sys
 import warnings
 from dataclasses import dataclass
 
@@ -43,6 +44,7 @@ import numpy as np
 from scipy.integrate import quad
 from scipy.optimize import brentq
 
+from . import _validate
 from .models import Model, ValidityWarning, available, load
 
 
@@ -198,7 +200,7 @@ def _floor_state(well: _Well, u_turn: float, grow_p: bool, floors: np.ndarray) -
     return out, well.E
 
 
-def _two_modes(c, w, amps, spin, background: np.ndarray, n_intervals: int):
+def _two_modes(c, w, amps, spin, background: np.ndarray, n_intervals: int, progress):
     if np.any(amps <= 0):
         raise ValueError("initial state `y0`: both tilt amplitudes must be nonzero for the two-mode theory")
     well = _Well(c, w, np.log(amps), spin)
@@ -215,14 +217,47 @@ def _two_modes(c, w, amps, spin, background: np.ndarray, n_intervals: int):
     else:  # starting at a turning point: the first reversal is at the other one
         first = well.time(u_lo, u_hi, True, True)
         turn, grow_p = (u_lo, True) if abs(u0 - u_hi) <= abs(u0 - u_lo) else (u_hi, False)
-    intervals = []
-    for _ in range(n_intervals):
-        ln_a, _ = _floor_state(well, turn, grow_p, background)
-        well = _Well(c, w, ln_a, 0.0)
-        u_lo, u_hi = well.turning_points()
-        intervals.append(well.time(u_lo, u_hi, True, True))
-        turn, grow_p = (u_hi, False) if grow_p else (u_lo, True)
-    return first, np.array(intervals)
+    intervals = np.empty(n_intervals)
+    with _Progress(progress, n_intervals) as bar:
+        for i in range(n_intervals):
+            ln_a, _ = _floor_state(well, turn, grow_p, background)
+            well = _Well(c, w, ln_a, 0.0)
+            u_lo, u_hi = well.turning_points()
+            intervals[i] = well.time(u_lo, u_hi, True, True)
+            turn, grow_p = (u_hi, False) if grow_p else (u_lo, True)
+            bar.update(i + 1)
+    return first, intervals
+
+
+class _Progress:
+    """``progress`` of :func:`reversal_time`: None (a tqdm bar on stderr if the work lasts over a second),
+    True (a bar), False (nothing) or ``callback(done, total)``."""
+
+    def __init__(self, progress, total: int):
+        self.callback = progress if callable(progress) else None
+        self.total = total
+        self.bar = None
+        if progress is None or progress is True:
+            from tqdm.auto import tqdm
+
+            self.bar = tqdm(total=total, desc="reversal intervals", unit="interval", file=sys.stderr,
+                            delay=1.0 if progress is None else 0.0, leave=progress is True)
+        self.done = 0
+
+    def update(self, done: int) -> None:
+        if self.bar is not None:
+            self.bar.update(done - self.done)
+        if self.callback is not None:
+            self.callback(done, self.total)
+        self.done = done
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        if self.bar is not None:
+            self.bar.close()
+        return False
 
 
 def _one_mode(c, w, amps, spin):
@@ -235,7 +270,12 @@ def _one_mode(c, w, amps, spin):
     return (t_r if t_r > 0 else math.inf), np.array([math.inf])
 
 
-def reversal_time(model: Model, p, y0, background: float = 0.0, n_intervals: int = 4) -> ReversalPrediction:
+#: most intervals :func:`reversal_time` computes in one call (each is a quadrature, about a millisecond)
+MAX_INTERVALS = 10_000
+
+
+def reversal_time(model: Model, p, y0, background: float = 0.0, n_intervals: int = 4, *,
+                  progress=None) -> ReversalPrediction:
     """Predicted first spin reversal and interval between reversals (averaged equations).
 
     Parameters
@@ -249,7 +289,11 @@ def reversal_time(model: Model, p, y0, background: float = 0.0, n_intervals: int
         starts from at least its ``epsilon``.  ``0`` gives the deterministic
         slow flow.  :func:`knifeedge.background.noise_floor` converts a
         random forcing into this level.
-    n_intervals : number of successive intervals to predict (>= 2).
+    n_intervals : number of successive intervals to predict, from 2 to
+        :data:`MAX_INTERVALS` (each costs a quadrature, about a millisecond).
+    progress : None (default: a tqdm bar on stderr if the intervals take
+        more than a second), True (always a bar), False (none), or a
+        callable ``progress(done, total)`` called after each interval.
 
     Returns
     -------
@@ -257,14 +301,18 @@ def reversal_time(model: Model, p, y0, background: float = 0.0, n_intervals: int
     """
     if not isinstance(model, Model):
         raise TypeError(f"`model` must be a knifeedge Model (from knifeedge.load), got {type(model).__name__}")
-    try:
-        floors = np.asarray(background, dtype=float)
-    except (TypeError, ValueError):
-        raise TypeError(f"`background` must be a number or an array of numbers, got {background!r}") from None
-    if isinstance(background, bool) or floors.ndim > 1 or not np.all(np.isfinite(floors)) or np.any(floors < 0):
+    if isinstance(background, (list, tuple)) or isinstance(background, np.ndarray) and background.ndim > 0:
+        floors = _validate.real_array(background, "`background`")
+    else:
+        floors = np.asarray(_validate.real(background, "`background`"))
+    if floors.ndim > 1 or not np.all(np.isfinite(floors)) or np.any(floors < 0):
         raise ValueError(f"`background` must be finite and >= 0 (a number or one per tilt), got {background!r}")
-    if isinstance(n_intervals, bool) or not isinstance(n_intervals, (int, np.integer)) or n_intervals < 2:
-        raise ValueError(f"`n_intervals` must be an integer >= 2, got {n_intervals!r}")
+    if isinstance(n_intervals, (bool, np.bool_)) or not isinstance(n_intervals, (int, np.integer)):
+        raise TypeError(f"`n_intervals` must be an integer from 2 to {MAX_INTERVALS}, got {n_intervals!r}")
+    if not 2 <= n_intervals <= MAX_INTERVALS:
+        raise ValueError(f"`n_intervals` must be an integer from 2 to {MAX_INTERVALS}, got {n_intervals!r}")
+    if not (progress is None or isinstance(progress, bool) or callable(progress)):
+        raise TypeError(f"`progress` must be None, True, False or a callable(done, total), got {progress!r}")
     mod = _amplitude_module(model)
     p = model.check_params(p)
     y0 = model.check_state(y0)
@@ -279,7 +327,7 @@ def reversal_time(model: Model, p, y0, background: float = 0.0, n_intervals: int
     if len(c) == 1:
         first, intervals = _one_mode(c, w, amps, spin)
     elif len(c) == 2 and c[0] * c[1] < 0:
-        first, intervals = _two_modes(c, w, amps, spin, floors, int(n_intervals))
+        first, intervals = _two_modes(c, w, amps, spin, floors, int(n_intervals), progress)
     else:
         raise ValueError(f"`model` {model.name}: reversal theory needs one mode or two modes of opposite chirality")
     interval = float(np.mean(intervals[-2:]))

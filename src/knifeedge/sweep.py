@@ -1,59 +1,86 @@
 """``sweep``: many integrations over a grid of parameters or initial states.
 
-One row per run (its inputs, its spin reversals, its status), computed on
-any :class:`concurrent.futures.Executor` -- local processes by default, or a
-Dask cluster through ``distributed.Client(...).get_executor()`` -- and
-appended to a file as each run finishes, so that an interrupted sweep
-resumes without recomputing or losing the runs already done.  A run that
-fails is a row with ``status`` ``"failed"`` (the integrator gave up) or
-``"error"`` (the run raised), and its message; it never aborts the sweep.
+One row per run (its inputs, its spin reversals, its status).  Runs execute
+in local worker processes (default), on any :class:`concurrent.futures.Executor`
+(a Dask cluster through ``distributed.Client(...).get_executor()``), or in
+this process; their rows are committed to an SQLite results store
+(:mod:`knifeedge.store`) as they finish.  So a sweep
+
+* killed at any instant keeps every row it committed, and the same sweep run
+  again computes only the rest (*resume*);
+* run twice at once on one file shares the work: each run is claimed in the
+  store before it is computed, nothing is computed twice, nothing is lost;
+* tells a failed integration (a result: ``status`` ``"failed"``, the
+  integrator gave up, or ``"error"``, the run raised) from a failure of the
+  infrastructure (a worker killed, a broken pool, a cancelled future), which
+  is not a result: those runs are retried, and the ones still without a
+  result are reported (:attr:`SweepTable.n_missing`) and computed on resume.
 """
 from __future__ import annotations
 
 import concurrent.futures as cf
-import csv
 import hashlib
-import io
 import itertools
 import json
 import math
 import os
+import statistics
 import sys
 import time
+import warnings
+from collections import deque
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
-from .scenes.base import RUN_SETTINGS, RunSpec
+from .runspec import RUN_SETTINGS, RunSpec
 from .simulate import METHODS
+from .store import (INPUT_COLUMNS, INT_COLUMNS, RESULT_COLUMNS, STATUSES, STORE_SUFFIXES, TEXT_COLUMNS, TEXT_SUFFIXES,
+                    ResultStore, read_text, write_text)
+from .workers import ExecutorPool, LocalPool, SerialPool, WorkerLost
 
-#: outcome columns, after the input columns
-RESULT_COLUMNS = ("status", "message", "nfev", "n_reversals", "first_reversal", "mean_interval", "reversal_times")
-STATUSES = ("ok", "failed", "error")
-_TEXT_COLUMNS = frozenset({"run_id", "model", "fidelity", "method", "status", "message"})
+__all__ = ["sweep", "SweepTable", "run_one", "run_batch", "RESULT_COLUMNS", "STATUSES"]
+
+#: status of a row that has no result (its run was lost to the infrastructure and is computed on resume)
+MISSING = "missing"
+#: attempts of a run whose worker keeps dying before it is left without a result
+MAX_ATTEMPTS = 3
+#: wall time a task of several runs aims at (a few per worker in flight; see ``chunksize``)
+TASK_SECONDS = 0.25
 
 
 # -- one run ------------------------------------------------------------------
 def run_one(spec: Mapping) -> dict:
-    """Integrate one :class:`RunSpec` given as a dict; return its outcome columns.
+    """Integrate one :class:`~knifeedge.runspec.RunSpec` given as a dict; return its outcome columns.
 
-    Runs in a worker process.  Never raises: an exception becomes
-    ``status="error"`` with the exception's message.
+    Runs in a worker.  Never raises for a failure of the run itself: an
+    exception becomes ``status="error"`` with its message (a result).
+    ``MemoryError`` is not caught: the infrastructure failed, not the run.
     """
+    t = time.perf_counter()
     try:
         run = RunSpec.from_dict(dict(spec, n_eval=None))
         r = run.simulate()
-        rev = [float(t) for t in r.reversal_times]
-        return {
+        rev = [float(x) for x in r.reversal_times]
+        out = {
             "status": "ok" if r.success else "failed",
             "message": "" if r.success else r.message,
             "nfev": int(r.nfev),
             **_reversal_columns(rev),
         }
+    except MemoryError:
+        raise
     except Exception as exc:  # noqa: BLE001 - recorded, not raised
-        return {"status": "error", "message": f"{type(exc).__name__}: {exc}", "nfev": 0, **_reversal_columns([])}
+        out = {"status": "error", "message": f"{type(exc).__name__}: {exc}", "nfev": 0, **_reversal_columns([])}
+    out["seconds"] = time.perf_counter() - t
+    return out
+
+
+def run_batch(specs: Sequence[Mapping]) -> list:
+    """:func:`run_one` on each of ``specs`` (one task of a sweep)."""
+    return [run_one(s) for s in specs]
 
 
 def _reversal_columns(rev: list) -> dict:
@@ -67,21 +94,38 @@ def _reversal_columns(rev: list) -> dict:
 
 # -- the table ----------------------------------------------------------------
 class SweepTable:
-    """A tidy table: one row (a dict) per run, columns in a fixed order.
+    """The rows of a sweep, in grid order; ``to_pandas()`` gives a typed DataFrame.
 
     Attributes
     ----------
     columns : tuple of str
     rows : list of dict
-    n_computed, n_reused : int
-        Runs integrated by this call, and runs read back from the ``out`` file.
+    n_computed : int
+        Runs integrated by this call.
+    n_reused : int
+        Runs read back from the store (an earlier sweep, or a concurrent one).
+    n_retried : int
+        Runs sent again because their worker died (or the executor lost them).
+    n_missing : int
+        Runs without a result: their worker died (or the executor broke)
+        every time they were tried.  Their rows have ``status="missing"``;
+        running the same sweep again computes them.
+    store : Path or None
+        The results store (SQLite) the rows are in.
+    damaged : list of str
+        Rows of the store that failed their checksum (recomputed).
     """
 
-    def __init__(self, columns: Sequence[str], rows: list, n_computed: int = 0, n_reused: int = 0):
+    def __init__(self, columns: Sequence[str], rows: list, n_computed: int = 0, n_reused: int = 0,
+                 n_missing: int = 0, store: Path | None = None, damaged: Sequence[str] = (), n_retried: int = 0):
         self.columns = tuple(columns)
         self.rows = rows
         self.n_computed = n_computed
         self.n_reused = n_reused
+        self.n_missing = n_missing
+        self.n_retried = n_retried
+        self.store = store
+        self.damaged = list(damaged)
 
     def __len__(self) -> int:
         return len(self.rows)
@@ -94,7 +138,7 @@ class SweepTable:
         if column not in self.columns:
             raise KeyError(f"no column {column!r}; columns are {self.columns}")
         values = [row[column] for row in self.rows]
-        if column in _TEXT_COLUMNS or column == "reversal_times":
+        if column in TEXT_COLUMNS or column == "reversal_times":
             return np.array(values, dtype=object)
         return np.array(values, dtype=float)
 
@@ -104,28 +148,68 @@ class SweepTable:
         return np.array([row["status"] == "ok" for row in self.rows], dtype=bool)
 
     def failures(self) -> list:
-        """The rows whose status is not ``"ok"``."""
-        return [row for row in self.rows if row["status"] != "ok"]
+        """The rows whose integration did not succeed (``"failed"`` or ``"error"``)."""
+        return [row for row in self.rows if row["status"] in ("failed", "error")]
 
-    def to_csv(self, path: str | Path | None = None) -> str:
-        """CSV text (reversal times space-separated); written to ``path`` if given."""
-        buf = io.StringIO()
-        w = csv.writer(buf, lineterminator="\n")
-        w.writerow(self.columns)
-        for row in self.rows:
-            w.writerow(_csv_cells(row, self.columns))
-        if path is not None:
-            Path(path).write_text(buf.getvalue())
-        return buf.getvalue()
+    def missing(self) -> list:
+        """The rows without a result (``status="missing"``): compute them by running the sweep again."""
+        return [row for row in self.rows if row["status"] == MISSING]
+
+    def summary(self) -> str:
+        """One line: how many runs, computed, read back, failed, and without a result."""
+        where = f" (store: {self.store})" if self.store is not None else ""
+        text = (f"{len(self)} runs: {self.n_computed} computed, {self.n_reused} read back{where}, "
+                f"{len(self.failures())} failed, {self.n_missing} without a result")
+        if self.n_retried:
+            text += f" ({self.n_retried} sent again after their worker died)"
+        if self.n_missing:
+            text += " -- run the same sweep again to compute them"
+        return text
 
     def to_pandas(self):
-        """A ``pandas.DataFrame`` (needs pandas)."""
+        """A ``pandas.DataFrame``, one row per run, typed columns.
+
+        Text columns are ``string``, ``status`` is categorical, counts are
+        nullable integers (``Int64``), times and parameters are ``float64``,
+        ``reversal_times`` holds one float array per run.
+        """
         import pandas as pd
 
-        return pd.DataFrame(self.rows, columns=list(self.columns))
+        data = {}
+        for c in self.columns:
+            values = [row[c] for row in self.rows]
+            if c == "status":
+                data[c] = pd.Categorical(values, categories=list(STATUSES) + [MISSING])
+            elif c in TEXT_COLUMNS:
+                data[c] = pd.array(values, dtype="string")
+            elif c in INT_COLUMNS:
+                data[c] = pd.array([None if v is None else int(v) for v in values], dtype="Int64")
+            elif c == "reversal_times":
+                data[c] = pd.Series([np.asarray(v, dtype=float) for v in values], dtype=object)
+            else:
+                data[c] = np.asarray(values, dtype=float)
+        return pd.DataFrame(data, columns=list(self.columns))
+
+    def to_csv(self, path: str | Path | None = None) -> str:
+        """CSV text (reversal times space-separated, a ``checksum`` per row); written to ``path`` if given."""
+        return self._text(path, ".csv")
+
+    def to_jsonl(self, path: str | Path | None = None) -> str:
+        """JSON lines (one object per run, a ``checksum`` per row); written to ``path`` if given."""
+        return self._text(path, ".jsonl")
+
+    def _text(self, path, suffix) -> str:
+        import tempfile
+
+        rows = [r for r in self.rows if r["status"] != MISSING]
+        with tempfile.TemporaryDirectory() as d:
+            text = write_text(Path(d) / f"t{suffix}", rows, self.columns).read_text()
+        if path is not None:
+            write_text(path, rows, self.columns)
+        return text
 
     def __repr__(self) -> str:
-        shown = [c for c in self.columns if c not in ("run_id", "message", "reversal_times")]
+        shown = [c for c in self.columns if c not in ("run_id", "message", "reversal_times", "seconds")]
         lines = ["  ".join(shown)]
         for row in self.rows[:20]:
             lines.append("  ".join(_cell(row[c]) for c in shown))
@@ -138,35 +222,6 @@ def _cell(v) -> str:
     if isinstance(v, float):
         return f"{v:.6g}"
     return str(v)
-
-
-def _csv_cells(row: Mapping, columns: Sequence[str]) -> list:
-    out = []
-    for c in columns:
-        v = row[c]
-        if c == "reversal_times":
-            out.append(" ".join(repr(float(t)) for t in v))
-        elif isinstance(v, float):
-            out.append(repr(v))
-        else:
-            out.append(v)
-    return out
-
-
-def _csv_row(cells: Sequence[str], columns: Sequence[str]) -> dict:
-    row: dict = {}
-    for c, v in zip(columns, cells):
-        if c in _TEXT_COLUMNS:
-            row[c] = v
-        elif c == "reversal_times":
-            row[c] = [float(t) for t in v.split()]
-        elif c in ("nfev", "n_reversals"):
-            row[c] = int(v)
-        elif c == "pose":
-            row[c] = v == "True"
-        else:
-            row[c] = float(v)
-    return row
 
 
 # -- the grid -----------------------------------------------------------------
@@ -212,7 +267,8 @@ def _base_run(target, params, y0, t_span, method, rtol, atol) -> RunSpec:
         m.check_state(y0)
         run = RunSpec(model=m.name, fidelity=m.fidelity, pose=m.pose, params=dict(params) if isinstance(params, Mapping)
                       else dict(zip(m.param_names, params)),
-                      y0=dict(y0) if isinstance(y0, Mapping) else dict(zip(m.state_names, y0)), t_span=t_span)
+                      y0=dict(y0) if isinstance(y0, Mapping) else dict(zip(m.state_names, y0)), t_span=t_span,
+                      path=getattr(m, "path", None))
     else:
         raise TypeError(f"`scene_or_model` must be a Scene, a scene name, a RunSpec or a Model, got {type(target).__name__}")
     changes: dict[str, Any] = {}
@@ -232,7 +288,7 @@ def _expand(run: RunSpec, points: list) -> list:
     accepted = set(run.params) | set(run.y0) | set(RUN_SETTINGS)
     specs = []
     for pt in points:
-        bad = [k for k in pt if k not in accepted or k in ("fidelity", "pose", "n_eval")]
+        bad = [k for k in pt if k not in accepted or k in ("fidelity", "pose", "n_eval", "path")]
         if bad:
             raise ValueError(
                 f"`grid` name(s) {bad} are not parameters {tuple(run.params)}, initial states {tuple(run.y0)} "
@@ -255,111 +311,93 @@ def _expand(run: RunSpec, points: list) -> list:
 
 
 def _columns(run: RunSpec) -> tuple:
-    return ("run_id", "model", "fidelity", "method", "rtol", "atol", "t0", "t1",
-            *run.params, *run.y0) + RESULT_COLUMNS
+    return INPUT_COLUMNS + (*run.params, *run.y0) + RESULT_COLUMNS
+
+
+def _key(spec: RunSpec) -> dict:
+    """The inputs that identify a run (its output sampling does not)."""
+    d = spec.to_dict()
+    d.pop("n_eval")
+    for k in ("max_steps", "path"):  # absent when unset: run ids of earlier versions stay valid
+        if d.get(k) is None:
+            d.pop(k, None)
+    return d
 
 
 def _inputs(spec: RunSpec) -> dict:
-    d = spec.to_dict()
-    d.pop("n_eval")
-    if d["max_steps"] is None:
-        d.pop("max_steps")
-    key = json.dumps(d, sort_keys=True)
+    key = json.dumps(_key(spec), sort_keys=True)
     run_id = hashlib.sha1(key.encode()).hexdigest()[:16]
     return {"run_id": run_id, "model": spec.model, "fidelity": spec.fidelity, "method": spec.method,
             "rtol": float(spec.rtol), "atol": float(spec.atol), "t0": spec.t_span[0], "t1": spec.t_span[1],
             **dict(spec.params), **dict(spec.y0)}
 
 
-# -- the output file ----------------------------------------------------------
-class _Store:
-    """Rows already on disk, and appending new ones (CSV or JSON lines)."""
+def _missing_row(inputs: dict, reason: str) -> dict:
+    return {**inputs, "status": MISSING, "message": reason, "nfev": None, **_reversal_columns([]),
+            "seconds": math.nan}
 
-    def __init__(self, path: Path | None, columns: tuple, resume: bool):
-        self.path, self.columns = path, columns
-        self.done: dict = {}
-        if path is None:
-            return
-        suffix = path.suffix.lower()
-        if suffix not in (".csv", ".jsonl", ".ndjson", ".json"):
-            raise ValueError(f"`out` must end in .csv or .jsonl (JSON lines), got {path.name!r}")
-        self.jsonl = suffix != ".csv"
-        if path.exists() and resume:
-            self._read()
-        else:
-            path.parent.mkdir(parents=True, exist_ok=True)
-            path.write_text("" if self.jsonl else ",".join(columns) + "\n")
 
-    def _read(self) -> None:
-        text = self.path.read_text()
-        if text and not text.endswith("\n"):  # a row cut short by an interruption: drop it
-            text = text[: text.rfind("\n") + 1]
-            self.path.write_text(text)
-        if self.jsonl:
-            for line in text.splitlines():
-                try:
-                    row = json.loads(line)
-                except json.JSONDecodeError:
-                    continue
-                if isinstance(row, dict) and "run_id" in row:
-                    self.done[row["run_id"]] = row
-            return
-        reader = csv.reader(io.StringIO(text))
-        header = next(reader, None)
-        if header is None:
-            self.path.write_text(",".join(self.columns) + "\n")
-            return
-        if tuple(header) != self.columns:
-            raise ValueError(
-                f"`out` file {str(self.path)!r} holds a sweep with other columns; "
-                "choose another file or pass resume=False to overwrite it"
-            )
-        for cells in reader:
-            if len(cells) == len(self.columns):
-                row = _csv_row(cells, self.columns)
-                self.done[row["run_id"]] = row
-
-    def append(self, row: dict) -> None:
-        if self.path is None:
-            return
-        with open(self.path, "a", newline="") as f:
-            if self.jsonl:
-                f.write(json.dumps({c: row[c] for c in self.columns}, allow_nan=True) + "\n")
-            else:
-                csv.writer(f, lineterminator="\n").writerow(_csv_cells(row, self.columns))
-            f.flush()
-            os.fsync(f.fileno())
+# -- where the results go -----------------------------------------------------
+def _open_store(out, names: Sequence[str]) -> tuple[ResultStore | None, Path | None]:
+    """The SQLite store for ``out``, and the text file to export to (``out`` itself if it is .csv/.jsonl)."""
+    if out is None:
+        return None, None
+    if not isinstance(out, (str, os.PathLike)):
+        raise TypeError(f"`out` must be a file path, got {type(out).__name__}")
+    path = Path(out)
+    suffix = path.suffix.lower()
+    if suffix in STORE_SUFFIXES:
+        return ResultStore(path, names), None
+    if suffix not in TEXT_SUFFIXES:
+        raise ValueError(f"`out` must end in .sqlite (the results store; also .sqlite3, .db), or .csv / .jsonl "
+                         f"(a text export beside a store of the same name ending in .sqlite), got {path.name!r}")
+    db = path.with_suffix(".sqlite")
+    if path.exists() and path.is_dir():
+        raise ValueError(f"`out` {str(path)!r} is a folder")
+    new = not db.exists()
+    legacy = read_text(path) if new and path.exists() else []  # results of an earlier version: keep them
+    store = ResultStore(db, names)
+    if legacy:
+        store.import_rows(legacy)
+    return store, path
 
 
 # -- progress -----------------------------------------------------------------
 class _Progress:
-    def __init__(self, total: int, reused: int, progress):
-        self.total, self.reused, self.done, self.failed = total, reused, reused, 0
-        self.callback = progress if callable(progress) else None
-        self.show = progress is True
-        self.t0 = time.perf_counter()
-        self._line()
+    """A tqdm bar on stderr (``progress=True``), and/or the user's ``callback(done, total, row)``."""
 
-    def _line(self, end: str = "") -> None:
-        if self.show:
-            tty = sys.stderr.isatty()
-            msg = (f"sweep: {self.done}/{self.total} runs ({self.reused} from file, {self.failed} failed), "
-                   f"{time.perf_counter() - self.t0:.1f} s")
-            if tty:
-                print("\r" + msg, end=end, file=sys.stderr, flush=True)
-            elif end or self.done in (self.reused, self.total) or self.done % max(1, self.total // 10) == 0:
-                print(msg, file=sys.stderr, flush=True)
+    def __init__(self, total: int, done: int, progress):
+        self.total, self.done, self.failed, self.missing = total, done, 0, 0
+        self.callback = progress if callable(progress) else None
+        self.bar = None
+        if progress is True:
+            from tqdm.auto import tqdm
+
+            self.bar = tqdm(total=total, initial=done, desc="sweep", unit="run", file=sys.stderr,
+                            dynamic_ncols=True, mininterval=0.5, smoothing=0.05)
 
     def update(self, row: dict) -> None:
         self.done += 1
-        self.failed += row["status"] != "ok"
+        self.failed += row["status"] in ("failed", "error")
         if self.callback:
             self.callback(self.done, self.total, row)
-        self._line()
+        if self.bar is not None:
+            self.bar.update(1)
+            if row["status"] != "ok":
+                self.postfix()
+
+    def postfix(self, waiting: int = 0) -> None:
+        if self.bar is not None:
+            info = {"failed": self.failed}
+            if self.missing:
+                info["no result"] = self.missing
+            if waiting:
+                info["other sweep"] = waiting
+            self.bar.set_postfix(info, refresh=False)
 
     def close(self) -> None:
-        if self.show and sys.stderr.isatty():
-            print(file=sys.stderr, flush=True)
+        if self.bar is not None:
+            self.bar.close()
 
 
 # -- the sweep ----------------------------------------------------------------
@@ -378,6 +416,7 @@ def sweep(
     out: str | Path | None = None,
     resume: bool = True,
     progress: bool | Callable[[int, int, dict], None] = True,
+    chunksize: int | None = None,
 ) -> SweepTable:
     """Integrate one model over a grid of parameters and initial states.
 
@@ -386,91 +425,257 @@ def sweep(
     scene_or_model : Scene, scene name, RunSpec or Model
         The base run.  A scene or run brings its parameters, initial state,
         span, method and tolerances; a Model needs ``params``, ``y0`` and
-        ``t_span``.
+        ``t_span`` (a model loaded with ``path=`` is loaded from that folder
+        by every worker).
     grid : mapping ``{name: values}`` (Cartesian product, first name slowest)
         or sequence of mappings (explicit points).  Names are parameter names
         (``"D"``), initial-state names (``"phi_dot"``) or ``"method"``,
         ``"rtol"``, ``"atol"``, ``"t_end"``, ``"max_steps"``.
     params, y0 : mappings; for a scene, values that replace the scene's.
     t_span, method, rtol, atol : replace the base run's settings.
-    executor : ``concurrent.futures.Executor``, ``"serial"`` or None
-        Where runs execute.  None: a ``ProcessPoolExecutor`` with
-        ``max_workers`` (default: all cores), shut down at the end.  A Dask
-        cluster: ``distributed.Client(...).get_executor()``.  ``"serial"``:
-        in this process.
-    out : path ending in ``.csv`` or ``.jsonl``, optional
-        Each finished run is appended (and flushed) at once.  If the file
-        exists and ``resume`` is true, runs already in it are read back, not
-        recomputed; otherwise it is overwritten.
-    progress : True (a counter on stderr), False, or ``callback(done, total, row)``.
+    executor : ``concurrent.futures.Executor``, ``"processes"``, ``"serial"`` or None
+        Where runs execute.  None or ``"processes"``: ``max_workers`` local
+        worker processes (default: all cores; a single run or one worker
+        runs in this process) that are replaced if they die and never
+        outlive the sweep.  An Executor: e.g. a Dask cluster,
+        ``distributed.Client(...).get_executor()``.  ``"serial"``: in this
+        process.
+    max_workers : number of local worker processes.
+    out : path, optional
+        The results store.  ``.sqlite`` (or ``.sqlite3``, ``.db``): an SQLite
+        file, one row per run, each committed as it finishes.  ``.csv`` or
+        ``.jsonl``: the store is the file of the same name ending in
+        ``.sqlite`` and this file is a text export of the sweep's rows,
+        rewritten when the sweep ends (a text file written by an earlier
+        version is read in first).  Runs already in the store are read back,
+        not recomputed; runs claimed by a concurrent sweep on the same store
+        are left to it and their rows awaited.
+    resume : if False, runs stored before this call are recomputed (and replaced).
+    progress : True (a tqdm bar on stderr), False, or ``callback(done, total, row)``.
+    chunksize : runs per task sent to a worker; default: sized from the
+        runs' duration so that a task takes about 0.25 s (up to 64 runs).
 
     Returns
     -------
     SweepTable
-        Rows in grid order.  Columns: ``run_id``, ``model``, ``fidelity``,
-        ``method``, ``rtol``, ``atol``, ``t0``, ``t1``, every parameter, every
-        initial state, then ``status`` (``"ok"``/``"failed"``/``"error"``),
+        Rows in grid order (``.to_pandas()`` for a DataFrame).  Columns:
+        ``run_id`` (a hash of the run's inputs), ``model``, ``fidelity``,
+        ``method``, ``rtol``, ``atol``, ``t0``, ``t1``, every parameter,
+        every initial state, then ``status`` (``"ok"``/``"failed"``/
+        ``"error"``, or ``"missing"`` for a run without a result),
         ``message``, ``nfev``, ``n_reversals``, ``first_reversal`` (time of
         the first spin reversal, NaN if none), ``mean_interval`` (mean time
-        between consecutive reversals, NaN if fewer than two) and
-        ``reversal_times`` (list).
+        between consecutive reversals, NaN if fewer than two),
+        ``reversal_times`` (list) and ``seconds`` (the run's time in its worker).
+
+    Warns
+    -----
+    RuntimeWarning
+        If some runs have no result (their worker died every time), or rows
+        of the store were damaged (they are recomputed).
     """
-    if not (executor is None or executor == "serial" or isinstance(executor, cf.Executor)):
-        raise TypeError(f"`executor` must be a concurrent.futures.Executor, 'serial' or None, got {executor!r}")
-    if max_workers is not None and (not isinstance(max_workers, int) or max_workers < 1):
+    if not (executor is None or executor in ("serial", "processes") or isinstance(executor, cf.Executor)):
+        raise TypeError(f"`executor` must be a concurrent.futures.Executor, 'processes', 'serial' or None, "
+                        f"got {executor!r}")
+    if max_workers is not None and (isinstance(max_workers, bool) or not isinstance(max_workers, int)
+                                    or max_workers < 1):
         raise ValueError(f"`max_workers` must be a positive integer, got {max_workers!r}")
+    if chunksize is not None and (isinstance(chunksize, bool) or not isinstance(chunksize, int) or chunksize < 1):
+        raise ValueError(f"`chunksize` must be a positive integer, got {chunksize!r}")
     if not (isinstance(progress, bool) or callable(progress)):
         raise TypeError("`progress` must be True, False or a callable(done, total, row)")
+    if not isinstance(resume, bool):
+        raise TypeError(f"`resume` must be True or False, got {resume!r}")
     run = _base_run(scene_or_model, params, y0, t_span, method, rtol, atol)
     specs = _expand(run, _grid_points(grid))
     columns = _columns(run)
     inputs = [_inputs(s) for s in specs]
-    store = _Store(Path(out) if out is not None else None, columns, resume)
-
-    rows: list = [None] * len(specs)
-    todo = []
-    for i, inp in enumerate(inputs):
-        if inp["run_id"] in store.done:
-            rows[i] = {**store.done[inp["run_id"]], **inp}
-        else:
-            todo.append(i)
-    n_reused = len(specs) - len(todo)
-    bar = _Progress(len(specs), n_reused, progress)
-
-    def finish(i: int, outcome: dict) -> None:
-        row = {**inputs[i], **outcome}
-        rows[i] = row
-        store.append(row)
-        bar.update(row)
-
+    store, export = _open_store(out, (*run.params, *run.y0))
     try:
-        if todo and (executor == "serial" or (executor is None and (len(todo) == 1 or max_workers == 1))):
-            for i in todo:
-                finish(i, run_one(specs[i].to_dict()))
-        elif todo:
-            own = executor is None
-            pool = cf.ProcessPoolExecutor(max_workers=max_workers or os.cpu_count()) if own else executor
-            futures = {}
+        return _Sweep(specs, inputs, columns, store, export, executor, max_workers, resume, progress,
+                      chunksize).run()
+    finally:
+        if store is not None:
+            store.close()
+
+
+class _Sweep:
+    def __init__(self, specs, inputs, columns, store, export, executor, max_workers, resume, progress, chunksize):
+        self.inputs, self.columns, self.store, self.export = inputs, columns, store, export
+        self.executor, self.max_workers, self.chunksize = executor, max_workers, chunksize
+        self.since = None if resume else time.time()
+        self.progress = progress
+        self.by_id: dict = {}  # run_id -> index of its first grid point
+        self.spec_of: dict = {}
+        for i, (s, inp) in enumerate(zip(specs, inputs)):
+            self.by_id.setdefault(inp["run_id"], i)
+            self.spec_of.setdefault(inp["run_id"], s)
+        self.results: dict = {}  # run_id -> row
+        self.missing: dict = {}  # run_id -> reason
+        self.damaged: list = []
+        self.n_computed = 0
+        self.n_retried = 0
+        self.times: deque = deque(maxlen=64)
+
+    # -- helpers ------------------------------------------------------------------
+    def _row(self, rid: str, outcome: Mapping) -> dict:
+        return {**self.inputs[self.by_id[rid]], **outcome}
+
+    def _record(self, rows: list, computed: bool) -> None:
+        for row in rows:
+            self.results[row["run_id"]] = row
+            self.bar.update(row)
+        if computed:
+            self.n_computed += len(rows)
+
+    def _pool(self, n_todo: int):
+        ex = self.executor
+        if ex == "serial" or (ex is None and (n_todo <= 1 or self.max_workers == 1)):
+            return SerialPool(run_batch), 1
+        if ex in (None, "processes"):
+            n = self.max_workers or os.cpu_count() or 1
+            n = max(1, min(n, n_todo))
+            return LocalPool(n), n
+        n = self.max_workers
+        client = getattr(ex, "_client", None)  # distributed.Client.get_executor()
+        if n is None and client is not None:
             try:
-                futures = {pool.submit(run_one, specs[i].to_dict()): i for i in todo}
-                for fut in cf.as_completed(futures):
-                    try:
-                        outcome = fut.result()
-                    except Exception as exc:  # the worker itself died
-                        outcome = {"status": "error", "message": f"{type(exc).__name__}: {exc}", "nfev": 0,
-                                   **_reversal_columns([])}
-                    finish(futures[fut], outcome)
-            finally:
-                for fut in futures:
-                    fut.cancel()
-                if own:
-                    pool.shutdown(wait=False, cancel_futures=True)
-    except KeyboardInterrupt:
-        bar.close()
-        if progress is True:
-            saved = f"; the {bar.done} finished runs are in {store.path}: run the same sweep again to resume" \
-                if store.path is not None else ""
-            print(f"sweep: interrupted after {bar.done}/{bar.total} runs{saved}", file=sys.stderr, flush=True)
-        raise
-    bar.close()
-    return SweepTable(columns, rows, n_computed=len(todo), n_reused=n_reused)
+                n = sum(client.nthreads().values())
+            except Exception:  # noqa: BLE001
+                n = None
+        n = n or getattr(ex, "_max_workers", None) or os.cpu_count() or 1
+        return ExecutorPool(ex, run_batch, 2 * n), n
+
+    def _chunk(self, remaining: int, n_workers: int) -> int:
+        if self.chunksize is not None:
+            return self.chunksize
+        if len(self.times) < 2:
+            return 1
+        per_run = max(statistics.median(self.times), 1e-5)
+        k = int(TASK_SECONDS / per_run)
+        k = min(k, 64, max(1, remaining // (4 * n_workers)))  # keep the tail balanced
+        return max(1, k)
+
+    # -- the loop -----------------------------------------------------------------
+    def run(self) -> SweepTable:
+        order = list(self.by_id)
+        if self.store is not None:
+            found, damaged = self.store.read(order, self.since)
+            self.damaged.extend(damaged)
+            self.results.update({rid: {**self._row(rid, {}), **{c: row[c] for c in RESULT_COLUMNS if c in row}}
+                                 for rid, row in found.items()})
+        for msg in self.damaged:
+            warnings.warn(msg, RuntimeWarning, stacklevel=3)
+        n_reused = len(self.results)
+        todo = deque(r for r in order if r not in self.results)
+        self.bar = _Progress(len(order), n_reused, self.progress)
+        self.bar.done = n_reused
+        pool, n_workers = (None, 0)
+        attempts: dict = {}
+        others: dict = {}  # run_id -> who holds it
+        inflight: dict = {}  # task id -> run ids
+        task_ids = itertools.count()
+        interrupted = False
+        last_poll = 0.0
+        try:
+            if todo:
+                pool, n_workers = self._pool(len(todo))
+            while todo or inflight or others:
+                # hand out work while the pool has room
+                while todo and pool.free():
+                    k = 1 if todo[0] in attempts else self._chunk(len(todo), n_workers)
+                    ids = [todo.popleft() for _ in range(min(k, len(todo)))]
+                    ids = self._claim(ids, others)
+                    if ids:
+                        t = next(task_ids)
+                        inflight[t] = ids
+                        pool.submit(t, [self.spec_of[r].to_dict() for r in ids])
+                # collect finished tasks
+                for t, out in pool.wait(0.5 if (inflight or not others) else 1.0):
+                    ids = inflight.pop(t)
+                    if isinstance(out, WorkerLost):
+                        self._lost(ids, str(out), attempts, todo)
+                        continue
+                    rows = [self._row(rid, o) for rid, o in zip(ids, out)]
+                    self.times.extend(o["seconds"] for o in out)
+                    if self.store is not None:
+                        self.store.write(rows, {r: json.dumps(self.spec_of[r].to_dict()) for r in ids})
+                    self._record(rows, computed=True)
+                broken = getattr(pool, "broken", None)
+                if broken and not inflight and todo:  # an executor that takes no more work
+                    for rid in todo:
+                        self.missing[rid] = f"not computed: the executor is broken ({broken})"
+                    self.bar.missing += len(todo)
+                    if self.store is not None:
+                        self.store.release(list(todo))
+                    todo.clear()
+                if self.store is not None:
+                    self.store.renew()
+                    now = time.monotonic()
+                    if others and not todo and now - last_poll > 0.5:  # another sweep's runs: done yet?
+                        last_poll = now
+                        waiting = list(others)
+                        others.clear()
+                        todo.extend(self._claim(waiting, others))
+                    self.bar.postfix(waiting=len(others))
+        except BaseException:
+            interrupted = True
+            raise
+        finally:
+            if pool is not None:
+                pool.shutdown()
+            if self.store is not None:
+                # runs handed out but unfinished: not results; free them for a resume or another sweep
+                self.store.release()
+            self.bar.close()
+            rows = [self.results.get(inp["run_id"]) or _missing_row(inp, self.missing.get(
+                inp["run_id"], "not computed: the sweep was interrupted")) for inp in self.inputs]
+            if self.export is not None:
+                write_text(self.export, [r for r in rows if r["status"] != MISSING], self.columns)
+            if interrupted and self.progress is True:
+                where = self.store.path if self.store is not None else None
+                saved = (f"; the finished runs are in {where}: run the same sweep again to resume"
+                         if where is not None else "")
+                print(f"sweep: interrupted after {len(self.results)}/{len(order)} runs{saved}", file=sys.stderr,
+                      flush=True)
+        table = SweepTable(self.columns, rows, n_computed=self.n_computed, n_reused=len(self.results) - self.n_computed,
+                           n_missing=len(self.inputs) - sum(r["status"] != MISSING for r in rows),
+                           store=self.store.path if self.store is not None else None, damaged=self.damaged,
+                           n_retried=self.n_retried)
+        if table.n_missing:
+            warnings.warn(f"sweep: {table.n_missing} run(s) have no result ({next(iter(self.missing.values()))}); "
+                          "run the same sweep again to compute them", RuntimeWarning, stacklevel=3)
+        return table
+
+    def _claim(self, ids: list, others: dict) -> list:
+        """Claim ``ids`` in the store; record rows found written, note runs held by another sweep."""
+        if self.store is None:
+            return ids
+        claimed, done, busy, damaged = self.store.claim(ids, self.since)
+        for msg in damaged:
+            if msg not in self.damaged:
+                self.damaged.append(msg)
+                warnings.warn(msg, RuntimeWarning, stacklevel=4)
+        if done:
+            self._record([{**self._row(rid, {}), **{c: row[c] for c in RESULT_COLUMNS if c in row}}
+                          for rid, row in done.items()], computed=False)
+        others.update(busy)
+        return claimed
+
+    def _lost(self, ids: list, reason: str, attempts: dict, todo: deque) -> None:
+        """Runs of a task lost to the infrastructure: retry each alone, up to MAX_ATTEMPTS."""
+        retry = []
+        for rid in ids:
+            attempts[rid] = attempts.get(rid, 0) + 1
+            if attempts[rid] < MAX_ATTEMPTS:
+                retry.append(rid)
+            else:
+                self.missing[rid] = f"no result after {MAX_ATTEMPTS} attempts: {reason}"
+                self.bar.missing += 1
+        if self.store is not None:
+            self.store.release([r for r in ids if r not in retry])
+        # retried first, one run per task, so that a run that kills its worker is isolated
+        self.n_retried += len(retry)
+        for rid in reversed(retry):
+            todo.appendleft(rid)
+        self.bar.postfix()

@@ -63,6 +63,9 @@ def compute(scene: Scene, progress) -> SceneResult:
         r = require_success(run.with_(phi_dot=a0, t_end=2.4 * t_r).simulate(), scene)
         t, amp, phi_dot = _period_mean(r.t, envelope(r["theta"], r["theta_dot"], w), r["phi_dot"], 2 * math.pi / w)
         inv = phi_dot**2 + p["g"] * p["ell"] / p["L"] ** 2 * amp**2
+        if not r.reversal_times.size:
+            raise RuntimeError(f"scene {scene.name}: the run from phi_dot = {a0:g} has no spin reversal before "
+                               f"t = {2.4 * t_r:g}")
         rev = float(r.reversal_times[0])
         early = t < 0.5 * rev
         late = t > rev + 0.6 * (t[-1] - rev)
@@ -105,7 +108,7 @@ def draw(res: SceneResult, fig) -> None:
             ax.plot(x, y, color="k", lw=1.2,
                     label="orbits of the amplitude equations (Chap3)" if (i == 0 and side == 1) else None)
             # arrows along the flow (from A_phi = +A0 down to A_phi = -A0)
-            for frac in (0.3, 0.7):
+            for frac in ((0.3, 0.7) if len(x) > 6 else ()):
                 j = int(np.argmin(np.abs(y - (1 - 2 * frac) * levels[i])))
                 j = min(j, len(x) - 6)
                 ax.annotate("", xy=(x[j + 5], y[j + 5]), xytext=(x[j], y[j]),

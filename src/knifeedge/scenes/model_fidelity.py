@@ -16,7 +16,7 @@ import time
 import numpy as np
 
 from .base import RunSpec, Scene, SceneResult
-from .common import label_log_ticks
+from .common import label_log_ticks, require_success
 from .numerical import RUN as SINGLE_RUN
 from .numerical2 import RUN as TWO_RUN
 
@@ -60,7 +60,10 @@ def compute(scene: Scene, progress) -> SceneResult:
             2 * ratio * w * ref_run.params["L"] / (math.sqrt(ref_run.params["g"] * ref_run.params["ell"]) * 1e-3))
         base = ref_run.with_(phi_dot=ratio * w, t_end=t_end)
         progress(f"single mode, phi_dot0/omega = {ratio:g}: full, reduced, amplitude")
-        ref = base.simulate()  # the reference: full model, rtol 1e-12
+        ref = require_success(base.simulate(), scene)  # the reference: full model, rtol 1e-12
+        if not ref.reversal_times.size:
+            raise RuntimeError(f"scene {scene.name}: the reference run (phi_dot0/omega = {ratio:g}) has no spin "
+                               f"reversal before t = {t_end:g}")
         t_ref = float(ref.reversal_times[0])
         row = {"ratio": ratio}
         for fid, run in (("full", base.with_(rtol=1e-10, atol=1e-12)),

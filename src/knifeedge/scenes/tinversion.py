@@ -43,9 +43,18 @@ def _theory(run, points) -> list:
     return out
 
 
-def compute(scene: Scene, progress) -> SceneResult:
-    from ..sweep import sweep
+def _first_reversals(run, points) -> tuple:
+    """First reversal time of each run (NaN if none), and why it is missing."""
+    t_r, why = [], []
+    for pt in points:
+        r = run.with_(**pt, n_eval=None).simulate()
+        rev = r.reversal_times
+        t_r.append(float(rev[0]) if r.success and len(rev) else math.nan)
+        why.append("" if r.success and len(rev) else (r.message if not r.success else "no reversal in the span"))
+    return np.array(t_r), why
 
+
+def compute(scene: Scene, progress) -> SceneResult:
     run = scene.run
     res = SceneResult(scene)
     scans = {}
@@ -57,10 +66,9 @@ def compute(scene: Scene, progress) -> SceneResult:
             pt["t_end"] = _t_end(run, pt["phi_dot"], pt["D"])
             points.append(pt)
         progress(f"sweep over {key}: {len(points)} runs")
-        table = sweep(run, points, executor="serial", progress=False)
-        t_r = table["first_reversal"]
+        t_r, why = _first_reversals(run, points)
         if not np.all(np.isfinite(t_r)):
-            bad = [r["message"] or "no reversal in the span" for r in table.rows if not math.isfinite(r["first_reversal"])]
+            bad = [w for w in why if w]
             raise RuntimeError(f"scene {scene.name}: {len(bad)} run(s) without a first reversal: {bad[0]}")
         b, se, a = fit_power_law(values, t_r)
         theory = _theory(run, points)

@@ -1,0 +1,152 @@
+"""``RunSpec``: one integration written as data.
+
+A core notion, below scenes, sweeps, figures and the command line (imports
+flow ``runspec`` <- ``scenes`` <- ``sweep`` / ``figures`` / ``cli``): model
+name, fidelity, pose or not, parameters and initial state by name, time
+span, method, tolerances, and the folder of a user's model (``path``) so
+that a worker process can load it.
+"""
+from __future__ import annotations
+
+import dataclasses
+import math
+import os
+from collections.abc import Mapping
+from dataclasses import dataclass
+from pathlib import Path
+from types import MappingProxyType
+from typing import Any
+
+import numpy as np
+
+#: run settings that :meth:`RunSpec.with_` and sweeps accept besides parameter and state names
+RUN_SETTINGS = ("fidelity", "method", "rtol", "atol", "t_end", "pose", "n_eval", "max_steps", "path")
+
+
+def _frozen(mapping: Mapping | None) -> Mapping:
+    return MappingProxyType({k: float(v) for k, v in dict(mapping or {}).items()})
+
+
+@dataclass(frozen=True)
+class RunSpec:
+    """One integration as data.
+
+    Attributes
+    ----------
+    model : ``"single_mode"`` or ``"two_mode"``.
+    fidelity : ``"full"``, ``"reduced"`` (or ``"amplitude"`` where available).
+    params : mapping of parameter names to values (units g = ell = 1 unless set).
+    y0 : mapping of state names to initial values.
+    t_span : (t0, t1) in units of sqrt(ell/g).
+    pose : carry the position on the table ``(phi, x, y)``.
+    method, rtol, atol : integrator and tolerances (see ``knifeedge.METHODS``).
+    n_eval : number of equally spaced output samples; ``None`` keeps the
+        solver's own steps.
+    max_steps : step budget of the integrator (``None``: its default); a run
+        that needs more fails with a message saying so.
+    path : folder of a user's generated model (``knifeedge.load(model,
+        path=...)``), stored as an absolute path so that a worker process in
+        another directory loads the same model; ``None`` for the built-in
+        models.
+    """
+
+    model: str
+    fidelity: str
+    params: Mapping[str, float]
+    y0: Mapping[str, float]
+    t_span: tuple[float, float]
+    pose: bool = False
+    method: str = "DOP853"
+    rtol: float = 1e-10
+    atol: float = 1e-12
+    n_eval: int | None = 4001
+    max_steps: int | None = None
+    path: str | None = None
+
+    def __post_init__(self):
+        if self.path is not None:
+            if not isinstance(self.path, (str, os.PathLike)):
+                raise TypeError(f"`path` must be a folder (str or os.PathLike) or None, got {self.path!r}")
+            object.__setattr__(self, "path", str(Path(self.path).expanduser().resolve()))
+        object.__setattr__(self, "params", _frozen(self.params))
+        object.__setattr__(self, "y0", _frozen(self.y0))
+        object.__setattr__(self, "t_span", (float(self.t_span[0]), float(self.t_span[1])))
+
+    # -- derived objects -----------------------------------------------------
+    def load(self):
+        """The :class:`knifeedge.Model` this run integrates."""
+        from .models import load
+
+        if self.path is None:
+            return load(self.model, fidelity=self.fidelity, pose=self.pose)
+        return load(self.model, fidelity=self.fidelity, pose=self.pose, path=self.path)
+
+    def simulate(self):
+        """Integrate; returns a :class:`knifeedge.SimulationResult`."""
+        from .simulate import simulate
+
+        m = self.load()
+        t_eval = None if self.n_eval is None else np.linspace(*self.t_span, int(self.n_eval))
+        extra = {} if self.max_steps is None else {"max_steps": int(self.max_steps)}
+        return simulate(m, dict(self.y0), self.t_span, dict(self.params), method=self.method,
+                        rtol=self.rtol, atol=self.atol, t_eval=t_eval, **extra)
+
+    # -- variations ----------------------------------------------------------
+    def with_(self, **changes: Any) -> "RunSpec":
+        """A copy with some parameters, initial values or settings changed.
+
+        Keys may be parameter names (``D=0.5``), state names (``phi_dot=0.2``)
+        or run settings (``fidelity``, ``method``, ``rtol``, ``atol``,
+        ``t_end``, ``pose``, ``n_eval``, ``max_steps``, ``path``).
+        """
+        params, y0 = dict(self.params), dict(self.y0)
+        settings: dict = {}
+        unknown = []
+        for key, value in changes.items():
+            if key in params:
+                params[key] = value
+            elif key in y0:
+                y0[key] = value
+            elif key == "t_end":
+                settings["t_span"] = (self.t_span[0], float(value))
+            elif key in RUN_SETTINGS:
+                settings[key] = value
+            else:
+                unknown.append(key)
+        if unknown:
+            raise ValueError(
+                f"unknown name(s) {unknown} for a {self.model} run; accepted: parameters {tuple(params)}, "
+                f"initial state {tuple(y0)}, settings {RUN_SETTINGS}"
+            )
+        return dataclasses.replace(self, params=params, y0=y0, **settings)
+
+    def to_dict(self) -> dict:
+        """Plain-data form (JSON-serialisable, picklable); :meth:`from_dict` reads it back."""
+        return {
+            "model": self.model, "fidelity": self.fidelity, "pose": self.pose,
+            "params": dict(self.params), "y0": dict(self.y0), "t_span": list(self.t_span),
+            "method": self.method, "rtol": self.rtol, "atol": self.atol, "n_eval": self.n_eval,
+            "max_steps": self.max_steps, "path": self.path,
+        }
+
+    @classmethod
+    def from_dict(cls, d: Mapping) -> "RunSpec":
+        d = dict(d)
+        d["t_span"] = tuple(d["t_span"])
+        return cls(**d)
+
+    def describe(self) -> str:
+        """One line: model, fidelity, parameters, initial state, span, method."""
+        ps = ", ".join(f"{k}={_fmt(v)}" for k, v in self.params.items())
+        ys = ", ".join(f"{k}={_fmt(v)}" for k, v in self.y0.items() if v != 0.0)
+        pose = ", pose" if self.pose else ""
+        if self.path is not None:
+            pose += f", from {self.path}"
+        return (f"{self.model} ({self.fidelity}{pose}); {ps}; y0: {ys or 'all zero'}; "
+                f"t in [{_fmt(self.t_span[0])}, {_fmt(self.t_span[1])}]; {self.method} rtol={self.rtol:g} atol={self.atol:g}")
+
+
+def _fmt(v: float) -> str:
+    if v == math.pi / 4:
+        return "pi/4"
+    return f"{v:g}"

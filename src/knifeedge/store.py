@@ -1,0 +1,482 @@
+"""The results store of sweeps: one SQLite file, one row per run.
+
+A sweep's results are the user's data, so they live in a store made for it:
+an SQLite database (Python's standard library; readable by the ``sqlite3``
+shell, ``pandas.read_sql``, DB browsers).
+
+* **One row per run**, keyed by ``run_id``, a hash of the run's inputs (its
+  :class:`~knifeedge.runspec.RunSpec` without the output sampling).  The key
+  is the table's primary key: two sweeps on one file cannot both write a run.
+* **Typed columns**: the inputs (model, fidelity, method, tolerances, span,
+  every parameter and initial state as a ``REAL`` column), the outcome
+  (``status``, ``message``, ``nfev``, ``n_reversals``, ``first_reversal``,
+  ``mean_interval``, ``reversal_times`` as a JSON list), the worker time of
+  the run (``seconds``), when it finished, the full run as JSON (``spec``)
+  and a ``checksum`` of the row: a row edited by hand or damaged is detected,
+  reported (file and run) and recomputed, never trusted.
+* **Transactions, WAL journal**: rows are committed as they arrive; a sweep
+  killed at any instant leaves every committed row intact and readable.
+* **Claims with a lease**: before a run is computed, the sweep claims it in
+  the ``claims`` table (one transaction).  A second sweep on the same file
+  skips runs claimed by a live sweep and computes the others, then waits for
+  the first sweep's rows; a claim whose owner died (same host: its process is
+  gone; another host: its lease expired without renewal) is taken over.  So
+  concurrent sweeps share the work, nothing is computed twice and nothing is
+  lost.
+
+CSV and JSON-lines files are exports (:func:`write_text`) and, for results
+written by earlier versions, imports (:func:`read_text`): an unreadable line
+is an error naming the file, the line and what to do.
+"""
+from __future__ import annotations
+
+import csv
+import hashlib
+import io
+import json
+import math
+import os
+import socket
+import sqlite3
+import tempfile
+import time
+import uuid
+from collections.abc import Iterable, Mapping, Sequence
+from pathlib import Path
+
+#: outcome columns, after the input columns
+RESULT_COLUMNS = ("status", "message", "nfev", "n_reversals", "first_reversal", "mean_interval", "reversal_times",
+                  "seconds")
+#: statuses of a run that has a result: reached the end / the integrator gave up / the run raised
+STATUSES = ("ok", "failed", "error")
+#: fixed input columns, before the parameters and initial states
+INPUT_COLUMNS = ("run_id", "model", "fidelity", "method", "rtol", "atol", "t0", "t1")
+TEXT_COLUMNS = frozenset({"run_id", "model", "fidelity", "method", "status", "message"})
+INT_COLUMNS = frozenset({"nfev", "n_reversals"})
+STORE_SUFFIXES = (".sqlite", ".sqlite3", ".db")
+TEXT_SUFFIXES = (".csv", ".jsonl", ".ndjson", ".json")
+SCHEMA_VERSION = 1
+_RESERVED = frozenset(INPUT_COLUMNS + RESULT_COLUMNS + ("spec", "finished_at", "checksum"))
+
+
+# -- rows -----------------------------------------------------------------------
+def checksum(row: Mapping, columns: Iterable[str]) -> str:
+    """Hash of a row's values in ``columns`` (floats exactly, NaN as null)."""
+    canon = {}
+    for c in sorted(columns):
+        v = row.get(c)
+        if isinstance(v, float):
+            v = float.hex(v) if math.isfinite(v) else (None if math.isnan(v) else repr(v))
+        elif isinstance(v, (list, tuple)):
+            v = [float.hex(float(x)) for x in v]
+        canon[c] = v
+    return hashlib.sha256(json.dumps(canon, sort_keys=True).encode()).hexdigest()[:16]
+
+
+def _coerce(column: str, value, where: str):
+    """A cell read from a file or the database, as the column's Python type; ValueError saying what is wrong."""
+    if column in TEXT_COLUMNS:
+        if not isinstance(value, str):
+            if column == "message" and value is None:
+                return ""
+            raise ValueError(f"{where}: column `{column}` must be text, got {value!r}")
+        if column == "status" and value not in STATUSES:
+            raise ValueError(f"{where}: column `status` must be one of {', '.join(STATUSES)}, got {value!r}")
+        return value
+    if column == "reversal_times":
+        if isinstance(value, str):
+            text = value.strip()
+            try:
+                value = json.loads(text) if text.startswith("[") else [float(t) for t in text.split()]
+            except ValueError:
+                raise ValueError(f"{where}: column `reversal_times` must be numbers separated by spaces, "
+                                 f"got {value!r}") from None
+        if not isinstance(value, list) or not all(isinstance(t, (int, float)) and not isinstance(t, bool)
+                                                  for t in value):
+            raise ValueError(f"{where}: column `reversal_times` must be a list of numbers, got {value!r}")
+        return [float(t) for t in value]
+    if column in INT_COLUMNS:
+        try:
+            if isinstance(value, bool) or (isinstance(value, float) and not value.is_integer()):
+                raise ValueError
+            return int(value)
+        except (TypeError, ValueError):
+            raise ValueError(f"{where}: column `{column}` must be a whole number, got {value!r}") from None
+    # a number (NaN stored as NULL / empty)
+    if value is None or value == "":
+        return math.nan
+    if isinstance(value, bool):
+        raise ValueError(f"{where}: column `{column}` must be a number, got {value!r}")
+    try:
+        return float(value)
+    except (TypeError, ValueError):
+        raise ValueError(f"{where}: column `{column}` must be a number, got {value!r}") from None
+
+
+# -- identity of this process, for claims ---------------------------------------------
+def _start_time(pid: int) -> str | None:
+    """The start time of process ``pid`` (Linux ``/proc``), to tell a reused pid from its first owner."""
+    try:
+        with open(f"/proc/{pid}/stat", "rb") as f:
+            return f.read().rsplit(b")", 1)[1].split()[19].decode()
+    except (OSError, IndexError):
+        return None
+
+
+def _alive(pid: int, started: str | None) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        pass  # exists, another user's
+    return started is None or _start_time(pid) in (None, started)
+
+
+class StoreError(ValueError):
+    """A results file that cannot be used as it is (the message says which file and what to do)."""
+
+
+# -- the store ------------------------------------------------------------------------
+class ResultStore:
+    """An SQLite file of run results (see the module docstring).
+
+    Parameters
+    ----------
+    path : the database file (created if missing).
+    input_columns : the parameter and initial-state names of the sweep; a
+        column is added for each name the table does not have yet.
+    lease : seconds a claim stays valid without renewal (matters only for
+        sweeps on other hosts; on one host a claim lives as long as its process).
+    """
+
+    def __init__(self, path: str | Path, input_columns: Sequence[str] = (), lease: float = 120.0):
+        self.path = Path(path)
+        self.lease = float(lease)
+        self.owner = uuid.uuid4().hex
+        self.host = socket.gethostname()
+        self.pid = os.getpid()
+        self.started = _start_time(self.pid)
+        self._mine: set = set()
+        self._last_renew = 0.0
+        self.path.parent.mkdir(parents=True, exist_ok=True)
+        try:
+            self.db = sqlite3.connect(str(self.path), timeout=60.0, isolation_level=None, check_same_thread=False)
+            self.db.execute("PRAGMA journal_mode=WAL")
+            self.db.execute("PRAGMA synchronous=NORMAL")
+            self._create(tuple(input_columns))
+        except sqlite3.DatabaseError as exc:
+            raise StoreError(f"`out` file {str(self.path)!r} is not a knifeedge results database ({exc}); "
+                             "choose another file name") from None
+
+    # -- schema -------------------------------------------------------------------
+    def _create(self, names: tuple) -> None:
+        bad = sorted(set(names) & _RESERVED)
+        if bad:
+            raise StoreError(f"parameter or state name(s) {bad} clash with the columns of the results table")
+        with self._transaction():
+            self.db.execute("CREATE TABLE IF NOT EXISTS meta (key TEXT PRIMARY KEY, value TEXT NOT NULL)")
+            row = self.db.execute("SELECT value FROM meta WHERE key = 'schema_version'").fetchone()
+            if row is None:
+                self.db.execute("INSERT INTO meta VALUES ('schema_version', ?), ('written_by', 'knifeedge')",
+                                (str(SCHEMA_VERSION),))
+            elif row[0] != str(SCHEMA_VERSION):
+                raise StoreError(f"`out` file {str(self.path)!r} has results schema {row[0]}, this knifeedge "
+                                 f"reads schema {SCHEMA_VERSION}: choose another file")
+            self.db.execute(
+                "CREATE TABLE IF NOT EXISTS runs (run_id TEXT PRIMARY KEY, model TEXT NOT NULL, "
+                "fidelity TEXT NOT NULL, method TEXT NOT NULL, rtol REAL, atol REAL, t0 REAL, t1 REAL, "
+                "status TEXT NOT NULL, message TEXT, nfev INTEGER, n_reversals INTEGER, first_reversal REAL, "
+                "mean_interval REAL, reversal_times TEXT, seconds REAL, finished_at REAL, spec TEXT, "
+                "checksum TEXT NOT NULL)")
+            self.db.execute("CREATE TABLE IF NOT EXISTS claims (run_id TEXT PRIMARY KEY, owner TEXT NOT NULL, "
+                            "host TEXT NOT NULL, pid INTEGER NOT NULL, started TEXT, expires REAL NOT NULL)")
+            have = {r[1] for r in self.db.execute("PRAGMA table_info(runs)")}
+            for n in names:
+                if n not in have:
+                    self.db.execute(f"ALTER TABLE runs ADD COLUMN {_q(n)} REAL")
+        self.columns = tuple(r[1] for r in self.db.execute("PRAGMA table_info(runs)"))
+
+    class _Tx:
+        def __init__(self, db):
+            self.db = db
+
+        def __enter__(self):
+            self.db.execute("BEGIN IMMEDIATE")
+            return self.db
+
+        def __exit__(self, kind, exc, tb):
+            self.db.execute("COMMIT" if kind is None else "ROLLBACK")
+
+    def _transaction(self):
+        return self._Tx(self.db)
+
+    # -- reading ------------------------------------------------------------------
+    def read(self, run_ids: Sequence[str], since: float | None = None) -> tuple[dict, list]:
+        """Rows of ``run_ids`` that hold a result: ``({run_id: row}, damaged)``.
+
+        ``damaged`` lists one message per row that fails its checksum or
+        cannot be read; those runs count as having no result.  With ``since``,
+        rows finished before that time are left out (a fresh sweep recomputes them).
+        """
+        found, damaged = {}, []
+        ids = list(dict.fromkeys(run_ids))
+        for i in range(0, len(ids), 500):
+            chunk = ids[i:i + 500]
+            cur = self.db.execute(f"SELECT rowid, * FROM runs WHERE run_id IN ({','.join('?' * len(chunk))})", chunk)
+            names = [d[0] for d in cur.description]
+            for values in cur.fetchall():
+                raw = dict(zip(names, values))
+                rid = raw["run_id"]
+                if since is not None and (raw["finished_at"] or 0.0) < since:
+                    continue
+                try:
+                    row = self._decode(raw)
+                except ValueError as exc:
+                    damaged.append(f"{exc}; the run will be recomputed and its row replaced")
+                    continue
+                found[rid] = row
+        return found, damaged
+
+    def _decode(self, raw: dict) -> dict:
+        where = f"{self.path}: row {raw['rowid']} (run {raw['run_id']})"
+        row = {}
+        for c, v in raw.items():
+            if c in ("rowid", "spec", "checksum", "finished_at"):
+                continue
+            if v is None and c not in INPUT_COLUMNS and c not in RESULT_COLUMNS:
+                continue  # a parameter or state of another model's runs
+            if v is None and c == "reversal_times":
+                raise ValueError(f"{where}: column `reversal_times` is empty")
+            row[c] = _coerce(c, v, where)
+        if raw["checksum"] != checksum(row, row):
+            raise ValueError(f"{where}: its checksum does not match its values (edited by hand or damaged)")
+        return row
+
+    def count(self) -> int:
+        return self.db.execute("SELECT count(*) FROM runs").fetchone()[0]
+
+    # -- claims -------------------------------------------------------------------
+    def claim(self, run_ids: Sequence[str], since: float | None = None) -> tuple[list, dict, dict, list]:
+        """Claim the runs of ``run_ids`` that have no result and no live claim.
+
+        Returns ``(claimed, done, busy, damaged)``: the ids now ours; rows found
+        already written (``{run_id: row}``); ids claimed by a live sweep
+        (``{run_id: "pid 123 on host"}``); messages about damaged rows.
+        """
+        now = time.time()
+        claimed, busy = [], {}
+        done, damaged = self.read(run_ids, since)
+        todo = [r for r in dict.fromkeys(run_ids) if r not in done]
+        with self._transaction():
+            for i in range(0, len(todo), 500):
+                chunk = todo[i:i + 500]
+                held = {r[0]: r[1:] for r in self.db.execute(
+                    f"SELECT run_id, owner, host, pid, started, expires FROM claims WHERE run_id IN "
+                    f"({','.join('?' * len(chunk))})", chunk)}
+                # a row written between read() and this transaction (by a sweep that has now released it)
+                written = {r[0] for r in self.db.execute(
+                    f"SELECT run_id FROM runs WHERE run_id IN ({','.join('?' * len(chunk))})"
+                    + ("" if since is None else " AND finished_at >= ?"), chunk + ([] if since is None else [since]))}
+                for rid in chunk:
+                    if rid in written and rid not in done and not any(rid in d for d in damaged):
+                        busy[rid] = "just written"
+                        continue
+                    h = held.get(rid)
+                    if h is not None and h[0] != self.owner and self._live(h, now):
+                        busy[rid] = f"pid {h[2]} on {h[1]}"
+                        continue
+                    self.db.execute("INSERT OR REPLACE INTO claims VALUES (?, ?, ?, ?, ?, ?)",
+                                    (rid, self.owner, self.host, self.pid, self.started, now + self.lease))
+                    claimed.append(rid)
+        self._mine.update(claimed)
+        return claimed, done, busy, damaged
+
+    def _live(self, held: tuple, now: float) -> bool:
+        owner, host, pid, started, expires = held
+        if host == self.host:
+            return _alive(pid, started)
+        return expires > now
+
+    def renew(self, every: float | None = None) -> None:
+        """Extend the lease of this sweep's claims (at most once per ``every`` seconds)."""
+        now = time.time()
+        if not self._mine or now - self._last_renew < (self.lease / 4 if every is None else every):
+            return
+        with self._transaction():
+            self.db.execute("UPDATE claims SET expires = ? WHERE owner = ?", (now + self.lease, self.owner))
+        self._last_renew = now
+
+    def release(self, run_ids: Iterable[str] | None = None) -> None:
+        """Drop this sweep's claims on ``run_ids`` (all of them if None)."""
+        with self._transaction():
+            if run_ids is None:
+                self.db.execute("DELETE FROM claims WHERE owner = ?", (self.owner,))
+                self._mine.clear()
+                return
+            ids = list(run_ids)
+            self.db.executemany("DELETE FROM claims WHERE run_id = ? AND owner = ?", [(r, self.owner) for r in ids])
+            self._mine.difference_update(ids)
+
+    # -- writing ------------------------------------------------------------------
+    def write(self, rows: Sequence[Mapping], specs: Mapping[str, str] | None = None) -> None:
+        """Insert (or replace) finished rows and drop their claims, in one transaction."""
+        if not rows:
+            return
+        now = time.time()
+        with self._transaction():
+            for row in rows:
+                self._insert(row, now, (specs or {}).get(row["run_id"]))
+                self.db.execute("DELETE FROM claims WHERE run_id = ? AND owner = ?", (row["run_id"], self.owner))
+        self._mine.difference_update(r["run_id"] for r in rows)
+
+    def _insert(self, row: Mapping, finished_at: float | None, spec: str | None) -> None:
+        missing = sorted(set(row) - set(self.columns))
+        if missing:
+            raise StoreError(f"{self.path}: the results table has no column(s) {missing}")
+        stored = dict(row)
+        stored["reversal_times"] = json.dumps([float(t) for t in row["reversal_times"]])
+        stored["finished_at"] = finished_at
+        stored["spec"] = spec
+        stored["checksum"] = checksum(row, row)
+        names = list(stored)
+        self.db.execute(f"INSERT OR REPLACE INTO runs ({','.join(_q(n) for n in names)}) "
+                        f"VALUES ({','.join('?' * len(names))})", [stored[n] for n in names])
+
+    def import_rows(self, rows: Sequence[Mapping]) -> int:
+        """Add rows read from an older text file (those whose run is not stored yet)."""
+        have = set()
+        ids = [r["run_id"] for r in rows]
+        for i in range(0, len(ids), 500):
+            chunk = ids[i:i + 500]
+            have |= {r[0] for r in self.db.execute(
+                f"SELECT run_id FROM runs WHERE run_id IN ({','.join('?' * len(chunk))})", chunk)}
+        new = [r for r in rows if r["run_id"] not in have]
+        with self._transaction():
+            names = {c for r in new for c in r} - set(self.columns)
+            for n in sorted(names):
+                self.db.execute(f"ALTER TABLE runs ADD COLUMN {_q(n)} REAL")
+            self.columns = tuple(r[1] for r in self.db.execute("PRAGMA table_info(runs)"))
+            for r in new:
+                self._insert(r, None, None)
+        return len(new)
+
+    def close(self) -> None:
+        try:
+            if self._mine:
+                self.release()
+        finally:
+            self.db.close()
+
+
+def _q(name: str) -> str:
+    return '"' + name.replace('"', '""') + '"'
+
+
+# -- text files: export and import --------------------------------------------------------
+def _csv_cell(column: str, v):
+    if column == "reversal_times":
+        return " ".join(repr(float(t)) for t in v)
+    if isinstance(v, float):
+        return "" if math.isnan(v) else repr(v)
+    return v
+
+
+def write_text(path: str | Path, rows: Sequence[Mapping], columns: Sequence[str]) -> Path:
+    """Write ``rows`` as CSV (``.csv``) or JSON lines (otherwise), atomically, with a ``checksum`` column."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    cols = list(columns)
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
+    try:
+        with os.fdopen(fd, "w", newline="") as f:
+            if path.suffix.lower() == ".csv":
+                w = csv.writer(f, lineterminator="\n")
+                w.writerow(cols + ["checksum"])
+                for row in rows:
+                    w.writerow([_csv_cell(c, row[c]) for c in cols] + [checksum(row, cols)])
+            else:
+                for row in rows:
+                    d = {c: (None if isinstance(row[c], float) and math.isnan(row[c]) else row[c]) for c in cols}
+                    d["checksum"] = checksum(row, cols)
+                    f.write(json.dumps(d, allow_nan=False) + "\n")
+            f.flush()
+            os.fsync(f.fileno())
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+    return path
+
+
+_ADVICE = ("correct or delete that line (a deleted run is recomputed), or start afresh with resume=False "
+           "(command line: --fresh)")
+
+
+def read_text(path: str | Path) -> list:
+    """Rows of a CSV or JSON-lines results file written by ``sweep`` (this version or an earlier one).
+
+    A line cut short at the end of the file (a write interrupted by a kill)
+    is ignored.  Any other unreadable line raises :class:`StoreError` naming
+    the file and the line, and saying what to do.  A row with a ``checksum``
+    must match it.
+    """
+    path = Path(path)
+    try:
+        text = path.read_text()
+    except UnicodeDecodeError:
+        raise StoreError(f"{path}: not a text file; choose another `out` file") from None
+    lines = text.splitlines(keepends=True)
+    if lines and not lines[-1].endswith("\n"):
+        lines = lines[:-1]  # cut short by an interruption
+    rows = []
+    if path.suffix.lower() == ".csv":
+        reader = csv.reader(lines)
+        header = next(reader, None)
+        if header is None:
+            return []
+        required = {"run_id", "status"} | {c for c in RESULT_COLUMNS if c != "seconds"}
+        absent = sorted(required - set(header))
+        if absent:
+            raise StoreError(f"{path}, line 1: the header lacks column(s) {absent}: this is not a results file "
+                             "of knifeedge.sweep; choose another `out` file")
+        for cells in reader:
+            n = reader.line_num
+            if not cells:
+                continue
+            if len(cells) != len(header):
+                raise StoreError(f"{path}, line {n}: {len(cells)} cells for {len(header)} columns; {_ADVICE}")
+            rows.append(_text_row(dict(zip(header, cells)), f"{path}, line {n}"))
+        return rows
+    for n, line in enumerate(lines, start=1):
+        if not line.strip():
+            continue
+        try:
+            d = json.loads(line)
+        except json.JSONDecodeError as exc:
+            raise StoreError(f"{path}, line {n}: not valid JSON ({exc.msg}); {_ADVICE}") from None
+        if not isinstance(d, dict):
+            raise StoreError(f"{path}, line {n}: not a JSON object; {_ADVICE}")
+        rows.append(_text_row(d, f"{path}, line {n}"))
+    return rows
+
+
+def _text_row(d: dict, where: str) -> dict:
+    absent = [c for c in ("run_id", "model", "fidelity", "method", "status", "reversal_times") if c not in d]
+    if absent:
+        raise StoreError(f"{where}: no value for column(s) {absent}; {_ADVICE}")
+    row = {}
+    try:
+        for c, v in d.items():
+            if c != "checksum":
+                row[c] = _coerce(c, v, where)
+    except ValueError as exc:
+        raise StoreError(f"{exc}; {_ADVICE}") from None
+    for c in ("nfev", "n_reversals"):
+        row.setdefault(c, 0)
+    for c in ("first_reversal", "mean_interval", "seconds"):
+        row.setdefault(c, math.nan)
+    row.setdefault("message", "")
+    if "checksum" in d and d["checksum"] != checksum(row, [c for c in d if c != "checksum"]):
+        raise StoreError(f"{where}: the row's values do not match its checksum (edited by hand?); {_ADVICE}")
+    return row

@@ -1,0 +1,349 @@
+"""Animations: the drawn body agrees with the pose and the paper's geometry; frames, files, bad input.
+
+Geometry (independent of derivation/drawing.py, from the paper's text):
+single mode (section II, Fig. figg1): the bar of half-length L lies on the
+table along u_phi = (cos phi, sin phi), masses hang ell below its ends and
+swing by ell*theta along v_phi = (-sin phi, cos phi) (the cross term
+2 ell theta_dot x_dot . v_phi of its Lagrangian); the contact point is
+x + D theta u_phi (vinculo1, vinculo2).  Two modes (section III,
+Fig. sketch_2modes): the masses swing by ell (theta1 v_phi - theta2 u_phi)
+(cross terms of its Lagrangian) and the bar's ends rise and fall by -+ L theta2
+(its term L^2 theta2_dot^2), the contact is x + D theta_alpha u_alpha,
+theta_alpha = theta2 cos(alpha) - theta1 sin(alpha) (Const22, Const23).
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from PIL import Image
+
+import knifeedge as ke
+from knifeedge import animation as an
+from knifeedge.cli import main
+
+SINGLE = {"g": 1.0, "ell": 1.0, "L": 1.0, "D": 1.0}
+TWO = {"g": 1.0, "ell": 1.0, "L": 2.0, "D": 0.5, "alpha": math.pi / 4}
+
+
+def _points(m, s, p):
+    names = m.module.DRAWING["points"]
+    pts = m.module.body_points(np.asarray(s, float), np.asarray(p, float))
+    return {n: pts[i] for i, n in enumerate(names)}
+
+
+def _uv(phi):
+    return np.array([math.cos(phi), math.sin(phi), 0.0]), np.array([-math.sin(phi), math.cos(phi), 0.0])
+
+
+@pytest.mark.parametrize("fidelity", ["full", "reduced"])
+def test_single_mode_drawing_is_the_papers_geometry(fidelity):
+    """Contact x + D theta u_phi on the table (vinculo1/2); masses ell below the bar ends, swung by ell theta v_phi."""
+    m = ke.load("single_mode", fidelity, pose=True)
+    p = m.params(SINGLE)
+    theta, phi, x, y = 0.3, 0.7, 0.2, -0.1
+    s = m.state(theta=theta, theta_dot=0.4, phi_dot=0.1, phi=phi, x=x, y=y)
+    pt = _points(m, s, p)
+    u, v = _uv(phi)
+    o = np.array([x, y, 0.0])
+    np.testing.assert_allclose(pt[m.module.DRAWING["contact"]], o + SINGLE["D"] * theta * u, atol=1e-14)
+    for sign, end, mass in ((-1, "end_minus", "mass_minus"), (1, "end_plus", "mass_plus")):
+        np.testing.assert_allclose(pt[end], o + sign * SINGLE["L"] * u, atol=1e-14)
+        # the hanging segment keeps its length ell and swings in the plane across the bar
+        hang = pt[mass] - pt[end]
+        assert np.linalg.norm(hang) == pytest.approx(SINGLE["ell"], rel=1e-14)
+        assert hang @ u == pytest.approx(0.0, abs=1e-14)
+        assert math.atan2(hang @ v, -hang[2]) == pytest.approx(theta, rel=1e-14)
+    assert set(m.module.DRAWING["masses"]) == {"mass_minus", "mass_plus"}
+    assert m.module.DRAWING["magnify"] == ("theta",)
+
+
+def test_two_mode_drawing_agrees_with_the_papers_geometry_to_first_order():
+    """Masses at x +- L u_phi - ell z + ell (theta1 v_phi - theta2 u_phi) -+ L theta2 z; contact x + D theta_alpha u_alpha.
+
+    The drawing is an exact rigid placement; its distance from the
+    first-order geometry must shrink as the square of the tilts.
+    """
+    m = ke.load("two_mode", "reduced", pose=True)
+    p = m.params(TWO)
+    L, ell, D, alpha = TWO["L"], TWO["ell"], TWO["D"], TWO["alpha"]
+    phi, x, y = 2.1, 0.3, 0.05
+    u, v = _uv(phi)
+    ua = np.array([math.cos(phi + alpha), math.sin(phi + alpha), 0.0])
+    errors = []
+    for eps in (1e-2, 5e-3):
+        t1, t2 = 1.3 * eps, -0.7 * eps
+        s = m.state(theta1=t1, theta2=t2, theta1_dot=0.0, theta2_dot=0.0, phi_dot=0.1, phi=phi, x=x, y=y)
+        pt = _points(m, s, p)
+        o = np.array([x, y, 0.0])
+        ta = t2 * math.cos(alpha) - t1 * math.sin(alpha)
+        # small rigid tilt: rotation vector w = theta1 u_phi + theta2 v_phi displaces r by w x r; on the masses
+        # r = +-L u_phi - ell z this is ell (theta1 v_phi - theta2 u_phi) -+ L theta2 z: the Lagrangian's
+        # cross terms and its (L^2 + ell^2) theta2_dot^2
+        w = t1 * u + t2 * v
+        expect = {"C": o + D * ta * ua}
+        for sign, end, mass in ((-1, "end_minus", "mass_minus"), (1, "end_plus", "mass_plus")):
+            for name, r in ((end, sign * L * u), (mass, sign * L * u - ell * np.array([0, 0, 1.0]))):
+                expect[name] = o + r + np.cross(w, r)
+        np.testing.assert_allclose(expect["mass_plus"] - expect["end_plus"] - (expect["mass_minus"] - expect["end_minus"]),
+                                   0.0, atol=1e-15)
+        errors.append(max(float(np.linalg.norm(pt[k] - e)) for k, e in expect.items()))
+        assert pt["C"][2] == 0.0
+        assert pt["O"][:2] == pytest.approx([x, y], abs=1e-15)
+    assert errors[0] < 10 * 1e-2**2
+    assert 3.0 < errors[0] / errors[1] < 5.0  # second order
+
+
+def test_two_mode_contact_is_the_lowest_point_of_the_drawn_circle():
+    """Fig. sketch_2modes: the contact is the instantaneous lowest point of the circle of radius D."""
+    m = ke.load("two_mode", "full", pose=True)
+    p = m.params(TWO)
+    s = m.state(theta1=0.25, theta2=-0.15, theta1_dot=0.0, theta2_dot=0.0, phi_dot=0.1, phi=0.4, x=0.0, y=0.0)
+    u = np.linspace(0, 2 * math.pi, 20001)
+    circle = m.module.body_outlines(s, p, u)[0]
+    pt = _points(m, s, p)
+    radius = np.linalg.norm(circle - pt["circle_centre"], axis=1)
+    np.testing.assert_allclose(radius, TWO["D"], rtol=1e-12)
+    low = circle[np.argmin(circle[:, 2])]
+    assert np.linalg.norm(low - pt["C"]) < 1e-3 * TWO["D"]
+    assert circle[:, 2].min() == pytest.approx(0.0, abs=1e-7)
+    # the circle's plane is vertical at the chiral angle alpha from the bar when untilted
+    s0 = m.state(theta1=0.0, theta2=0.0, theta1_dot=0.0, theta2_dot=0.0, phi_dot=0.1, phi=0.0, x=0.0, y=0.0)
+    c0 = m.module.body_outlines(s0, p, np.array([0.5 * math.pi]))[0, 0]
+    assert math.atan2(c0[1], c0[0]) == pytest.approx(TWO["alpha"], rel=1e-12)
+
+
+def _drawn_kinetic_energy(m, r):
+    """Kinetic energy per unit mass of the drawn point masses, by finite differences of their positions."""
+    names = m.module.DRAWING["points"]
+    idx = [names.index(n) for n in m.module.DRAWING["masses"]]
+    pos = np.array([m.module.body_points(np.ascontiguousarray(r.y[:, j]), r.p)[idx] for j in range(r.t.size)])
+    vel = np.gradient(pos, r.t, axis=0, edge_order=2)
+    return 0.5 * np.mean(np.sum(vel**2, axis=2), axis=1), pos
+
+
+@pytest.mark.parametrize("name, params, y0", [
+    ("single_mode", SINGLE, {"theta": 1.0, "theta_dot": 0.0, "phi_dot": 1.0}),
+    ("two_mode", TWO, {"theta1": 1.0, "theta2": 0.5, "theta1_dot": 0.0, "theta2_dot": 0.0, "phi_dot": 1.0}),
+])
+def test_drawn_masses_move_with_the_lagrangians_kinetic_energy(name, params, y0):
+    """Along a run with the pose, the drawn masses (M/2 each) carry the kinetic energy of the paper's Lagrangian.
+
+    The model's kinetic energy is its energy minus the paper's potential
+    (1/2) g ell sum theta_i^2; the paper's Lagrangian is the small-tilt form,
+    so the two agree up to a relative O(theta^2): halving the tilts quarters
+    the difference.
+    """
+    m = ke.load(name, "full", pose=True)
+    p = m.params(params)
+    t = np.linspace(0.0, 20.0, 8001)
+    errs = []
+    for eps in (0.01, 0.005):
+        ys = {k: v * eps if k.startswith("theta") else v * 0.02 for k, v in y0.items()}
+        r = ke.simulate(m, ys, (0.0, 20.0), p, t_eval=t)
+        kin, _ = _drawn_kinetic_energy(m, r)
+        pot = 0.5 * params["g"] * params["ell"] * sum(r[n] ** 2 for n in m.tilt_names)
+        model_kin = r.energy - pot
+        errs.append(float(np.max(np.abs(kin - model_kin)[3:-3]) / np.max(model_kin)))
+    assert errs[0] < 0.01
+    assert 3.0 < errs[0] / errs[1] < 5.0
+
+
+def test_sleigh_drawing_carries_its_energy_exactly():
+    """Chaplygin sleigh: centre of mass G at distance a ahead of the contact; E = |v_G|^2/2 + k^2 phi_dot^2/2."""
+    m = ke.load("chaplygin_sleigh", "full", pose=True)
+    p = m.params(a=0.5, k=0.3)
+    t = np.linspace(0.0, 10.0, 4001)
+    r = ke.simulate(m, {"v": 0.1, "phi_dot": 0.5}, (0.0, 10.0), p, t_eval=t)
+    names = m.module.DRAWING["points"]
+    pts = np.array([m.module.body_points(np.ascontiguousarray(r.y[:, j]), r.p) for j in range(t.size)])
+    g, c = pts[:, names.index("G")], pts[:, names.index(m.module.DRAWING["contact"])]
+    np.testing.assert_allclose(c[:, :2], np.stack([r["x"], r["y"]], 1), atol=1e-15)
+    np.testing.assert_allclose(np.linalg.norm((g - c)[:, :2], axis=1), 0.5, rtol=1e-12)
+    vg = np.gradient(g, t, axis=0, edge_order=2)
+    e = 0.5 * np.sum(vg**2, 1) + 0.5 * 0.3**2 * r["phi_dot"] ** 2
+    np.testing.assert_allclose(e[3:-3], r.energy[3:-3], rtol=1e-6)
+
+
+# -- the runtime ------------------------------------------------------------------------
+@pytest.fixture(scope="module")
+def single_motion():
+    return an.motion("numerical", frames=40)
+
+
+def test_frame_times_are_denser_around_the_reversal(single_motion):
+    mo = single_motion
+    t = mo.t
+    assert t[0] == mo.t_span[0] and t[-1] == mo.t_span[1] and np.all(np.diff(t) > 0)
+    (rev,) = mo.reversal_times
+    dt = np.diff(t)
+    mid = 0.5 * (t[1:] + t[:-1])
+    near, far = dt[np.abs(mid - rev) < 10].max(), dt[np.abs(mid - rev) > 80].min()
+    assert near < 0.5 * far
+    assert np.any(np.abs(t - rev) < 1.0)  # a frame within a sixth of a period of the reversal
+
+
+def test_drawn_frame_shows_the_pose_with_magnified_tilt(single_motion):
+    """The renderer's artists hold the independent geometry at the frame's state, with theta magnified."""
+    mo = single_motion
+    r = an.FrameRenderer(mo, fps=10, magnify=4.0, size=(6.0, 3.4), dpi=50)
+    k = int(np.argmin(np.abs(mo.t - mo.reversal_times[0])))
+    r.render(k)
+    s = dict(zip(mo.model.state_names, mo.y[:, k]))
+    u, v = _uv(s["phi"])
+    o = np.array([s["x"], s["y"], 0.0])
+    th = 4.0 * s["theta"]
+    swing = SINGLE["ell"] * (math.sin(th) * v - math.cos(th) * np.array([0, 0, 1.0]))
+    expect_masses = np.array([o - SINGLE["L"] * u + swing, o + SINGLE["L"] * u + swing])
+    xs, ys, zs = r.mass_dots.get_data_3d()
+    np.testing.assert_allclose(np.stack([xs, ys, zs], 1), expect_masses, atol=1e-12)
+    cx, cy, cz = r.contact_mark.get_data_3d()
+    np.testing.assert_allclose([cx[0], cy[0], cz[0]], o + SINGLE["D"] * th * u, atol=1e-12)
+    # the top view shows the true (not magnified) contact point
+    tx, ty = r.tv_mark.get_data()
+    np.testing.assert_allclose([tx[0], ty[0]], (o + SINGLE["D"] * s["theta"] * u)[:2], atol=1e-12)
+
+
+def test_frames_differ_where_the_body_moves(single_motion):
+    mo = single_motion
+    r = an.FrameRenderer(mo, fps=10, magnify=4.0, size=(6.0, 3.4), dpi=50)
+    k = int(np.argmin(np.abs(mo.t - mo.reversal_times[0])))
+    a, b, a2 = r.render(k), r.render(k + 1), r.render(k)
+    np.testing.assert_array_equal(a, a2)  # drawing is a function of the frame
+    h, w, _ = a.shape
+    body = (slice(int(0.1 * h), int(0.9 * h)), slice(0, int(0.6 * w)))  # the 3D view
+    assert np.count_nonzero(np.any(a[body] != b[body], axis=2)) > 50
+
+
+def test_gif_has_the_stated_frames(tmp_path):
+    out = tmp_path / "spin.gif"
+    info = ke.animate("numerical", out, frames=12, fps=10, size=(5.0, 2.8), dpi=40)
+    theta_max = float(np.abs(ke.scene("numerical").run.simulate()["theta"]).max())
+    assert info.n_frames == 12 and info.magnification == an.auto_magnification(theta_max) > 1
+    assert "single_mode (reduced + pose)" in info.drawn_by and "re-run of scene numerical" in info.drawn_by
+    with Image.open(out) as im:
+        assert im.n_frames == 12
+        assert im.size == (200, 112)
+        assert im.info["duration"] == 100
+    np.testing.assert_allclose(info.time_per_second, np.gradient(info.frame_times) * 10)
+
+
+def test_animate_a_result_with_the_pose(tmp_path):
+    """A SimulationResult with the pose is drawn as given (the sleigh: no tilts, no magnification)."""
+    m = ke.load("chaplygin_sleigh", "full", pose=True)
+    r = ke.simulate(m, {"v": 0.1, "phi_dot": 0.5}, (0.0, 20.0), m.params(a=0.5, k=0.3),
+                    t_eval=np.linspace(0, 20, 2001))
+    info = an.animate(r, tmp_path / "sleigh.gif", frames=8, size=(5.0, 2.8), dpi=40)
+    assert info.magnification == 1.0 and "given result" in info.drawn_by
+    with Image.open(tmp_path / "sleigh.gif") as im:
+        assert im.n_frames == 8
+
+
+def test_auto_magnification_rule():
+    assert an.auto_magnification(0.0) == 1.0
+    assert an.auto_magnification(1.0) == 1.0
+    for tilt in (0.0999, 0.2, 1e-3, 3e-6):
+        mag = an.auto_magnification(tilt)
+        assert mag * tilt <= an.TARGET_TILT
+        nxt = [v for v in an._NICE if v > mag]
+        assert not nxt or nxt[0] * tilt > an.TARGET_TILT
+
+
+@pytest.mark.parametrize("kwargs, match", [
+    ({"out": "x.png"}, "`out` must end in .gif or .mp4"),
+    ({"out": 3}, "`out`"),
+    ({"frames": 1}, "`frames`"),
+    ({"frames": 2.5}, "`frames`"),
+    ({"fps": 0}, "`fps`"),
+    ({"fps": float("nan")}, "`fps`"),
+    ({"magnify": 0.5}, "`magnify`"),
+    ({"magnify": "big"}, "`magnify`"),
+])
+def test_bad_input_is_refused_before_any_work(tmp_path, kwargs, match):
+    args = {"out": tmp_path / "a.gif", **kwargs}
+    out = args.pop("out")
+    with pytest.raises((ValueError, TypeError), match=match):
+        an.animate("numerical", out, **args)
+    assert not (tmp_path / "a.gif").exists()
+
+
+def test_bad_source():
+    with pytest.raises(TypeError, match="`source`"):
+        an.animate(42, "a.gif")
+    with pytest.raises(ValueError, match="unknown scene"):
+        an.animate("no_such_scene", "a.gif")
+
+
+def test_mp4_without_ffmpeg_says_so(tmp_path, monkeypatch):
+    monkeypatch.setattr(an.shutil, "which", lambda name: None)
+    with pytest.raises(RuntimeError, match="ffmpeg"):
+        an.animate("numerical", tmp_path / "a.mp4")
+    assert not (tmp_path / "a.mp4").exists()
+
+
+def test_cli_animate(tmp_path, capsys):
+    out = tmp_path / "two.gif"
+    assert main(["animate", "numerical", "--out", str(out), "--frames", "6", "--dpi", "40"]) == 0
+    printed = capsys.readouterr().out
+    assert "6 frames" in printed and str(out) in printed
+    with Image.open(out) as im:
+        assert im.n_frames == 6
+    assert main(["animate", "numerical", "--out", str(tmp_path / "a.avi")]) == 2
+    assert "`out` must end in .gif or .mp4" in capsys.readouterr().err
+
+
+def test_docs_animation_code_runs(tmp_path, monkeypatch):
+    """The Python block of docs/animation.md works when pasted."""
+    import re
+    from pathlib import Path
+
+    text = (Path(__file__).resolve().parent.parent / "docs" / "animation.md").read_text()
+    blocks = re.findall(r"```python\n(.*?)```", text, re.S)
+    assert blocks
+    monkeypatch.chdir(tmp_path)
+    for code in blocks:
+        exec(compile(code.replace("frames=120", "frames=12"), "docs/animation.md", "exec"), {})
+    assert (tmp_path / "spin.gif").exists() and (tmp_path / "sleigh.gif").exists()
+
+
+def test_animate_a_result_without_the_pose_reruns_it(tmp_path):
+    m = ke.load("single_mode", "reduced")
+    r = ke.simulate(m, {"theta": 1e-3, "theta_dot": 0.0, "phi_dot": 0.1}, (0.0, 150.0), m.params(SINGLE))
+    info = ke.animate(r, tmp_path / "a.gif", frames=6, size=(4.0, 2.4), dpi=40)
+    assert "re-run" in info.drawn_by and "single_mode (reduced + pose)" in info.drawn_by
+    assert info.frame_times[0] == 0.0 and info.frame_times[-1] == 150.0
+
+
+def test_mp4_frames_are_piped_to_ffmpeg(tmp_path, monkeypatch):
+    """With an ``ffmpeg`` on the PATH every frame goes to it as raw RGB (a stand-in that stores its input)."""
+    import os
+    import stat
+
+    fake = tmp_path / "bin" / "ffmpeg"
+    fake.parent.mkdir()
+    fake.write_text('#!/bin/sh\nfor last; do :; done\ncat > "$last"\n')
+    fake.chmod(fake.stat().st_mode | stat.S_IEXEC)
+    monkeypatch.setenv("PATH", f"{fake.parent}{os.pathsep}{os.environ['PATH']}")
+    info = ke.animate("numerical", tmp_path / "a.mp4", frames=5, size=(4.0, 2.5), dpi=40)
+    assert info.n_frames == 5 and info.fps == 20
+    assert (tmp_path / "a.mp4").stat().st_size == 5 * 160 * 100 * 3
+
+
+def test_drawing_refuses_inconsistent_descriptions():
+    """A drawing naming undefined points, undeclared symbols or unknown tilt states is refused before emitting."""
+    sp = pytest.importorskip("sympy")
+    from derivation import drawing, models
+
+    with pytest.raises(ValueError, match="undefined point"):
+        drawing.Drawing(points={"A": (0, 0, 0)}, segments=(("A", "B"),), contact="A")
+    bad = drawing.Drawing(points={"A": (sp.Symbol("zeta"), 0, 0)}, segments=(), contact="A")
+    with pytest.raises(ValueError, match="undeclared symbols"):
+        drawing.block_source(bad, (models.theta, models.phi), (models.L,))
+    tilt = drawing.Drawing(points={"A": (models.L, 0, 0)}, segments=(), contact="A", magnify=("psi",))
+    with pytest.raises(ValueError, match="`magnify`"):
+        drawing.block_source(tilt, (models.theta, models.phi), (models.L,))
+    src = drawing.block_source(drawing.DRAWINGS["single_mode"], (models.theta, models.theta_dot, models.phi_dot,
+                                                                 models.phi, models.x, models.y),
+                               (models.g, models.ell, models.L, models.D))
+    assert "def body_points(s, p)" in src and "def body_outlines(s, p, uu)" in src and "DRAWING = {" in src
