@@ -303,7 +303,8 @@ def simulate_cmd(args) -> int:
     y0 = {**default_state(m), **{k: v for k, v in values.items() if k in m.state_names}}
     lacking = [n for n in m.param_names if n not in p] + [n for n in m.state_names if n not in y0]
     if lacking:
-        raise ValueError(f"{m.name} declares no default for {lacking}: give them with `--set NAME=VALUE`")
+        raise ValueError(f"`--set`: {m.name} has no default for {lacking}: give them, e.g. --set "
+                         + " ".join(f"{n}=1" for n in lacking))
     t_eval = np.linspace(args.t_start, args.t_end, args.n_eval)
     r = simulate(m, y0, (args.t_start, args.t_end), p, method=args.method, rtol=args.rtol, atol=args.atol,
                  t_eval=t_eval, max_step=args.max_step, h=args.h, max_steps=args.max_steps,
@@ -482,8 +483,12 @@ def sweep_cmd(args) -> int:
 
     if args.workers is not None and args.workers < 1:
         raise ValueError(f"`--workers` must be at least 1, got {args.workers}")
-    scene = get_scene(args.scene, **assignments(args.set))
+    changes = assignments(args.set)
+    scene = get_scene(args.scene, **changes)
     grid = grid_assignments(args.grid)
+    both = [k for k in grid if k in changes]
+    if both:
+        raise ValueError(f"`--set` and `--grid` both give {both[0]!r}: give it in one of them")
     n_runs = math.prod(len(v) for v in grid.values())
     if n_runs > MAX_SWEEP_RUNS:
         raise ValueError(f"`--grid` makes {n_runs:.3g} runs, more than the {MAX_SWEEP_RUNS} one sweep may start")
