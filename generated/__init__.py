@@ -9,7 +9,7 @@ MODULES = {
     ('celt', 'full'): 'celt_full',
     ('chaplygin_sleigh', 'full'): 'chaplygin_sleigh_full',
     ('rolling_disk', 'full'): 'rolling_disk_full',
-    ('rolling_disk', 'reduced'): 'rolling_disk_reduced',
+    ('rolling_disk_damped', 'full'): 'rolling_disk_damped_full',
     ('single_mode', 'amplitude'): 'single_mode_amplitude',
     ('single_mode', 'full'): 'single_mode_full',
     ('single_mode', 'reduced'): 'single_mode_reduced',
