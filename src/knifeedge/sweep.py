@@ -506,10 +506,11 @@ class _Sweep:
         self.since = None if resume else time.time()
         self.progress = progress
         self.by_id: dict = {}  # run_id -> index of its first grid point
-        self.spec_of: dict = {}
+        self.spec_of: dict = {}  # run_id -> the run as a plain dict
         for i, (s, inp) in enumerate(zip(specs, inputs)):
-            self.by_id.setdefault(inp["run_id"], i)
-            self.spec_of.setdefault(inp["run_id"], s)
+            if inp["run_id"] not in self.by_id:
+                self.by_id[inp["run_id"]] = i
+                self.spec_of[inp["run_id"]] = s.to_dict()
         self.results: dict = {}  # run_id -> row
         self.missing: dict = {}  # run_id -> reason
         self.damaged: list = []
@@ -589,7 +590,7 @@ class _Sweep:
                     if ids:
                         t = next(task_ids)
                         inflight[t] = ids
-                        pool.submit(t, [self.spec_of[r].to_dict() for r in ids])
+                        pool.submit(t, [self.spec_of[r] for r in ids])
                 # collect finished tasks
                 for t, out in pool.wait(0.5 if (inflight or not others) else 1.0):
                     ids = inflight.pop(t)
@@ -599,7 +600,7 @@ class _Sweep:
                     rows = [self._row(rid, o) for rid, o in zip(ids, out)]
                     self.times.extend(o["seconds"] for o in out)
                     if self.store is not None:
-                        self.store.write(rows, {r: json.dumps(self.spec_of[r].to_dict()) for r in ids})
+                        self.store.write(rows, {r: json.dumps(self.spec_of[r]) for r in ids})
                     self._record(rows, computed=True)
                 broken = getattr(pool, "broken", None)
                 if broken and not inflight and todo:  # an executor that takes no more work

@@ -90,20 +90,16 @@ def worker_main(parent: int) -> None:
     proto_out.write(_frame(("ready", os.getpid())))
     while True:
         head = read_exact(_HEADER.size)
-        if head is None:
-            return  # the sweep closed our stdin (or died)
-        body = read_exact(_HEADER.unpack(head)[0])
-        if body is None:
-            return
-        msg = pickle.loads(body)
-        if msg is None:
-            return
+        body = None if head is None else read_exact(_HEADER.unpack(head)[0])
+        msg = None if body is None else pickle.loads(body)
+        if msg is None:  # the sweep is done (or closed our stdin, or died): nothing to tidy up
+            os._exit(0)
         task_id, runs = msg
         out = run_batch(runs)
         try:
             proto_out.write(_frame((task_id, out)))
         except (BrokenPipeError, OSError):
-            return
+            os._exit(0)
 
 
 # -- the parent side ----------------------------------------------------------------------
