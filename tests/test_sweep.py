@@ -285,9 +285,11 @@ def test_results_of_an_earlier_version_are_read_not_recomputed(tmp_path, quick_t
 
 # -- infrastructure failures are not results -------------------------------------------------
 def _workers_of(pid: int) -> list:
+    """The sweep's worker processes: forked from ``pid`` (same command line) or started as ``knifeedge.workers``."""
     psutil = pytest.importorskip("psutil")
-    return [c for c in psutil.Process(pid).children(recursive=True)
-            if "knifeedge.workers" in " ".join(c.cmdline())]
+    parent = psutil.Process(pid)
+    return [c for c in parent.children() if c.cmdline() == parent.cmdline()
+            or "knifeedge.workers" in " ".join(c.cmdline())]
 
 
 def test_a_worker_killed_mid_sweep_costs_no_result(tmp_path, quick_table):

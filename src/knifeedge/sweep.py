@@ -569,9 +569,15 @@ class _Sweep:
             warnings.warn(msg, RuntimeWarning, stacklevel=3)
         n_reused = len(self.results)
         todo = deque(r for r in order if r not in self.results)
-        self.bar = _Progress(len(order), n_reused, self.progress)
-        self.bar.done = n_reused
         pool, n_workers = (None, 0)
+        if todo:  # before the progress bar's thread: workers are forked while this process has one thread
+            pool, n_workers = self._pool(len(todo))
+        try:
+            self.bar = _Progress(len(order), n_reused, self.progress)
+        except BaseException:
+            if pool is not None:
+                pool.shutdown()
+            raise
         attempts: dict = {}
         others: dict = {}  # run_id -> who holds it
         inflight: dict = {}  # task id -> run ids
@@ -579,8 +585,6 @@ class _Sweep:
         interrupted = False
         last_poll = 0.0
         try:
-            if todo:
-                pool, n_workers = self._pool(len(todo))
             while todo or inflight or others:
                 # hand out work while the pool has room
                 while todo and pool.free():
