@@ -332,3 +332,32 @@ def test_noisy_loop_refuses_unbounded_or_bad_input(kw, exc, text):
 def test_noisy_intervals_bounded(reduced2):
     with pytest.raises(ValueError, match="`n_intervals`"):
         noisy_intervals(ke.load("two_mode", "full"), P2, Y2, 1e-6, 10**6)
+
+
+# -- Model's compiled quantities: the compiled functions do not check bounds, so the wrappers do ----------
+@pytest.mark.parametrize("call,exc,text", [
+    (lambda m, mp, p: m.energy([1e-3, 0.1], p), ValueError, "`y`"),  # read past the end before
+    (lambda m, mp, p: m.energy("abc", p), TypeError, "`y`"),
+    (lambda m, mp, p: m.energy([True] * 5, p), TypeError, "`y`"),
+    (lambda m, mp, p: m.energy(np.zeros((5, 2, 2)), p), ValueError, "`y`"),
+    (lambda m, mp, p: m.energy(np.full(5, np.nan), p), ValueError, "`y`"),
+    (lambda m, mp, p: m.energy(np.zeros(5), [1.0, 2.0]), ValueError, "`p`"),
+    (lambda m, mp, p: m.multipliers([1e-3, 0.1], p), ValueError, "`y`"),
+    (lambda m, mp, p: m.multipliers(np.zeros(5), "p"), TypeError, "`p`"),
+    (lambda m, mp, p: mp.pose_rates(np.zeros(5), p), ValueError, "`y`"),  # returned uninitialized memory before
+    (lambda m, mp, p: mp.pose_rates(np.zeros((8, 3)), p), ValueError, "`y`"),
+    (lambda m, mp, p: m.params([1, 1, 2, 0.5, 0.7]), TypeError, "`p`"),
+    (lambda m, mp, p: m.state([0, 0, 0, 0, 0.1]), TypeError, "`y0`"),
+])
+def test_model_functions_refuse_wrong_shapes_and_types(call, exc, text):
+    m, mp = ke.load("two_mode"), ke.load("two_mode", pose=True)
+    with pytest.raises(exc) as info:
+        call(m, mp, m.params(**P2))
+    assert text in str(info.value)
+
+
+def test_model_functions_accept_the_closed_state_of_a_pose_model():
+    """Energy of a pose-extended model ignores the pose: the closed state alone gives the same number."""
+    m, mp = ke.load("two_mode"), ke.load("two_mode", pose=True)
+    p, y = m.params(**P2), m.state(**Y2)
+    assert mp.energy(y, p) == mp.energy(np.r_[y, 0.3, 1.0, -2.0], p) == m.energy(y, p)

@@ -85,6 +85,9 @@ class Model:
         """
         if values is not None and kwargs:
             raise TypeError("pass the parameters either as one mapping or as keywords, not both")
+        if values is not None and not isinstance(values, Mapping):
+            raise TypeError(f"parameters `p` must be a mapping of names to values (or keywords); for an array use "
+                            f"check_params; got {type(values).__name__}")
         values = dict(values if values is not None else kwargs)
         missing = [n for n in self.param_names if n not in values]
         extra = [n for n in values if n not in self.param_names]
@@ -124,6 +127,9 @@ class Model:
         """
         if values is not None and kwargs:
             raise TypeError("pass the state either as one mapping or as keywords, not both")
+        if values is not None and not isinstance(values, Mapping):
+            raise TypeError(f"initial state `y0` must be a mapping of names to values (or keywords); for an array "
+                            f"use check_state; got {type(values).__name__}")
         values = dict(values if values is not None else kwargs)
         defaults = {n: 0.0 for n in self.pose_names} if self.pose else {}
         missing = [n for n in self.state_names if n not in values and n not in defaults]
@@ -155,8 +161,7 @@ class Model:
     # -- compiled quantities ---------------------------------------------------
     def energy(self, y, p) -> float | np.ndarray:
         """Energy per unit mass; ``y`` of shape (n_state,) or (n_state, n_times)."""
-        y = np.asarray(y, dtype=float)
-        p = np.asarray(p, dtype=float)
+        y, p = self._states(y), self.check_params(p)
         if y.ndim == 1:
             return float(self.module.energy(y, p))
         return np.array([self.module.energy(np.ascontiguousarray(y[:, k]), p) for k in range(y.shape[1])])
@@ -169,8 +174,7 @@ class Model:
         """
         if not self.multiplier_names:
             raise ValueError(f"{self.name} at fidelity {self.fidelity!r} has no multipliers")
-        y = np.asarray(y, dtype=float)
-        p = np.asarray(p, dtype=float)
+        y, p = self._states(y), self.check_params(p)
         if y.ndim == 1:
             return self.module.multipliers(y, p)
         return np.stack([self.module.multipliers(np.ascontiguousarray(y[:, k]), p) for k in range(y.shape[1])], 1)
@@ -179,7 +183,25 @@ class Model:
         """``(phi_dot, x_dot, y_dot)`` at a pose-extended state (needs ``pose=True``)."""
         if not self.pose:
             raise ValueError("pose_rates needs the pose: load the model with `pose=True`")
-        return self.module.pose_rates(np.asarray(y, dtype=float), np.asarray(p, dtype=float))
+        y = self._states(y, pose=True)
+        if y.ndim != 1:
+            raise ValueError(f"`y` must be one state of shape ({self.n_state},), got shape {y.shape}")
+        return self.module.pose_rates(y, self.check_params(p))
+
+    def _states(self, y, pose: bool = False) -> np.ndarray:
+        """``y`` as finite float64 of shape (n, ) or (n, n_times): ``n`` the state's size, or the closed
+        state's (without the pose) unless ``pose``; the compiled functions do not check their bounds."""
+        if isinstance(y, np.ndarray) and y.dtype == np.float64 and y.ndim in (1, 2):
+            arr = y
+        else:
+            arr = _validate.real_array(y, "`y`")
+        sizes = (self.n_state,) if pose else tuple(sorted({self.n_state, len(self.closed_state_names)}))
+        if arr.ndim not in (1, 2) or arr.shape[0] not in sizes:
+            want = " or ".join(f"({n},) or ({n}, n_times)" for n in sizes)
+            raise ValueError(f"`y` must have shape {want} for {self.state_names}, got shape {arr.shape}")
+        if not np.isfinite(arr).all():
+            raise ValueError("`y` must be finite")
+        return np.ascontiguousarray(arr)
 
 
 def _finite_float(v, what: str) -> float:
