@@ -22,7 +22,8 @@ writes into every generated module that has a pose
 
 The runtime (``knifeedge.animation``) reads only these.  A model gets its
 drawing from ``spec.drawing`` when its :class:`ModelSpec` has one, else from
-:data:`DRAWINGS` by model name (:func:`register`).
+:data:`DRAWINGS` by model name (:func:`register`).  Another emitter writes
+the same three names with :func:`block_source`.
 
 Geometry of the knife edges (paper Figs. ``figg1`` and ``sketch_2modes``):
 the bar of half-length ``L`` along the body's ``x`` axis, its middle point
@@ -53,7 +54,8 @@ class Drawing:
     ----------
     points : dict name -> (x, y, z) expressions in the pose-extended state and
         the parameters.  Insertion order is the row order of ``body_points``.
-    segments : pairs of point names joined by a line (the rigid frame).
+    segments : pairs of point names joined by a line (the rigid frame); the
+        first is drawn thicker (the body's main member).
     contact : name of the point that touches the table (must be in ``points``).
     masses : names of points drawn as point masses.
     magnify : names of state entries (tilt angles) a picture may multiply by a
@@ -71,6 +73,8 @@ class Drawing:
     description: str = ""
 
     def __post_init__(self):
+        for attr in ("points", "outlines"):
+            object.__setattr__(self, attr, {k: tuple(sp.sympify(c) for c in v) for k, v in getattr(self, attr).items()})
         names = set(self.points)
         bad = [s for seg in self.segments for s in seg if s not in names]
         bad += [s for s in (self.contact, *self.masses) if s not in names]
@@ -200,17 +204,31 @@ def module_source(system) -> str:
     module docstring.  Refuses (``ValueError``) expressions with symbols that
     are not states, pose coordinates, parameters or ``u``.
     """
-    from .emit import _cse_block, _unpack
-
     spec = system.spec
     if not spec.pose:
         return ""
     drawing = drawing_of(spec)
     if drawing is None:
         return "\n\n#: this model has no drawing (derivation/drawing.py)\nDRAWING = None\n"
-    state = [str(q) for q in system.state] + [str(q) for q in spec.pose]
-    params = [str(q) for q in spec.params]
-    allowed = set(system.state) | set(spec.pose) | set(spec.params)
+    return block_source(drawing, tuple(system.state) + tuple(spec.pose), spec.params, spec.name)
+
+
+def block_source(drawing: Drawing, state, params, name: str = "model") -> str:
+    """Source of ``DRAWING``, ``body_points`` and ``body_outlines`` for any emitter.
+
+    Parameters
+    ----------
+    drawing : the body's :class:`Drawing`.
+    state : symbols of the state vector ``s`` the functions receive, in order
+        (for the knife edges the closed state followed by the pose).
+    params : symbols of the parameter vector ``p``, in order.
+    name : the model's name, for error messages.
+    """
+    from .emit import _cse_block, _unpack
+
+    allowed = set(state) | set(params)
+    state = [str(q) for q in state]
+    params = [str(q) for q in params]
     names = list(drawing.points)
     exprs = [c for k in names for c in drawing.points[k]]
     pt_lines, pt_ops = _cse_block(exprs, [f"out[{i // 3}, {i % 3}]" for i in range(len(exprs))], allowed)
@@ -220,7 +238,7 @@ def module_source(system) -> str:
                                   allowed | {u}, indent="        ")
     missing = [q for q in drawing.magnify if q not in state]
     if missing:
-        raise ValueError(f"drawing of {spec.name}: `magnify` names {missing} are not states {state}")
+        raise ValueError(f"drawing of {name}: `magnify` names {missing} are not states {state}")
     meta = {
         "points": tuple(names), "segments": tuple(tuple(s) for s in drawing.segments), "contact": drawing.contact,
         "masses": tuple(drawing.masses), "magnify": tuple(drawing.magnify), "outlines": tuple(onames),

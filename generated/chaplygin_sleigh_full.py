@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'chaplygin_sleigh',
 constraints knife_edge) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:d028e24d64ccc051248715438145e3db69c36779caafb4b3b5a4c2a2aba2514d
+SymPy 1.14.0; input hash sha256:0627bd97eda842cc5043cbb31fe8a66d7dc77c36aee93f95a82fd22ca76a648f
 
 Chaplygin sleigh: a rigid body on the plane with a knife edge at its rear contact point (x, y) that forbids sideways motion; heading phi, centre of mass at distance a ahead of the contact, radius of gyration k about the centre of mass; v is the speed along the axis.
 
@@ -34,7 +34,7 @@ TILT_NAMES = ()
 #: the spin rate, whose zero crossings are the spin reversals
 SPIN_NAME = "phi_dot"
 MULTIPLIER_NAMES = ('knife_edge',)
-INPUT_HASH = 'd028e24d64ccc051248715438145e3db69c36779caafb4b3b5a4c2a2aba2514d'
+INPUT_HASH = '0627bd97eda842cc5043cbb31fe8a66d7dc77c36aee93f95a82fd22ca76a648f'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 9, 'constants': 5, 'rhs_q': 4, 'rhs_pose': 13, 'rhs_pose_q': 8, 'pose_rates': 4, 'energy': 9, 'multipliers': 6}

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:75477353256e777067f1fe5072f98c7fbb16689e9d161919985066c372692a51
+SymPy 1.14.0; input hash sha256:3339951b7454a509bd0bcd99c3b09985e82768d5d0b11901363ea4f87ba9b6b5
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -37,7 +37,7 @@ TILT_NAMES = ('theta',)
 #: the spin rate, whose zero crossings are the spin reversals
 SPIN_NAME = "phi_dot"
 MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
-INPUT_HASH = '75477353256e777067f1fe5072f98c7fbb16689e9d161919985066c372692a51'
+INPUT_HASH = '3339951b7454a509bd0bcd99c3b09985e82768d5d0b11901363ea4f87ba9b6b5'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 20, 'constants': 13, 'rhs_q': 10, 'rhs_pose': 27, 'rhs_pose_q': 17, 'pose_rates': 7, 'energy': 23, 'multipliers': 7}

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py and derivation/truncation.py.
-SymPy 1.14.0; input hash sha256:325a53af8e414c14aaadfa126d2b2fb04b07b3c978f6d92422f0aedea5e69464
+SymPy 1.14.0; input hash sha256:48b9575c126e740f873873cb0b967215ab90aeb9bef4b4d7252052da7be368ac
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -37,7 +37,7 @@ TILT_NAMES = ('theta',)
 #: the spin rate, whose zero crossings are the spin reversals
 SPIN_NAME = "phi_dot"
 MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
-INPUT_HASH = '325a53af8e414c14aaadfa126d2b2fb04b07b3c978f6d92422f0aedea5e69464'
+INPUT_HASH = '48b9575c126e740f873873cb0b967215ab90aeb9bef4b4d7252052da7be368ac'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 11, 'constants': 7, 'rhs_q': 7, 'rhs_pose': 17, 'rhs_pose_q': 14, 'pose_rates': 7, 'energy': 23, 'multipliers': 7}

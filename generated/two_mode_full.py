@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:188065dcaff1821beba789aec7dc37bb274bf3abfb596900e3f9caffc663a497
+SymPy 1.14.0; input hash sha256:7cafb4b081c57bdcbc822d9e5e64eb6b2ba087ea0e12bd3907fc0127873f1614
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -40,7 +40,7 @@ TILT_NAMES = ('theta1', 'theta2')
 #: the spin rate, whose zero crossings are the spin reversals
 SPIN_NAME = "phi_dot"
 MULTIPLIER_NAMES = ('Const22', 'Const23')
-INPUT_HASH = '188065dcaff1821beba789aec7dc37bb274bf3abfb596900e3f9caffc663a497'
+INPUT_HASH = '7cafb4b081c57bdcbc822d9e5e64eb6b2ba087ea0e12bd3907fc0127873f1614'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 152, 'constants': 107, 'rhs_q': 65, 'rhs_pose': 166, 'rhs_pose_q': 76, 'pose_rates': 13, 'energy': 58, 'multipliers': 166}

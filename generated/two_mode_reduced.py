@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py and derivation/truncation.py.
-SymPy 1.14.0; input hash sha256:26f6b5c35ee19f18d757afbe3c21adb06fa313ac4d2385f7664ccc2ce149ce04
+SymPy 1.14.0; input hash sha256:39cedc9e7fe62cd569ad3a0213d8b84ce63f5f88160b2b505eb6df0958fb891a
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -40,7 +40,7 @@ TILT_NAMES = ('theta1', 'theta2')
 #: the spin rate, whose zero crossings are the spin reversals
 SPIN_NAME = "phi_dot"
 MULTIPLIER_NAMES = ('Const22', 'Const23')
-INPUT_HASH = '26f6b5c35ee19f18d757afbe3c21adb06fa313ac4d2385f7664ccc2ce149ce04'
+INPUT_HASH = '39cedc9e7fe62cd569ad3a0213d8b84ce63f5f88160b2b505eb6df0958fb891a'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 80, 'constants': 52, 'rhs_q': 35, 'rhs_pose': 91, 'rhs_pose_q': 46, 'pose_rates': 13, 'energy': 58, 'multipliers': 56}

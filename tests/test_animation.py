@@ -328,3 +328,22 @@ def test_mp4_frames_are_piped_to_ffmpeg(tmp_path, monkeypatch):
     info = ke.animate("numerical", tmp_path / "a.mp4", frames=5, size=(4.0, 2.5), dpi=40)
     assert info.n_frames == 5 and info.fps == 20
     assert (tmp_path / "a.mp4").stat().st_size == 5 * 160 * 100 * 3
+
+
+def test_drawing_refuses_inconsistent_descriptions():
+    """A drawing naming undefined points, undeclared symbols or unknown tilt states is refused before emitting."""
+    sp = pytest.importorskip("sympy")
+    from derivation import drawing, models
+
+    with pytest.raises(ValueError, match="undefined point"):
+        drawing.Drawing(points={"A": (0, 0, 0)}, segments=(("A", "B"),), contact="A")
+    bad = drawing.Drawing(points={"A": (sp.Symbol("zeta"), 0, 0)}, segments=(), contact="A")
+    with pytest.raises(ValueError, match="undeclared symbols"):
+        drawing.block_source(bad, (models.theta, models.phi), (models.L,))
+    tilt = drawing.Drawing(points={"A": (models.L, 0, 0)}, segments=(), contact="A", magnify=("psi",))
+    with pytest.raises(ValueError, match="`magnify`"):
+        drawing.block_source(tilt, (models.theta, models.phi), (models.L,))
+    src = drawing.block_source(drawing.DRAWINGS["single_mode"], (models.theta, models.theta_dot, models.phi_dot,
+                                                                 models.phi, models.x, models.y),
+                               (models.g, models.ell, models.L, models.D))
+    assert "def body_points(s, p)" in src and "def body_outlines(s, p, uu)" in src and "DRAWING = {" in src

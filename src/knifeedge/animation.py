@@ -502,7 +502,8 @@ class FrameRenderer:
         self.time_text.set_text(f"t = {mo.t[k]:9.2f}")
         tps = self.time_per_second[k]
         ratio = float(np.max(self.time_per_second)) / tps
-        slow = f" (x{ratio:.2g} slower than elsewhere: near a reversal)" if ratio > 1.5 else ""
+        slow = f" ({ratio:.2g}x slower than elsewhere: near a reversal)" if 1.5 < ratio < 10 else (
+            f" ({ratio:.0f}x slower than elsewhere: near a reversal)" if ratio >= 10 else "")
         self.speed_text.set_text(f"{self.fps:g} frames/s; 1 s of video = {tps:.3g} time units{slow}")
         self.canvas.restore_region(self.background)
         below = [m[:, 2].mean() < 0 for m in (p[[a, b]] for a, b in self.seg)]
