@@ -361,3 +361,48 @@ def test_model_functions_accept_the_closed_state_of_a_pose_model():
     m, mp = ke.load("two_mode"), ke.load("two_mode", pose=True)
     p, y = m.params(**P2), m.state(**Y2)
     assert mp.energy(y, p) == mp.energy(np.r_[y, 0.3, 1.0, -2.0], p) == m.energy(y, p)
+
+
+# -- scenes' runs and sweeps: the same rules, before any work --------------------------------------
+@pytest.mark.parametrize("kw,exc,text", [
+    (dict(D="0.5"), TypeError, "`D`"),  # was float("0.5"): accepted
+    (dict(D=True), TypeError, "`D`"),  # was 1.0
+    (dict(phi_dot=math.nan), ValueError, "`phi_dot`"),
+    (dict(t_end="5"), TypeError, "`t_end`"),
+    (dict(n_eval=2.5), TypeError, "`n_eval`"),  # was int(2.5) = 2
+    (dict(n_eval=10**12), ValueError, "`n_eval`"),  # was a MemoryError in np.linspace
+    (dict(max_steps=2**70), ValueError, "`max_steps`"),
+])
+def test_scene_runs_refuse_bad_values(kw, exc, text):
+    from knifeedge.scenes import get_scene
+
+    with pytest.raises(exc) as info:
+        get_scene("numerical", **kw)
+    assert text in str(info.value)
+
+
+@pytest.mark.parametrize("grid,text", [
+    ({"rtol": [1e-8, 10.0]}, "`rtol`"),  # was one failed run among the results
+    ({"atol": [1e300]}, "`atol`"),
+    ({"max_steps": [2**70]}, "`max_steps`"),
+    ({"method": ["RK4"]}, "`h`"),
+    ({"D": [0.5, "1"]}, "`D`"),
+])
+def test_sweep_checks_every_run_as_simulate_does_before_any_work(grid, text):
+    from knifeedge.scenes import get_scene
+    from knifeedge.sweep import sweep
+
+    with pytest.raises((ValueError, TypeError)) as info:
+        sweep(get_scene("numerical"), grid)
+    assert text in str(info.value)
+
+
+def test_cli_sweep_refuses_a_name_in_both_set_and_grid(capsys):
+    assert main(["sweep", "numerical", "--set", "D=2", "--grid", "D=1,3"]) == 2
+    assert "`--set` and `--grid` both give 'D'" in capsys.readouterr().err
+
+
+def test_cli_simulate_names_missing_parameters_of_a_model_without_defaults(capsys):
+    assert main(["simulate", "--model", "chaplygin_sleigh", "--fidelity", "full"]) == 2
+    err = capsys.readouterr().err
+    assert "`--set`" in err and "chaplygin_sleigh" in err and err.count("\n") == 1

@@ -293,7 +293,11 @@ def simulate_cmd(args) -> int:
     unknown = [k for k in values if k not in m.param_names and k not in m.state_names]
     if unknown:
         raise ValueError(f"`--set`: unknown name(s) {unknown}; parameters {m.param_names}, states {m.state_names}")
-    p = {**DEFAULT_PARAMS[m.name], **{k: v for k, v in values.items() if k in m.param_names}}
+    p = {**DEFAULT_PARAMS.get(m.name, {}), **{k: v for k, v in values.items() if k in m.param_names}}
+    missing = [n for n in m.param_names if n not in p]
+    if missing:
+        raise ValueError(f"`--set`: {m.name} has no default for {missing}: give them, e.g. --set "
+                         + " ".join(f"{n}=1" for n in missing))
     y0 = {**default_state(m), **{k: v for k, v in values.items() if k in m.state_names}}
     t_eval = np.linspace(args.t_start, args.t_end, args.n_eval)
     r = simulate(m, y0, (args.t_start, args.t_end), p, method=args.method, rtol=args.rtol, atol=args.atol,
@@ -463,8 +467,12 @@ def sweep_cmd(args) -> int:
 
     if args.workers is not None and args.workers < 1:
         raise ValueError(f"`--workers` must be at least 1, got {args.workers}")
-    scene = get_scene(args.scene, **assignments(args.set))
+    changes = assignments(args.set)
+    scene = get_scene(args.scene, **changes)
     grid = grid_assignments(args.grid)
+    both = [k for k in grid if k in changes]
+    if both:
+        raise ValueError(f"`--set` and `--grid` both give {both[0]!r}: give it in one of them")
     n_runs = math.prod(len(v) for v in grid.values())
     if n_runs > MAX_SWEEP_RUNS:
         raise ValueError(f"`--grid` makes {n_runs:.3g} runs, more than the {MAX_SWEEP_RUNS} one sweep may start")

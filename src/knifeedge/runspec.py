@@ -19,12 +19,29 @@ from typing import Any
 
 import numpy as np
 
+from . import _validate
+
+#: most output samples a run may ask for (8 MB per state)
+MAX_N_EVAL = 1_000_000
 #: run settings that :meth:`RunSpec.with_` and sweeps accept besides parameter and state names
 RUN_SETTINGS = ("fidelity", "method", "rtol", "atol", "t_end", "pose", "n_eval", "max_steps", "path")
 
 
 def _frozen(mapping: Mapping | None) -> Mapping:
-    return MappingProxyType({k: float(v) for k, v in dict(mapping or {}).items()})
+    return MappingProxyType({k: _validate.finite(v, f"`{k}`") for k, v in dict(mapping or {}).items()})
+
+
+def _count(v, name: str, low: int, high: int) -> int | None:
+    """``None`` or a whole number in ``[low, high]`` (an integral float such as ``4001.0`` read back from a
+    file is accepted; ``2.5`` is not)."""
+    if v is None:
+        return None
+    if isinstance(v, (bool, np.bool_)) or not isinstance(v, (int, float, np.integer, np.floating)) \
+            or not (math.isfinite(v) and v == int(v)):
+        raise TypeError(f"`{name}` must be a whole number or None, got {v!r}")
+    if not low <= v <= high:
+        raise ValueError(f"`{name}` must be from {low} to {high}, got {v!r}")
+    return int(v)
 
 
 @dataclass(frozen=True)
@@ -70,7 +87,11 @@ class RunSpec:
             object.__setattr__(self, "path", str(Path(self.path).expanduser().resolve()))
         object.__setattr__(self, "params", _frozen(self.params))
         object.__setattr__(self, "y0", _frozen(self.y0))
-        object.__setattr__(self, "t_span", (float(self.t_span[0]), float(self.t_span[1])))
+        object.__setattr__(self, "t_span", tuple(_validate.finite(v, "`t_span`") for v in self.t_span))
+        if len(self.t_span) != 2:
+            raise ValueError(f"`t_span` must be a pair (t0, t1), got {self.t_span!r}")
+        object.__setattr__(self, "n_eval", _count(self.n_eval, "n_eval", 2, MAX_N_EVAL))
+        object.__setattr__(self, "max_steps", _count(self.max_steps, "max_steps", 1, 2**63 - 1))
 
     # -- derived objects -----------------------------------------------------
     def load(self):
@@ -108,7 +129,7 @@ class RunSpec:
             elif key in y0:
                 y0[key] = value
             elif key == "t_end":
-                settings["t_span"] = (self.t_span[0], float(value))
+                settings["t_span"] = (self.t_span[0], _validate.finite(value, "`t_end`"))
             elif key in RUN_SETTINGS:
                 settings[key] = value
             else:

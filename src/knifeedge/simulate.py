@@ -306,6 +306,44 @@ def _check_fixed_step(h, t0: float, t1: float) -> float:
     return h
 
 
+def check_inputs(model: Model, y0, t_span, p, method: str = "DOP853", rtol: float = 1e-10, atol=1e-12, t_eval=None,
+                 max_step: float = math.inf, *, h: float | None = None, max_steps: int = 1_000_000,
+                 error_control: str = "component") -> _Run:
+    """Validate the arguments of :func:`simulate` (same signature) without integrating.
+
+    Raises the ``ValueError``/``TypeError`` that :func:`simulate` would, naming
+    the argument; returns the validated inputs.  Sweeps call it for every
+    run before any work.
+    """
+    if not isinstance(model, Model):
+        raise TypeError(f"`model` must be a knifeedge Model (from knifeedge.load), got {type(model).__name__}")
+    if not isinstance(method, str) or method not in METHODS:
+        raise ValueError(f"unknown `method` {method!r}; accepted: {', '.join(sorted(METHODS))}")
+    y0 = model.check_state(y0)
+    p = model.check_params(p)
+    t0, t1 = _check_t_span(t_span)
+    rtol = _check_rtol(rtol)
+    atol = _check_atol(atol, model.n_state)
+    if t_eval is not None:
+        t_eval = _check_t_eval(t_eval, t0, t1)
+    max_step = math.inf if type(max_step) is float and max_step == math.inf else _check_max_step(max_step)
+    max_steps = _check_max_steps(max_steps)
+    spec = COMPILED_METHODS.get(ALIASES.get(method, method))
+    fixed = spec is not None and spec.fixed_step
+    if fixed and h is None:
+        raise ValueError(f"method {method!r} has a fixed step: pass the step `h`")
+    if not fixed and h is not None:
+        raise ValueError(f"`h` is the step of a fixed-step method; {method!r} chooses its own steps (use `rtol`)")
+    if h is not None:
+        h = _check_fixed_step(h, t0, t1)
+    if error_control not in ERROR_CONTROLS:
+        raise ValueError(f"unknown `error_control` {error_control!r}; accepted: {', '.join(ERROR_CONTROLS)}")
+    if error_control != "component" and (spec is None or fixed):
+        raise ValueError(f"`error_control={error_control!r}` needs a compiled adaptive method, not {method!r}")
+
+    return _Run(model, y0, t0, t1, p, rtol, atol, t_eval, max_step, h, max_steps, error_control)
+
+
 def simulate(
     model: Model,
     y0,
@@ -354,33 +392,9 @@ def simulate(
     -------
     SimulationResult
     """
-    if not isinstance(model, Model):
-        raise TypeError(f"`model` must be a knifeedge Model (from knifeedge.load), got {type(model).__name__}")
-    if not isinstance(method, str) or method not in METHODS:
-        raise ValueError(f"unknown `method` {method!r}; accepted: {', '.join(sorted(METHODS))}")
-    y0 = model.check_state(y0)
-    p = model.check_params(p)
-    t0, t1 = _check_t_span(t_span)
-    rtol = _check_rtol(rtol)
-    atol = _check_atol(atol, model.n_state)
-    if t_eval is not None:
-        t_eval = _check_t_eval(t_eval, t0, t1)
-    max_step = math.inf if type(max_step) is float and max_step == math.inf else _check_max_step(max_step)
-    max_steps = _check_max_steps(max_steps)
-    spec = COMPILED_METHODS.get(ALIASES.get(method, method))
-    fixed = spec is not None and spec.fixed_step
-    if fixed and h is None:
-        raise ValueError(f"method {method!r} has a fixed step: pass the step `h`")
-    if not fixed and h is not None:
-        raise ValueError(f"`h` is the step of a fixed-step method; {method!r} chooses its own steps (use `rtol`)")
-    if h is not None:
-        h = _check_fixed_step(h, t0, t1)
-    if error_control not in ERROR_CONTROLS:
-        raise ValueError(f"unknown `error_control` {error_control!r}; accepted: {', '.join(ERROR_CONTROLS)}")
-    if error_control != "component" and (spec is None or fixed):
-        raise ValueError(f"`error_control={error_control!r}` needs a compiled adaptive method, not {method!r}")
-
-    run = _Run(model, y0, t0, t1, p, rtol, atol, t_eval, max_step, h, max_steps, error_control)
+    run = check_inputs(model, y0, t_span, p, method, rtol, atol, t_eval, max_step, h=h, max_steps=max_steps,
+                       error_control=error_control)
+    model, t0, p = run.model, run.t0, run.p
     t, y, rev, outcome, nfev, nsteps, nrej = METHODS[method](run)
     t, y = np.asarray(t), np.asarray(y)
     if not np.isfinite(y).all():  # SciPy methods accept non-finite states; cut them off and say so

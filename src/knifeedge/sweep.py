@@ -36,7 +36,7 @@ from typing import Any
 import numpy as np
 
 from .runspec import RUN_SETTINGS, RunSpec
-from .simulate import METHODS
+from .simulate import METHODS, check_inputs
 from .store import (INPUT_COLUMNS, INT_COLUMNS, RESULT_COLUMNS, STATUSES, STORE_SUFFIXES, TEXT_COLUMNS, TEXT_SUFFIXES,
                     ResultStore, read_text, write_text)
 from .workers import ExecutorPool, LocalPool, SerialPool, WorkerLost
@@ -297,15 +297,12 @@ def _expand(run: RunSpec, points: list) -> list:
         spec = run.with_(**pt)
         if not isinstance(spec.method, str) or spec.method not in METHODS:
             raise ValueError(f"unknown `method` {spec.method!r} in `grid`; accepted: {', '.join(sorted(METHODS))}")
-        for name in ("rtol", "atol"):
-            v = getattr(spec, name)
-            if isinstance(v, bool) or not isinstance(v, (int, float)) or not (math.isfinite(v) and v > 0):
-                raise ValueError(f"`{name}` must be positive and finite, got {v!r}")
         if not spec.t_span[1] > spec.t_span[0]:
             raise ValueError(f"`t_end` must exceed the start time {spec.t_span[0]:g}, got {spec.t_span[1]!r}")
-        model = spec.load()
-        model.check_params(dict(spec.params))  # bad values fail here, before any work
-        model.check_state(dict(spec.y0))
+        extra = {} if spec.max_steps is None else {"max_steps": spec.max_steps}
+        # every argument of the run checked as simulate checks it, before any work
+        check_inputs(spec.load(), dict(spec.y0), spec.t_span, dict(spec.params), spec.method, spec.rtol, spec.atol,
+                     **extra)
         specs.append(spec)
     return specs
 
