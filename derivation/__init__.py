@@ -1,0 +1,15 @@
+"""knifeedge.derive: the symbolic engine (needs SymPy: ``pip install 'knifeedge[derive]'``).
+
+A model is data, a :class:`ModelSpec` (its numbered contract is in the class
+docstring); :func:`derive` turns it into a reduced first-order system,
+:func:`build` into every fidelity of :data:`FIDELITIES`, and
+:func:`derive_files` (the ``knifeedge derive`` command) writes the compiled
+modules that ``knifeedge.load(name, path=...)`` loads.
+"""
+from .engine import ModelSpec, ModelSpecError, ReducedSystem, check_symmetry, derive
+from .fidelities import FIDELITIES, Fidelity
+from .emit import build, write_all
+from .cli import DeriveError, derive_files, load_specs
+
+__all__ = ["ModelSpec", "ModelSpecError", "ReducedSystem", "derive", "check_symmetry", "FIDELITIES", "Fidelity",
+           "build", "write_all", "DeriveError", "derive_files", "load_specs"]

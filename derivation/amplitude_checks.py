@@ -22,6 +22,7 @@ import sympy as sp
 
 from . import averaging, truncation
 from .engine import ReducedSystem
+from .evidence import Evidence
 
 _CACHE: dict = {}
 
@@ -53,8 +54,6 @@ def published_flow(system: ReducedSystem) -> dict:
 
 
 def _invariant(lhs, rhs, system):
-    from .verify import Evidence
-
     amp = amplitude_system(system)
     rename = _as_published(amp)
     state = [rename.get(s, s) for s in amp.state]
@@ -68,8 +67,6 @@ def _invariant(lhs, rhs, system):
 
 
 def _stability(lhs, rhs, system):
-    from .verify import Evidence
-
     amp = amplitude_system(system)
     rename = _as_published(amp)
     A, S = (rename[s] for s in amp.state)
@@ -101,8 +98,6 @@ def reversal_asymptotics(system: ReducedSystem) -> sp.Expr:
 
 
 def _reversal(lhs, rhs, system):
-    from .verify import Evidence
-
     from . import published as pub
 
     g_, ell_, L_ = system.spec.params[0], system.spec.params[1], system.spec.params[2]

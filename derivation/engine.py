@@ -27,57 +27,161 @@ pose rates at a general pose.
 from __future__ import annotations
 
 import random
+import re
+import sys
+from dataclasses import dataclass, field
 
 import mpmath
-from dataclasses import dataclass, field
 
 import sympy as sp
 
 
-@dataclass(frozen=True)
-class ModelSpec:
-    """A mechanical model as data.
+#: admissible values of a parameter, as written into the generated modules
+PARAM_DOMAINS = ("positive", "real")
+#: the fidelities a model may declare a validity domain for
+_FIDELITY_NAMES = ("full", "reduced", "amplitude")
 
-    Attributes
-    ----------
-    name : model name, e.g. ``"single_mode"``.
-    coordinates : generalized coordinates ``q``.
-    velocities : their time derivatives ``q_dot`` (plain symbols).
-    accelerations : their second derivatives (plain symbols).
-    lagrangian : unconstrained Lagrangian per unit mass, in ``q``, ``q_dot`` and
-        the parameters.
-    constraints : linear velocity constraints (expressions equal to zero),
-        with ``constraint_labels`` naming them after the paper.
-    dependent : coordinates whose velocities the constraints determine.
-    cyclic : coordinates the reduced dynamics does not depend on, mapped to the
-        representative value at which the equations are evaluated.
-    small : coordinates scaled as small in the ``reduced`` truncation (tilts).
-    params : parameter symbols in the order of the parameter vector.
-    pose : cyclic coordinates reported as the pose (order of ``POSE_NAMES``).
-    quasi_velocities : optional ``(symbol, replaced_velocity, expression)``
-        triples: a velocity of a cyclic independent coordinate is replaced in
-        the closed state by a quasi-velocity, ``expression`` linear in the
-        velocities with coefficients depending on the coordinates (for a
-        sleigh, the speed along its axis ``x_dot cos(phi) + y_dot sin(phi)``).
-        Needed when the independent velocities of the cyclic coordinates are
-        not invariant under the symmetry (translations in a body frame).
+
+class ModelSpecError(ValueError):
+    """A :class:`ModelSpec` violates its contract; the message lists every problem and where the spec was built."""
+
+
+def _caller_location() -> str:
+    """``file:line`` of the first frame outside this module (where a spec was constructed)."""
+    frame = sys._getframe(1)
+    here = __file__
+    while frame is not None and (frame.f_code.co_filename in (here, "<string>")
+                                 or frame.f_code.co_filename.endswith("dataclasses.py")):
+        frame = frame.f_back
+    if frame is None:
+        return "<unknown>"
+    return f"{frame.f_code.co_filename}:{frame.f_lineno}"
+
+
+@dataclass(frozen=True, kw_only=True)
+class ModelSpec:
+    """A mechanical model as data: what :func:`derive` and the emitter need, nothing derived.
+
+    The contract, checked when the spec is built (every violation is
+    collected and raised once as :class:`ModelSpecError`, naming the file
+    and line where the spec was constructed):
+
+    1. ``name`` (str): a Python identifier; the generated modules are
+       ``<name>_<fidelity>.py``.
+    2. ``coordinates``, ``velocities`` (tuples of SymPy symbols): the
+       generalized coordinates ``q`` and their time derivatives ``q_dot``
+       as plain symbols, one velocity per coordinate, all distinct.
+       ``accelerations`` (optional): the second derivatives; default
+       symbols ``<q>_ddot``.
+    3. ``params`` (tuple of symbols): the parameters in the order of the
+       parameter vector ``p``.  Their admissible values come from the SymPy
+       assumptions (``positive=True`` -> ``"positive"``, otherwise
+       ``"real"``), or from ``param_domains`` ({symbol: "positive"|"real"}).
+    4. ``lagrangian`` (expression): the unconstrained Lagrangian (any
+       consistent normalization, e.g. per unit mass), quadratic in the
+       velocities, not explicitly time-dependent.  Every symbol in it is a
+       coordinate, a velocity or a parameter ("every symbol declared").
+    5. ``constraints`` (tuple of expressions, each equal to zero): linear
+       and homogeneous in the velocities, ``sum_i a_ji(q) q_dot_i = 0``;
+       ``constraint_labels`` name them (default ``c1, c2, ...``).
+    6. ``dependent`` (tuple of coordinates): one per constraint, whose
+       velocities the constraints determine (the block of the constraint
+       matrix on them must be invertible).
+    7. ``cyclic`` ({coordinate: value}): coordinates the reduced dynamics
+       does not depend on (the symmetry), with the representative value at
+       which the equations are evaluated.  Every dependent coordinate must
+       be cyclic.  :func:`check_symmetry` confirms the symmetry at a random
+       general pose after the derivation (``knifeedge derive`` runs it).
+    8. ``small`` (tuple of non-cyclic independent coordinates): the tilts,
+       scaled as small by the ``reduced`` fidelity; a model with tilts also
+       gets the ``amplitude`` fidelity when it has one spin rate and no
+       non-conservative forces.
+    9. ``pose`` (tuple of cyclic coordinates) and ``pose_description``: the
+       coordinates integrated by quadrature when a pose is asked for, and
+       what they mean.
+    10. ``units`` ({symbol or name: unit string}) for coordinates,
+        parameters and quasi-velocities, ``time_unit`` (default ``"time"``);
+        a rate has the unit ``<unit>/<time_unit>``.  Default ``"1"``.
+    11. ``defaults`` ({symbol or name: number}): a default value for every
+        parameter and every entry of the closed state (missing states default
+        to 0; missing parameters are an error when any default is given).
+    12. ``reversal_events`` (tuple of closed-state symbols or event names):
+        the zero crossings reported as ``reversal_times`` (may be empty).
+        ``events`` ({name: expression}) are scalar functions of the closed
+        state and the parameters whose zero crossings may be events.
+    13. ``validity`` ({fidelity: {state symbol or name: largest |value|}})
+        and ``validity_description``: where each fidelity holds.
+    14. ``dissipation`` (Rayleigh function ``R(q, q_dot) >= 0``, generalized
+        force ``-dR/dq_dot``) and ``forces`` (one generalized force per
+        coordinate): non-conservative forces.  The generated module then
+        gives ``power_dissipated(s, p)``, the rate of loss of ``energy``.
+    15. ``quasi_velocities``: ``(symbol, replaced_velocity, expression)``
+        triples (see the module docstring of :mod:`.engine`); ``state_order``
+        an optional permutation of the closed state.
+    16. ``extra_source`` (str) and ``exports`` (names it defines): plain
+        ``math``/``numpy``/``numba`` Python appended to every generated
+        module of the model (model-specific helpers such as presets).
+    17. ``drawing``: an optional :class:`~knifeedge.derive.drawing.Drawing`
+        (how ``knifeedge animate`` draws the model).
     """
 
     name: str
     coordinates: tuple
     velocities: tuple
-    accelerations: tuple
     lagrangian: sp.Expr
     constraints: tuple
-    constraint_labels: tuple
     dependent: tuple
-    cyclic: dict
-    small: tuple
     params: tuple
-    pose: tuple
+    accelerations: tuple = ()
+    constraint_labels: tuple = ()
+    cyclic: dict = field(default_factory=dict)
+    small: tuple = ()
+    pose: tuple = ()
+    pose_description: str = ""
     description: str = ""
-    param_units: dict = field(default_factory=dict)
+    units: dict = field(default_factory=dict)
+    time_unit: str = "time"
+    param_domains: dict = field(default_factory=dict)
+    defaults: dict = field(default_factory=dict)
+    reversal_events: tuple = ()
+    events: dict = field(default_factory=dict)
+    validity: dict = field(default_factory=dict)
+    validity_description: str = ""
+    dissipation: sp.Expr | None = None
+    forces: tuple = ()
     quasi_velocities: tuple = ()
+    state_order: tuple = ()
+    extra_source: str = ""
+    exports: tuple = ()
+    drawing: object = None
+    #: ``file:line`` where the spec was constructed (set automatically; named in every error)
+    defined_at: str = field(default="", init=False, compare=False)
+
+    def __post_init__(self):
+        set_ = lambda k, v: object.__setattr__(self, k, v)  # noqa: E731 (frozen dataclass)
+        set_("defined_at", _caller_location())
+        for k in ("coordinates", "velocities", "constraints", "dependent", "params", "accelerations",
+                  "constraint_labels", "small", "pose", "reversal_events", "forces", "quasi_velocities",
+                  "state_order", "exports"):
+            v = getattr(self, k)
+            if isinstance(v, (list, sp.Matrix)):
+                set_(k, tuple(v))
+        if not self.accelerations and all(isinstance(q, sp.Symbol) for q in self.coordinates):
+            set_("accelerations", tuple(sp.Symbol(f"{q}_ddot", real=True) for q in self.coordinates))
+        if not self.constraint_labels:
+            set_("constraint_labels", tuple(f"c{i + 1}" for i in range(len(self.constraints))))
+        problems = _contract_problems(self)
+        if problems:
+            raise ModelSpecError(self.error_message(problems))
+
+    def error_message(self, problems) -> str:
+        """The message of a :class:`ModelSpecError`: every problem, numbered, and where the spec was built."""
+        if isinstance(problems, str):
+            problems = [problems]
+        lines = [f"model {self.name!r} (ModelSpec built at {self.defined_at}): "
+                 f"{len(problems)} problem{'s' if len(problems) > 1 else ''}"]
+        lines += [f"  {i + 1}. {p}" for i, p in enumerate(problems)]
+        return "\n".join(lines)
 
     @property
     def independent(self) -> tuple:
@@ -99,10 +203,197 @@ class ModelSpec:
         )
 
     @property
-    def state(self) -> tuple:
-        """Closed state: :attr:`velocity_state` with the quasi-velocities in place of the velocities they replace."""
+    def natural_state(self) -> tuple:
+        """Closed state in the engine's order: :attr:`velocity_state` with the quasi-velocities in place."""
         replace_by = {old: new for new, old, _ in self.quasi_velocities}
         return tuple(replace_by.get(s, s) for s in self.velocity_state)
+
+    @property
+    def state(self) -> tuple:
+        """Closed state: :attr:`natural_state`, in ``state_order`` when given."""
+        return tuple(self.state_order) if self.state_order else self.natural_state
+
+    @property
+    def rate_pairs(self) -> tuple:
+        """``(coordinate, rate)`` pairs of the closed state."""
+        return tuple((q, self.velocity_of(q)) for q in self.independent if q not in self.cyclic)
+
+    @property
+    def dissipative(self) -> bool:
+        return self.dissipation is not None or bool(self.forces)
+
+    def lookup(self, mapping: dict, symbol, default=None):
+        """``mapping[symbol]`` accepting keys given as symbols or as names."""
+        name = str(symbol)
+        for k, v in mapping.items():
+            if str(k) == name:
+                return v
+        return default
+
+
+def _symbols_ok(values, what: str, problems: list) -> bool:
+    bad = [v for v in values if not isinstance(v, sp.Symbol)]
+    if bad:
+        problems.append(f"`{what}` must be SymPy symbols; got {bad}")
+        return False
+    dup = sorted({str(v) for v in values if list(values).count(v) > 1})
+    if dup:
+        problems.append(f"`{what}` has repeated entries {dup}")
+        return False
+    return True
+
+
+def _contract_problems(spec: ModelSpec) -> list:
+    """Every violation of the :class:`ModelSpec` contract, as sentences."""
+    problems: list = []
+    if not isinstance(spec.name, str) or not spec.name.isidentifier():
+        problems.append(f"`name` must be a Python identifier (it names the generated modules), got {spec.name!r}")
+    ok = _symbols_ok(spec.coordinates, "coordinates", problems)
+    ok &= _symbols_ok(spec.velocities, "velocities", problems)
+    ok &= _symbols_ok(spec.params, "params", problems)
+    ok &= _symbols_ok(spec.accelerations, "accelerations", problems)
+    if not ok:
+        return problems
+    n = len(spec.coordinates)
+    if len(spec.velocities) != n or len(spec.accelerations) != n:
+        problems.append(f"`velocities` and `accelerations` need one entry per coordinate ({n}); got "
+                        f"{len(spec.velocities)} and {len(spec.accelerations)}")
+        return problems
+    names = [str(s) for s in spec.coordinates + spec.velocities + spec.params + tuple(u for u, _, _ in spec.quasi_velocities)]
+    clash = sorted({x for x in names if names.count(x) > 1})
+    if clash:
+        problems.append(f"the names {clash} are used by more than one coordinate, velocity or parameter")
+    declared = set(spec.coordinates) | set(spec.velocities) | set(spec.params)
+    t_symbols = {s for s in declared if str(s) == "t"}
+
+    def undeclared(e, what, allowed=declared):
+        if not isinstance(e, sp.Basic):
+            problems.append(f"{what} must be a SymPy expression, got {type(e).__name__}")
+            return True
+        extra = e.free_symbols - allowed
+        if extra:
+            problems.append(f"{what} contains undeclared symbols {sorted(map(str, extra))} "
+                            f"(declare them as coordinates, velocities or params)")
+            return True
+        if e.atoms(sp.Derivative) or any(isinstance(f, sp.core.function.AppliedUndef) for f in e.atoms(sp.Function)):
+            problems.append(f"{what} contains functions of time or derivatives; use plain symbols for q and q_dot")
+            return True
+        return False
+
+    qd = sp.Matrix(spec.velocities)
+    if not undeclared(spec.lagrangian, "the `lagrangian`"):
+        hess = [sp.diff(spec.lagrangian, v, w) for v in spec.velocities for w in spec.velocities]
+        if any(sp.diff(e, v) != 0 for e in hess for v in spec.velocities):
+            problems.append("the `lagrangian` must be at most quadratic in the velocities "
+                            "(its mass matrix d2L/dq_dot2 may depend on the coordinates only)")
+    for j, c in enumerate(spec.constraints):
+        label = spec.constraint_labels[j] if j < len(spec.constraint_labels) else f"c{j + 1}"
+        if undeclared(c, f"constraint {label!r}"):
+            continue
+        lin = sp.Matrix([c]).jacobian(qd)
+        if sp.expand(c - (lin * qd)[0]) != 0 or any(e.free_symbols & set(spec.velocities) for e in lin):
+            problems.append(f"constraint {label!r} must be linear and homogeneous in the velocities: {c}")
+    if len(spec.constraint_labels) != len(spec.constraints):
+        problems.append(f"`constraint_labels` needs one label per constraint ({len(spec.constraints)})")
+    not_coord = [q for q in spec.dependent if q not in spec.coordinates]
+    if not_coord:
+        problems.append(f"`dependent` entries {not_coord} are not coordinates")
+    elif len(spec.dependent) != len(spec.constraints):
+        problems.append(f"`dependent` must name one coordinate per constraint ({len(spec.constraints)}), "
+                        f"got {len(spec.dependent)}")
+    if not isinstance(spec.cyclic, dict):
+        problems.append("`cyclic` must be a mapping {coordinate: representative value}")
+    else:
+        bad = [q for q in spec.cyclic if q not in spec.coordinates]
+        if bad:
+            problems.append(f"`cyclic` entries {bad} are not coordinates")
+        free = [q for q in spec.dependent if q in spec.coordinates and q not in spec.cyclic]
+        if free:
+            problems.append(f"dependent coordinates {free} must be cyclic (the closed state holds no dependent "
+                            f"coordinate); add them to `cyclic`")
+    bad = [q for q in spec.small if q not in spec.coordinates or q in spec.cyclic or q in spec.dependent]
+    if bad:
+        problems.append(f"`small` entries {bad} must be independent, non-cyclic coordinates")
+    bad = [q for q in spec.pose if q not in spec.cyclic]
+    if bad:
+        problems.append(f"`pose` entries {bad} must be cyclic coordinates")
+    for q in spec.params:
+        dom = spec.lookup(spec.param_domains, q)
+        if dom is not None and dom not in PARAM_DOMAINS:
+            problems.append(f"`param_domains` of {q} must be one of {PARAM_DOMAINS}, got {dom!r}")
+    if problems:
+        return problems
+    # the closed state and what refers to it
+    try:
+        natural = spec.natural_state
+    except Exception as exc:  # noqa: BLE001 -- reported with the others
+        problems.append(f"cannot form the closed state: {exc}")
+        return problems
+    state_names = [str(s) for s in natural]
+    if spec.state_order and sorted(map(str, spec.state_order)) != sorted(state_names):
+        problems.append(f"`state_order` must be a permutation of the closed state {tuple(state_names)}, "
+                        f"got {tuple(map(str, spec.state_order))}")
+    known = set(map(str, spec.coordinates + spec.velocities + spec.params)) | set(state_names)
+    bad = sorted(str(k) for k in spec.units if str(k) not in known)
+    if bad:
+        problems.append(f"`units` names {bad} that are not coordinates, states or parameters")
+    bad = [k for k, u in spec.units.items() if not isinstance(u, str)]
+    if bad:
+        problems.append(f"`units` must be strings; not for {bad}")
+    state_syms = set(natural)
+    for name, e in spec.events.items():
+        if not str(name).isidentifier():
+            problems.append(f"event name {name!r} must be an identifier")
+        undeclared(e, f"event {name!r}", allowed=state_syms | set(spec.params))
+    for ev in spec.reversal_events:
+        if str(ev) not in state_names and str(ev) not in map(str, spec.events):
+            problems.append(f"`reversal_events` entry {ev} is neither a closed-state variable {tuple(state_names)} "
+                            f"nor an event of `events`")
+    if spec.defaults:
+        p_names = [str(q) for q in spec.params]
+        bad = sorted(str(k) for k in spec.defaults if str(k) not in p_names + state_names)
+        if bad:
+            problems.append(f"`defaults` names {bad} that are neither parameters nor closed-state variables")
+        missing = [n_ for n_ in p_names if n_ not in map(str, spec.defaults)]
+        if missing:
+            problems.append(f"`defaults` lacks the parameters {missing}")
+        for k, v in spec.defaults.items():
+            try:
+                fv = float(v)
+            except (TypeError, ValueError):
+                problems.append(f"default of {k} must be a number, got {v!r}")
+                continue
+            if str(k) in p_names and _param_domain(spec, sp.Symbol(str(k))) == "positive" and not fv > 0:
+                problems.append(f"default of {k} must be positive (its domain), got {v!r}")
+    for fid, bounds in spec.validity.items():
+        if fid not in _FIDELITY_NAMES:
+            problems.append(f"`validity` key {fid!r} is not a fidelity {_FIDELITY_NAMES}")
+            continue
+        bad = sorted(str(k) for k in bounds if str(k) not in state_names)
+        if bad:
+            problems.append(f"`validity[{fid!r}]` names {bad} that are not closed-state variables")
+    if spec.dissipation is not None:
+        undeclared(spec.dissipation, "the `dissipation` function")
+    if spec.forces:
+        if len(spec.forces) != n:
+            problems.append(f"`forces` needs one generalized force per coordinate ({n}), got {len(spec.forces)}")
+        for q, f in zip(spec.coordinates, spec.forces):
+            undeclared(sp.sympify(f), f"the generalized force on {q}")
+    if spec.exports and not spec.extra_source:
+        problems.append("`exports` names helpers but `extra_source` is empty")
+    for name in spec.exports:
+        if spec.extra_source and not re.search(rf"^(def |class )?{re.escape(name)}\b", spec.extra_source, re.M):
+            problems.append(f"`exports` entry {name!r} is not defined at the top level of `extra_source`")
+    return problems
+
+
+def _param_domain(spec: ModelSpec, q) -> str:
+    """``"positive"`` or ``"real"``: ``param_domains`` if given, else the symbol's SymPy assumptions."""
+    dom = spec.lookup(spec.param_domains, q)
+    if dom is not None:
+        return dom
+    sym = next((s for s in spec.params if str(s) == str(q)), q)
+    return "positive" if sym.is_positive else "real"
 
 
 @dataclass
@@ -128,15 +419,19 @@ class ReducedSystem:
     multipliers_implicit: sp.Matrix
     energy: sp.Expr
     pose_rates: dict
+    #: rate of loss of ``energy`` by the non-conservative forces, ``-q_dot . Q`` (``None`` if conservative)
+    power: sp.Expr | None = None
 
     def state_rhs(self) -> list:
-        """Right-hand side of ``d(state)/dt`` as a list of expressions."""
+        """Right-hand side of ``d(state)/dt`` as a list of expressions, aligned with :attr:`state`."""
         spec = self.spec
         tilts = [q for q in spec.independent if q not in spec.cyclic]
         spins = [q for q in spec.independent if q in spec.cyclic]
         rates = [spec.velocity_of(q) for q in tilts]
         # ``explicit`` follows the order of ``spec.independent``, which may interleave tilts and spins
-        return rates + [self.explicit[spec.independent.index(q)] for q in tilts + spins]
+        natural = rates + [self.explicit[spec.independent.index(q)] for q in tilts + spins]
+        by_name = dict(zip(map(str, spec.natural_state), natural))
+        return [by_name[str(s)] for s in self.state]
 
 
 def _lagrange_terms(spec: ModelSpec):
@@ -146,14 +441,21 @@ def _lagrange_terms(spec: ModelSpec):
     p_mom = sp.Matrix([sp.diff(L, v) for v in qd])
     M = p_mom.jacobian(qd)
     h = p_mom.jacobian(q) * qd - sp.Matrix([sp.diff(L, c) for c in q])
-    if any(sp.diff(e, v) != 0 for e in M for v in qd):
-        raise ValueError(f"{spec.name}: the Lagrangian must be quadratic in the velocities")
+    h -= generalized_forces(spec)
     cons = sp.Matrix(spec.constraints)
     A = cons.jacobian(qd)
-    if sp.expand(cons - A * qd) != sp.zeros(len(spec.constraints), 1):
-        raise ValueError(f"{spec.name}: the constraints must be linear and homogeneous in the velocities")
     c = (A * qd).jacobian(q) * qd  # d/dt(A) q_dot
     return M, h, A, c
+
+
+def generalized_forces(spec: ModelSpec) -> sp.Matrix:
+    """Non-conservative generalized forces ``Q = forces - dR/dq_dot`` (zero for a conservative model)."""
+    Q = sp.zeros(len(spec.coordinates), 1)
+    if spec.forces:
+        Q += sp.Matrix([sp.sympify(f) for f in spec.forces])
+    if spec.dissipation is not None:
+        Q -= sp.Matrix([sp.diff(spec.dissipation, v) for v in spec.velocities])
+    return Q
 
 
 def _split(spec: ModelSpec, A: sp.Matrix):
@@ -183,7 +485,7 @@ def tidy(e: sp.Expr, variables) -> sp.Expr:
     """Cheap normal form of a rational function of the state.
 
     The numerator and denominator are expanded as polynomials in
-    ``variables`` (and in the trigonometric functions of them) and only their coefficients (small expressions in the
+    ``variables`` and only their coefficients (small expressions in the
     parameters and in trigonometric functions of constant angles) are
     simplified.  Simplifying small pieces keeps the derivation fast.
     """
@@ -191,10 +493,11 @@ def tidy(e: sp.Expr, variables) -> sp.Expr:
     out = []
     for part in (num, den):
         part = sp.expand(part)
-        # trigonometric functions of the state (a lean angle inside sin/cos) are generators too
-        trig = sorted((f for f in part.atoms(sp.sin, sp.cos, sp.tan) if f.free_symbols & set(variables)),
-                      key=sp.default_sort_key)
-        gens = list(variables) + trig
+        # functions of the state (sin/cos of a coordinate) are generators too, not coefficients
+        functions = sorted({f for f in part.atoms(sp.sin, sp.cos, sp.tan, sp.exp, sp.sqrt, sp.Pow)
+                            if not f.is_Symbol and not (f.is_Pow and f.exp.is_Integer and f.exp > 0)
+                            and f.free_symbols & set(variables)}, key=sp.default_sort_key)
+        gens = list(variables) + functions
         poly = sp.Poly(part, *gens)
         out.append(sum((_trig_tidy(c) * sp.Mul(*(v**k for v, k in zip(gens, m))) for m, c in poly.terms()), sp.S.Zero))
     return sp.factor_terms(out[0]) / sp.factor_terms(out[1])
@@ -206,6 +509,10 @@ def derive(spec: ModelSpec) -> ReducedSystem:
     at = dict(spec.cyclic)
     M, h, A, c = (X.subs(at) for X in (M, h, A, c))
     dep, ind, A_dep, A_ind = _split(spec, A)
+    if A_dep.det() == 0:
+        raise ModelSpecError(spec.error_message(
+            f"the constraints do not determine the velocities of `dependent` {spec.dependent} at the representative "
+            f"point {at} (their block of the constraint matrix is singular); choose other dependent coordinates"))
     A_dep_inv = A_dep.inv().applyfunc(sp.trigsimp)
 
     qd_ind = sp.Matrix([spec.velocities[i] for i in ind])
@@ -231,7 +538,9 @@ def derive(spec: ModelSpec) -> ReducedSystem:
         set(spec.cyclic) | {spec.velocity_of(q) for q in spec.dependent}
     )
     if leftover:
-        raise ValueError(f"{spec.name}: reduced equations do not close; they contain {sorted(map(str, leftover))}")
+        raise ModelSpecError(spec.error_message(
+            f"the reduced equations do not close: they still contain {sorted(map(str, leftover))}; the coordinates "
+            f"declared `cyclic` are not all symmetries of the Lagrangian and constraints"))
 
     det = tidy(mass.det(), variables)
     adj = mass.adjugate()
@@ -245,6 +554,10 @@ def derive(spec: ModelSpec) -> ReducedSystem:
     L = spec.lagrangian.subs(at)
     energy = sum(v * sp.diff(L, v) for v in qd) - L
     energy = tidy(energy.subs(dep_vel), variables)
+    power = None
+    if spec.dissipative:
+        power = -(qd.T * generalized_forces(spec).subs(at))[0]
+        power = tidy(sp.expand(power.subs(dep_vel)), variables)
 
     # pose rates at a general pose
     general = dependent_velocities(spec)
@@ -263,6 +576,7 @@ def derive(spec: ModelSpec) -> ReducedSystem:
         multipliers_implicit=lam,
         energy=energy,
         pose_rates=pose_rates,
+        power=power,
     )
     if spec.quasi_velocities:
         system = _with_quasi_velocities(system, at, dep_vel, dep_acc, general)
@@ -290,7 +604,7 @@ def _solve_quasi(spec: ModelSpec, dep_vel: dict, at: dict | None = None) -> dict
         unknowns.append(old)
     sol = sp.solve(eqs, unknowns, dict=True)
     if len(sol) != 1:
-        raise ValueError(f"{spec.name}: the quasi-velocities do not determine {unknowns} uniquely")
+        raise ModelSpecError(spec.error_message(f"the quasi-velocities do not determine {unknowns} uniquely"))
     return {k: sp.factor(sp.trigsimp(v)) for k, v in sol[0].items()}
 
 
@@ -326,6 +640,7 @@ def _with_quasi_velocities(system: ReducedSystem, at: dict, dep_vel: dict, dep_a
         multipliers_implicit=multipliers,
         energy=tidy(system.energy.subs(back), variables),
         pose_rates=pose_rates,
+        power=None if system.power is None else tidy(system.power.subs(back), variables),
     )
 
 
@@ -382,7 +697,9 @@ def check_symmetry(system: ReducedSystem, seed: int = 0, tol: float = 1e-20) -> 
     red_lam = [e.subs(pt).evalf(30) for e in system.multipliers]
     err = max(abs(a - b) for a, b in zip(acc + lam, red_acc + red_lam))
     if err > tol:
-        raise ValueError(f"{spec.name}: reduced equations differ from the unreduced ones at a general pose by {err}")
+        raise ModelSpecError(spec.error_message(
+            f"the reduced equations differ from the unreduced ones at a general pose by {err}: the coordinates "
+            f"declared `cyclic` are not symmetries of the model"))
     return float(err)
 
 

@@ -12,6 +12,7 @@ from __future__ import annotations
 import sympy as sp
 
 from .engine import ModelSpec
+from .sleigh import DIMENSIONS as _SLEIGH_DIMENSIONS, chaplygin_sleigh
 
 t = sp.Symbol("t", real=True)
 g, ell, L, D = sp.symbols("g ell L D", positive=True)
@@ -38,8 +39,7 @@ x_vel = sp.Matrix([x_dot, y_dot])
 #: theta_alpha = theta2 cos(alpha) - theta1 sin(alpha) (section III)
 theta_alpha = theta2 * sp.cos(alpha) - theta1 * sp.sin(alpha)
 
-LENGTH = {"L": 1, "T": 0}
-DIMENSIONS = {
+_KNIFE_EDGE_DIMENSIONS = {
     # symbol name -> (length exponent, time exponent)
     "g": (1, -2), "ell": (1, 0), "L": (1, 0), "D": (1, 0), "alpha": (0, 0),
     "x": (1, 0), "y": (1, 0), "phi": (0, 0), "theta": (0, 0), "theta1": (0, 0), "theta2": (0, 0),
@@ -49,6 +49,32 @@ DIMENSIONS = {
     "theta1_ddot": (0, -2), "theta2_ddot": (0, -2),
     "t": (0, 1),
 }
+#: symbol name -> (length exponent, time exponent), of every model here
+DIMENSIONS = {**_KNIFE_EDGE_DIMENSIONS, **_SLEIGH_DIMENSIONS}
+
+
+def units(symbols) -> dict:
+    """Unit strings of ``symbols`` from their (length, time) exponents: ``rad``, ``length``, ``length/time^2``."""
+    out = {}
+    for s in symbols:
+        length, time = DIMENSIONS[str(s)]
+        num = "length" if length else "rad"
+        out[s] = num + ("/time" + ("^2" if time == -2 else "") if time < 0 else "")
+    return out
+
+
+#: largest tilt (rad) at which the small-angle fidelities are declared valid, per model: there the first
+#: spin reversal of ``reduced`` is within 0.1% of ``full`` (measured from the default state with the
+#: spin rate raised until the tilt reaches the bound: single mode 0.06% at 0.199 rad but 2.4% at
+#: 0.29 rad; two mode 0.05% at 0.4 rad, 0.03% at 0.6 rad, 0.4% at 0.8 rad).
+SMALL_TILT = {"single_mode": 0.2, "two_mode": 0.6}
+VALIDITY_DESCRIPTION = (
+    "small tilts: up to this bound the first spin reversal of the small-angle fidelities is within 0.1% of the "
+    "full model's; the amplitude fidelity also needs the spin rate small against the tilt frequencies"
+)
+POSE_DESCRIPTION = "phi: heading of the bar; (x, y): position of the centre of the bar on the table"
+# Defaults (below) are the paper's scenes (Figs. numerical and Numerical2): tilts 1e-3, rates 0,
+# spin 0.1 sqrt(g/ell).
 
 
 def _single_mode() -> ModelSpec:
@@ -72,6 +98,12 @@ def _single_mode() -> ModelSpec:
         small=(theta,),
         params=(g, ell, L, D),
         pose=(phi, x, y),
+        pose_description=POSE_DESCRIPTION,
+        units=units((x, y, theta, phi, g, ell, L, D)),
+        defaults={g: 1.0, ell: 1.0, L: 1.0, D: 1.0, theta: 1e-3, phi_dot: 0.1},
+        reversal_events=(phi_dot,),
+        validity={"reduced": {theta: SMALL_TILT["single_mode"]}, "amplitude": {theta: SMALL_TILT["single_mode"]}},
+        validity_description=VALIDITY_DESCRIPTION,
         description=(
             "Single-mode knife edge (paper section II): a massless bar of length 2L on the "
             "table, two masses M/2 hanging at distance ell from its ends; one tilt theta, "
@@ -102,6 +134,13 @@ def _two_mode() -> ModelSpec:
         small=(theta1, theta2),
         params=(g, ell, L, D, alpha),
         pose=(phi, x, y),
+        pose_description=POSE_DESCRIPTION,
+        units=units((x, y, theta1, theta2, phi, g, ell, L, D, alpha)),
+        defaults={g: 1.0, ell: 1.0, L: 2.0, D: 0.5, alpha: sp.pi / 4, theta1: 1e-3, theta2: 1e-3, phi_dot: 0.1},
+        reversal_events=(phi_dot,),
+        validity={fid: {theta1: SMALL_TILT["two_mode"], theta2: SMALL_TILT["two_mode"]}
+                  for fid in ("reduced", "amplitude")},
+        validity_description=VALIDITY_DESCRIPTION,
         description=(
             "Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the "
             "lowest point of a circle of radius D whose plane makes the chiral angle alpha "
@@ -110,7 +149,4 @@ def _two_mode() -> ModelSpec:
     )
 
 
-from .sleigh import DIMENSIONS as _SLEIGH_DIMENSIONS, chaplygin_sleigh  # noqa: E402
-
-DIMENSIONS.update(_SLEIGH_DIMENSIONS)
 MODELS = {"single_mode": _single_mode(), "two_mode": _two_mode(), "chaplygin_sleigh": chaplygin_sleigh()}

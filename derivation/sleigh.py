@@ -51,6 +51,10 @@ def chaplygin_sleigh() -> ModelSpec:
         small=(),
         params=(a, k),
         pose=(phi, x, y),
+        pose_description="phi: heading of the sleigh's axis; (x, y): position of the contact point on the plane",
+        units={a: "length", k: "length", x: "length", y: "length", phi: "rad", v: "length/time"},
+        defaults={a: 0.5, k: 0.8, v: 0.1, phi_dot: 0.5},
+        reversal_events=(phi_dot,),
         description=(
             "Chaplygin sleigh: a rigid body on the plane with a knife edge at its rear contact point "
             "(x, y) that forbids sideways motion; heading phi, centre of mass at distance a ahead of "

@@ -87,4 +87,5 @@ def reduced(system: ReducedSystem, order: int = ORDER) -> ReducedSystem:
         multipliers_implicit=system.multipliers_implicit.applyfunc(lambda e: truncate(e, spec, imp_var, order)),
         energy=truncate(system.energy, spec, var, order),
         pose_rates={k: truncate(v, spec, order=order) for k, v in system.pose_rates.items()},
+        power=None if system.power is None else truncate(system.power, spec, var, order),
     )

@@ -7,8 +7,6 @@ fails as printed and passes once corrected.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import sympy as sp
 
 from . import published as pub
@@ -16,31 +14,35 @@ from .amplitude_checks import CHECKS as AMPLITUDE_CHECKS
 from .amplitude_checks import published_flow
 from .dimensions import check_equation
 from .engine import ReducedSystem
-from .models import MODELS, phi, phi_dot, x_ddot, x_dot, y_ddot, y_dot
+from .evidence import Evidence
+from .models import MODELS, phi
 from .truncation import eps, small_scaling
 
-
-@dataclass(frozen=True)
-class Evidence:
-    """Outcome of one comparison: ``passed`` and what was measured."""
-
-    passed: bool
-    dimension_error: str | None
-    detail: str
+__all__ = ["Evidence", "evaluate", "all_evidence", "solution_substitutions", "is_zero", "tilt_order"]
+#: the paper's multiplier symbols, in the order of each model's constraints
+_MULTIPLIER_SYMBOLS = (pub.lambda1, pub.lambda2)
 
 
 def solution_substitutions(system: ReducedSystem) -> dict:
-    """Accelerations, multipliers and bar velocities/accelerations on the full equations, at a general pose."""
+    """Accelerations, multipliers and pose velocities/accelerations on the full equations, at a general pose.
+
+    Every pose coordinate whose velocity is not a state (the bar's ``x, y``)
+    gets its velocity from the pose rates and its acceleration as their time
+    derivative along the flow; the multipliers become the paper's
+    ``lambda_k = M * multiplier_k``.
+    """
     spec = system.spec
     sub = dict(zip(system.accelerations, system.explicit))
     rates = dict(zip(system.state, system.state_rhs()))
-    rates[phi] = phi_dot
-    for q, dot, ddot in ((spec.coordinates[0], x_dot, x_ddot), (spec.coordinates[1], y_dot, y_ddot)):
+    rates.update({q: spec.velocity_of(q) for q in spec.pose if spec.velocity_of(q) in system.state})
+    for q in spec.pose:
+        if spec.velocity_of(q) in system.state:
+            continue
         v = system.pose_rates[q]
-        sub[dot] = v
-        sub[ddot] = sum((sp.diff(v, s) * r for s, r in rates.items()), sp.S.Zero)
-    sub[pub.lambda1] = pub.M * system.multipliers[0]
-    sub[pub.lambda2] = pub.M * system.multipliers[1]
+        sub[spec.velocity_of(q)] = v
+        sub[spec.acceleration_of(q)] = sum((sp.diff(v, s) * r for s, r in rates.items()), sp.S.Zero)
+    for symbol, lam in zip(_MULTIPLIER_SYMBOLS, system.multipliers):
+        sub[symbol] = pub.M * lam
     return sub
 
 

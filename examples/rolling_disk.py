@@ -17,7 +17,7 @@ centre are ``r**2/4`` about a diameter and ``r**2/2`` about the axle.
 """
 import sympy as sp
 
-from derivation.engine import ModelSpec
+from knifeedge.derive import ModelSpec
 
 g, r = sp.symbols("g r", positive=True)
 x, y, q1, q2, q3 = sp.symbols("x y q1 q2 q3", real=True)
@@ -78,6 +78,10 @@ MODEL = ModelSpec(
     small=(q2,),
     params=(g, r),
     pose=(q1, q3, x, y),
+    pose_description="q1: heading; q3: rotation about the axle; (x, y): contact point on the table",
+    units={g: "length/time^2", r: "length", x: "length", y: "length", q1: "rad", q2: "rad", q3: "rad"},
+    # upright rolling at spin 2 sqrt(g/r), above the stability threshold sqrt(g/(3r)), slightly leaned
+    defaults={g: 1.0, r: 1.0, q2: 0.1, q3_dot: 2.0},
     description=(
         "Uniform thin disk of radius r rolling without slipping on a horizontal table: heading q1, "
         "lean q2 from the vertical, rotation q3 about the axle, contact point (x, y)."

@@ -7,6 +7,8 @@ Produced by derivation/emit.py (make derive); SymPy 1.14.0.
 #: (model, fidelity) -> module name inside this package
 MODULES = {
     ('chaplygin_sleigh', 'full'): 'chaplygin_sleigh_full',
+    ('rolling_disk', 'full'): 'rolling_disk_full',
+    ('rolling_disk', 'reduced'): 'rolling_disk_reduced',
     ('single_mode', 'amplitude'): 'single_mode_amplitude',
     ('single_mode', 'full'): 'single_mode_full',
     ('single_mode', 'reduced'): 'single_mode_reduced',

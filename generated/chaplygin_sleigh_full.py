@@ -1,9 +1,9 @@
-"""chaplygin_sleigh, fidelity full: exact consequences of the paper's Lagrangian and constraints, nothing dropped.
+"""chaplygin_sleigh, fidelity full: exact consequences of the model's Lagrangian and constraints, nothing dropped.
 
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
-Produced by derivation/emit.py (make derive) from derivation/models.py (model 'chaplygin_sleigh',
+Produced by derivation/emit.py (make derive) from derivation/sleigh.py (model 'chaplygin_sleigh',
 constraints knife_edge) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:0627bd97eda842cc5043cbb31fe8a66d7dc77c36aee93f95a82fd22ca76a648f
+SymPy 1.14.0; input hash sha256:be046516b0603c5678d935c0f362cadbbaf422d8b0de5e6a180ae335d6e0a822
 
 Chaplygin sleigh: a rigid body on the plane with a knife edge at its rear contact point (x, y) that forbids sideways motion; heading phi, centre of mass at distance a ahead of the contact, radius of gyration k about the centre of mass; v is the speed along the axis.
 
@@ -17,8 +17,8 @@ Pose-extended state (``*_pose`` functions) appends:
 Parameter vector ``p``:
     p[0] = a            [length]
     p[1] = k            [length]
-Multipliers are per unit mass (the mass M cancels), in the order knife_edge.
-Energy is per unit mass.
+Multipliers (constraint forces in the normalization of the Lagrangian, e.g. per unit mass),
+in the order knife_edge.  Energy in the same normalization.
 """
 import math
 
@@ -27,14 +27,39 @@ from numba import njit
 
 MODEL = 'chaplygin_sleigh'
 FIDELITY = 'full'
+#: what this fidelity is
+FIDELITY_DOC = "exact consequences of the model's Lagrangian and constraints, nothing dropped"
 STATE_NAMES = ('v', 'phi_dot')
+#: unit of each state (``time`` is the unit of t)
+STATE_UNITS = ('length/time', 'rad/time')
 POSE_NAMES = ('phi', 'x', 'y')
+POSE_UNITS = ('rad', 'length', 'length')
+#: what the pose coordinates mean
+POSE_DOC = "phi: heading of the sleigh's axis; (x, y): position of the contact point on the plane"
 PARAM_NAMES = ('a', 'k')
+PARAM_UNITS = ('length', 'length')
+#: admissible values of each parameter: 'positive' (> 0) or 'real' (any finite value)
+PARAM_DOMAINS = ('positive', 'positive')
+#: default parameter set and initial state (the CLI's defaults); empty if the model declares none
+DEFAULT_PARAMS = {'a': 0.5, 'k': 0.8}
+DEFAULT_STATE = {'v': 0.1, 'phi_dot': 0.5}
+#: (coordinate, rate) pairs of the state
+RATE_PAIRS = ()
+#: the small coordinates (tilts) of the small-angle fidelities
 TILT_NAMES = ()
-#: the spin rate, whose zero crossings are the spin reversals
-SPIN_NAME = "phi_dot"
+#: states (or EVENT_NAMES) whose zero crossings are reported as ``reversal_times``
+REVERSAL_EVENTS = ('phi_dot',)
+#: scalar functions of the state returned by ``event_values(s, p)``
+EVENT_NAMES = ()
+#: largest |value| of each named state where this fidelity holds (empty: everywhere)
+VALIDITY = {}
+VALIDITY_DOC = ''
 MULTIPLIER_NAMES = ('knife_edge',)
-INPUT_HASH = '0627bd97eda842cc5043cbb31fe8a66d7dc77c36aee93f95a82fd22ca76a648f'
+#: non-conservative forces: the module has ``power_dissipated(s, p)``
+HAS_DISSIPATION = False
+#: model-specific helpers defined at the end of this module
+EXPORTS = ()
+INPUT_HASH = 'be046516b0603c5678d935c0f362cadbbaf422d8b0de5e6a180ae335d6e0a822'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 9, 'constants': 5, 'rhs_q': 4, 'rhs_pose': 13, 'rhs_pose_q': 8, 'pose_rates': 4, 'energy': 9, 'multipliers': 6}
@@ -128,7 +153,7 @@ def rhs_pose_q_into(t, s, q, ds):
 
 @njit(cache=True)
 def pose_rates(s, p):
-    """Return (phi_dot, x_dot, y_dot) at the pose-extended state ``s`` (4 operations)."""
+    """Return the rates (phi_dot, x_dot, y_dot) of the pose at the pose-extended state ``s`` (4 operations)."""
     out = np.empty(3)
     v = s[0]
     phi_dot = s[1]

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:afb5b87c5a34ce3d799ff8726dd560ffcaaa426aed59a56ac73779f1320c9bc8
+SymPy 1.14.0; input hash sha256:69a6daa3d468454c41767175ae0c13d1266030d0208bc55d15fedbb00b703401
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -33,16 +33,41 @@ from numba import njit
 
 MODEL = 'single_mode'
 FIDELITY = 'amplitude'
+#: what this fidelity is
+FIDELITY_DOC = 'first-order averaged slow flow of the reduced equations'
 STATE_NAMES = ('A_theta', 'A_phi')
+#: unit of each state (``time`` is the unit of t)
+STATE_UNITS = ('rad', 'rad/time')
 POSE_NAMES = ()
+POSE_UNITS = ()
+#: what the pose coordinates mean
+POSE_DOC = ''
 PARAM_NAMES = ('g', 'ell', 'L', 'D')
+PARAM_UNITS = ('length/time^2', 'length', 'length', 'length')
+#: admissible values of each parameter: 'positive' (> 0) or 'real' (any finite value)
+PARAM_DOMAINS = ('positive', 'positive', 'positive', 'positive')
+#: default parameter set and initial state (the CLI's defaults); empty if the model declares none
+DEFAULT_PARAMS = {'g': 1.0, 'ell': 1.0, 'L': 1.0, 'D': 1.0}
+DEFAULT_STATE = {'A_theta': 0.001, 'A_phi': 0.1}
+#: (coordinate, rate) pairs of the state
+RATE_PAIRS = ()
+#: the small coordinates (tilts) of the small-angle fidelities
 TILT_NAMES = ('A_theta',)
-#: the slow spin rate, whose zero crossings are the spin reversals
-SPIN_NAME = 'A_phi'
+#: states (or EVENT_NAMES) whose zero crossings are reported as ``reversal_times``
+REVERSAL_EVENTS = ('A_phi',)
+#: scalar functions of the state returned by ``event_values(s, p)``
+EVENT_NAMES = ()
+#: largest |value| of each named state where this fidelity holds (empty: everywhere)
+VALIDITY = {'A_theta': 0.2}
+VALIDITY_DOC = "small tilts: up to this bound the first spin reversal of the small-angle fidelities is within 0.1% of the full model's; the amplitude fidelity also needs the spin rate small against the tilt frequencies"
 MULTIPLIER_NAMES = ()
+#: non-conservative forces: the module has ``power_dissipated(s, p)``
+HAS_DISSIPATION = False
+#: model-specific helpers defined at the end of this module
+EXPORTS = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy',)
-INPUT_HASH = 'afb5b87c5a34ce3d799ff8726dd560ffcaaa426aed59a56ac73779f1320c9bc8'
+INPUT_HASH = '69a6daa3d468454c41767175ae0c13d1266030d0208bc55d15fedbb00b703401'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 10, 'constants': 6, 'rhs_q': 4, 'energy': 9, 'invariants': 9, 'frequencies': 5, 'growth_rates': 2, 'drive_rates': 5}

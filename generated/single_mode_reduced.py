@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py and derivation/truncation.py.
-SymPy 1.14.0; input hash sha256:48b9575c126e740f873873cb0b967215ab90aeb9bef4b4d7252052da7be368ac
+SymPy 1.14.0; input hash sha256:1b293397c8538610b5305e8d5fd98ba90d54f64816cde98f1c397bd7ee674a05
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -20,8 +20,8 @@ Parameter vector ``p``:
     p[1] = ell          [length]
     p[2] = L            [length]
     p[3] = D            [length]
-Multipliers are per unit mass (the mass M cancels), in the order vinculo1, vinculo2.
-Energy is per unit mass.
+Multipliers (constraint forces in the normalization of the Lagrangian, e.g. per unit mass),
+in the order vinculo1, vinculo2.  Energy in the same normalization.
 """
 import math
 
@@ -30,17 +30,42 @@ from numba import njit
 
 MODEL = 'single_mode'
 FIDELITY = 'reduced'
+#: what this fidelity is
+FIDELITY_DOC = 'degree-2 Taylor polynomial of the full vector field in the tilts and tilt rates (tilt equations to O(theta), spin equation to O(theta^2))'
 STATE_NAMES = ('theta', 'theta_dot', 'phi_dot')
+#: unit of each state (``time`` is the unit of t)
+STATE_UNITS = ('rad', 'rad/time', 'rad/time')
 POSE_NAMES = ('phi', 'x', 'y')
+POSE_UNITS = ('rad', 'length', 'length')
+#: what the pose coordinates mean
+POSE_DOC = 'phi: heading of the bar; (x, y): position of the centre of the bar on the table'
 PARAM_NAMES = ('g', 'ell', 'L', 'D')
+PARAM_UNITS = ('length/time^2', 'length', 'length', 'length')
+#: admissible values of each parameter: 'positive' (> 0) or 'real' (any finite value)
+PARAM_DOMAINS = ('positive', 'positive', 'positive', 'positive')
+#: default parameter set and initial state (the CLI's defaults); empty if the model declares none
+DEFAULT_PARAMS = {'g': 1.0, 'ell': 1.0, 'L': 1.0, 'D': 1.0}
+DEFAULT_STATE = {'theta': 0.001, 'theta_dot': 0.0, 'phi_dot': 0.1}
+#: (coordinate, rate) pairs of the state
+RATE_PAIRS = (('theta', 'theta_dot'),)
+#: the small coordinates (tilts) of the small-angle fidelities
 TILT_NAMES = ('theta',)
-#: the spin rate, whose zero crossings are the spin reversals
-SPIN_NAME = "phi_dot"
+#: states (or EVENT_NAMES) whose zero crossings are reported as ``reversal_times``
+REVERSAL_EVENTS = ('phi_dot',)
+#: scalar functions of the state returned by ``event_values(s, p)``
+EVENT_NAMES = ()
+#: largest |value| of each named state where this fidelity holds (empty: everywhere)
+VALIDITY = {'theta': 0.2}
+VALIDITY_DOC = "small tilts: up to this bound the first spin reversal of the small-angle fidelities is within 0.1% of the full model's; the amplitude fidelity also needs the spin rate small against the tilt frequencies"
 MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
-INPUT_HASH = '48b9575c126e740f873873cb0b967215ab90aeb9bef4b4d7252052da7be368ac'
+#: non-conservative forces: the module has ``power_dissipated(s, p)``
+HAS_DISSIPATION = False
+#: model-specific helpers defined at the end of this module
+EXPORTS = ()
+INPUT_HASH = '1b293397c8538610b5305e8d5fd98ba90d54f64816cde98f1c397bd7ee674a05'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
-OP_COUNTS = {'rhs': 11, 'constants': 7, 'rhs_q': 7, 'rhs_pose': 17, 'rhs_pose_q': 14, 'pose_rates': 7, 'energy': 23, 'multipliers': 7}
+OP_COUNTS = {'rhs': 11, 'constants': 7, 'rhs_q': 7, 'rhs_pose': 17, 'rhs_pose_q': 14, 'pose_rates': 7, 'energy': 23, 'multipliers': 7, 'frequencies': 5}
 
 
 @njit(cache=True)
@@ -163,7 +188,7 @@ def rhs_pose_q_into(t, s, q, ds):
 
 @njit(cache=True)
 def pose_rates(s, p):
-    """Return (phi_dot, x_dot, y_dot) at the pose-extended state ``s`` (7 operations)."""
+    """Return the rates (phi_dot, x_dot, y_dot) of the pose at the pose-extended state ``s`` (7 operations)."""
     out = np.empty(3)
     theta = s[0]
     theta_dot = s[1]
@@ -283,4 +308,16 @@ def body_outlines(s, p, uu):
     L = p[2]
     D = p[3]
 
+    return out
+
+
+@njit(cache=True)
+def frequencies(p):
+    """Angular frequencies omega_i of the small oscillations of theta at zero spin [1/time] (5 operations)."""
+    out = np.empty(1)
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    out[0] = math.sqrt(g)/math.sqrt(ell)
     return out

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:19f21e7bbccd6498823b7b8482cd8c45cc3aba6e211d7408f0e1b034316ee39e
+SymPy 1.14.0; input hash sha256:b2dea192f7068c53bea4c417d6ac3a3a33341b37dcb2b3432eabef34649dd6fe
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -37,16 +37,41 @@ from numba import njit
 
 MODEL = 'two_mode'
 FIDELITY = 'amplitude'
+#: what this fidelity is
+FIDELITY_DOC = 'first-order averaged slow flow of the reduced equations'
 STATE_NAMES = ('A1', 'A2', 'A_phi')
+#: unit of each state (``time`` is the unit of t)
+STATE_UNITS = ('rad', 'rad', 'rad/time')
 POSE_NAMES = ()
+POSE_UNITS = ()
+#: what the pose coordinates mean
+POSE_DOC = ''
 PARAM_NAMES = ('g', 'ell', 'L', 'D', 'alpha')
+PARAM_UNITS = ('length/time^2', 'length', 'length', 'length', 'rad')
+#: admissible values of each parameter: 'positive' (> 0) or 'real' (any finite value)
+PARAM_DOMAINS = ('positive', 'positive', 'positive', 'positive', 'real')
+#: default parameter set and initial state (the CLI's defaults); empty if the model declares none
+DEFAULT_PARAMS = {'g': 1.0, 'ell': 1.0, 'L': 2.0, 'D': 0.5, 'alpha': 0.7853981633974483}
+DEFAULT_STATE = {'A1': 0.001, 'A2': 0.001, 'A_phi': 0.1}
+#: (coordinate, rate) pairs of the state
+RATE_PAIRS = ()
+#: the small coordinates (tilts) of the small-angle fidelities
 TILT_NAMES = ('A1', 'A2')
-#: the slow spin rate, whose zero crossings are the spin reversals
-SPIN_NAME = 'A_phi'
+#: states (or EVENT_NAMES) whose zero crossings are reported as ``reversal_times``
+REVERSAL_EVENTS = ('A_phi',)
+#: scalar functions of the state returned by ``event_values(s, p)``
+EVENT_NAMES = ()
+#: largest |value| of each named state where this fidelity holds (empty: everywhere)
+VALIDITY = {'A1': 0.6, 'A2': 0.6}
+VALIDITY_DOC = "small tilts: up to this bound the first spin reversal of the small-angle fidelities is within 0.1% of the full model's; the amplitude fidelity also needs the spin rate small against the tilt frequencies"
 MULTIPLIER_NAMES = ()
+#: non-conservative forces: the module has ``power_dissipated(s, p)``
+HAS_DISSIPATION = False
+#: model-specific helpers defined at the end of this module
+EXPORTS = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy', 'log_A1_A2')
-INPUT_HASH = '19f21e7bbccd6498823b7b8482cd8c45cc3aba6e211d7408f0e1b034316ee39e'
+INPUT_HASH = 'b2dea192f7068c53bea4c417d6ac3a3a33341b37dcb2b3432eabef34649dd6fe'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 24, 'constants': 14, 'rhs_q': 10, 'energy': 12, 'invariants': 19, 'frequencies': 12, 'growth_rates': 11, 'drive_rates': 12}

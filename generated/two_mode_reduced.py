@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py and derivation/truncation.py.
-SymPy 1.14.0; input hash sha256:39cedc9e7fe62cd569ad3a0213d8b84ce63f5f88160b2b505eb6df0958fb891a
+SymPy 1.14.0; input hash sha256:6dd1b55fc4a1e878abc2865b18c13de022497fd101ac0cfee78d830713162b6b
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -23,8 +23,8 @@ Parameter vector ``p``:
     p[2] = L            [length]
     p[3] = D            [length]
     p[4] = alpha        [rad]
-Multipliers are per unit mass (the mass M cancels), in the order Const22, Const23.
-Energy is per unit mass.
+Multipliers (constraint forces in the normalization of the Lagrangian, e.g. per unit mass),
+in the order Const22, Const23.  Energy in the same normalization.
 """
 import math
 
@@ -33,17 +33,42 @@ from numba import njit
 
 MODEL = 'two_mode'
 FIDELITY = 'reduced'
+#: what this fidelity is
+FIDELITY_DOC = 'degree-2 Taylor polynomial of the full vector field in the tilts and tilt rates (tilt equations to O(theta), spin equation to O(theta^2))'
 STATE_NAMES = ('theta1', 'theta2', 'theta1_dot', 'theta2_dot', 'phi_dot')
+#: unit of each state (``time`` is the unit of t)
+STATE_UNITS = ('rad', 'rad', 'rad/time', 'rad/time', 'rad/time')
 POSE_NAMES = ('phi', 'x', 'y')
+POSE_UNITS = ('rad', 'length', 'length')
+#: what the pose coordinates mean
+POSE_DOC = 'phi: heading of the bar; (x, y): position of the centre of the bar on the table'
 PARAM_NAMES = ('g', 'ell', 'L', 'D', 'alpha')
+PARAM_UNITS = ('length/time^2', 'length', 'length', 'length', 'rad')
+#: admissible values of each parameter: 'positive' (> 0) or 'real' (any finite value)
+PARAM_DOMAINS = ('positive', 'positive', 'positive', 'positive', 'real')
+#: default parameter set and initial state (the CLI's defaults); empty if the model declares none
+DEFAULT_PARAMS = {'g': 1.0, 'ell': 1.0, 'L': 2.0, 'D': 0.5, 'alpha': 0.7853981633974483}
+DEFAULT_STATE = {'theta1': 0.001, 'theta2': 0.001, 'theta1_dot': 0.0, 'theta2_dot': 0.0, 'phi_dot': 0.1}
+#: (coordinate, rate) pairs of the state
+RATE_PAIRS = (('theta1', 'theta1_dot'), ('theta2', 'theta2_dot'))
+#: the small coordinates (tilts) of the small-angle fidelities
 TILT_NAMES = ('theta1', 'theta2')
-#: the spin rate, whose zero crossings are the spin reversals
-SPIN_NAME = "phi_dot"
+#: states (or EVENT_NAMES) whose zero crossings are reported as ``reversal_times``
+REVERSAL_EVENTS = ('phi_dot',)
+#: scalar functions of the state returned by ``event_values(s, p)``
+EVENT_NAMES = ()
+#: largest |value| of each named state where this fidelity holds (empty: everywhere)
+VALIDITY = {'theta1': 0.6, 'theta2': 0.6}
+VALIDITY_DOC = "small tilts: up to this bound the first spin reversal of the small-angle fidelities is within 0.1% of the full model's; the amplitude fidelity also needs the spin rate small against the tilt frequencies"
 MULTIPLIER_NAMES = ('Const22', 'Const23')
-INPUT_HASH = '39cedc9e7fe62cd569ad3a0213d8b84ce63f5f88160b2b505eb6df0958fb891a'
+#: non-conservative forces: the module has ``power_dissipated(s, p)``
+HAS_DISSIPATION = False
+#: model-specific helpers defined at the end of this module
+EXPORTS = ()
+INPUT_HASH = '6dd1b55fc4a1e878abc2865b18c13de022497fd101ac0cfee78d830713162b6b'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
-OP_COUNTS = {'rhs': 80, 'constants': 52, 'rhs_q': 35, 'rhs_pose': 91, 'rhs_pose_q': 46, 'pose_rates': 13, 'energy': 58, 'multipliers': 56}
+OP_COUNTS = {'rhs': 80, 'constants': 52, 'rhs_q': 35, 'rhs_pose': 91, 'rhs_pose_q': 46, 'pose_rates': 13, 'energy': 58, 'multipliers': 56, 'frequencies': 12}
 
 
 @njit(cache=True)
@@ -277,7 +302,7 @@ def rhs_pose_q_into(t, s, q, ds):
 
 @njit(cache=True)
 def pose_rates(s, p):
-    """Return (phi_dot, x_dot, y_dot) at the pose-extended state ``s`` (13 operations)."""
+    """Return the rates (phi_dot, x_dot, y_dot) of the pose at the pose-extended state ``s`` (13 operations)."""
     out = np.empty(3)
     theta1 = s[0]
     theta2 = s[1]
@@ -494,4 +519,20 @@ def body_outlines(s, p, uu):
         out[0, j, 0] = -_c0*_c5 + _c12*(-_c10*_c8 + _c6*_c7) + _c13*(_c14 + _c15*_c8) + x
         out[0, j, 1] = _c12*(_c14*_c8 + _c15) + _c13*(_c10 - _c6*_c7*_c8) + _c5*_c6 + y
         out[0, j, 2] = D*_c1*_c3*_c8 + D*_c11*_c2*_c20*_c22*_c9 + _c13*_c2*_c7 - _c16*_c4 - _c17*(D - _c17*_c21) - _c18*_c21*_c22
+    return out
+
+
+@njit(cache=True)
+def frequencies(p):
+    """Angular frequencies omega_i of the small oscillations of theta1, theta2 at zero spin [1/time] (12 operations)."""
+    out = np.empty(2)
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+    _c0 = math.sqrt(ell)
+    _c1 = math.sqrt(g)
+    out[0] = _c1/_c0
+    out[1] = _c0*_c1/math.sqrt((L*L) + (ell*ell))
     return out

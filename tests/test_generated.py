@@ -13,7 +13,7 @@ ROOT = Path(__file__).resolve().parents[1]
 
 def _derive(out: Path, seed: str = "0") -> None:
     env = dict(os.environ, PYTHONHASHSEED=seed)
-    subprocess.run([sys.executable, "-m", "derivation", "--out", str(out)], cwd=ROOT, env=env,
+    subprocess.run([sys.executable, "-m", "knifeedge.derive", "--out", str(out)], cwd=ROOT, env=env,
                    check=True, capture_output=True, text=True)
 
 
@@ -77,4 +77,5 @@ def test_wheel_ships_the_generated_modules(tmp_path):
     names = set(zipfile.ZipFile(wheel).namelist())
     for p in (ROOT / "generated").glob("*.py"):
         assert f"knifeedge/generated/{p.name}" in names, p.name
+    assert any(n.startswith("knifeedge/derive/") for n in names)  # the engine, with the derive extra
     assert not any(n.startswith("derivation/") for n in names)

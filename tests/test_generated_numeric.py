@@ -13,10 +13,12 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from derivation.engine import ReducedSystem
+from knifeedge.derive.engine import ReducedSystem
 
-KEYS = ["single_mode/full", "single_mode/reduced", "two_mode/full", "two_mode/reduced",
-        "single_mode/amplitude", "two_mode/amplitude", "chaplygin_sleigh/full"]
+from knifeedge.generated import MODULES
+
+#: every generated module, from the registry (a new model is checked without editing this file)
+KEYS = [f"{m}/{f}" for m, f in sorted(MODULES)]
 
 
 def _module(key):

@@ -12,10 +12,10 @@ from pathlib import Path
 import pytest
 import sympy as sp
 
-from derivation import published as pub
-from derivation import verify
-from derivation.dimensions import check_equation
-from derivation.truncation import truncate
+from knifeedge.derive import published as pub
+from knifeedge.derive import verify
+from knifeedge.derive.dimensions import check_equation
+from knifeedge.derive.truncation import truncate
 
 ROOT = Path(__file__).resolve().parents[1]
 REQUIRED = {"lambda2", "phiAf", "thetBf", "FINAL1", "FINAL2", "Chap1", "Chap2", "an1", "an2",

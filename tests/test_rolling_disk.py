@@ -29,7 +29,7 @@ import pytest
 import sympy as sp
 from scipy.integrate import solve_ivp
 
-from derivation import engine
+from knifeedge.derive import engine
 
 EXAMPLE = Path(__file__).resolve().parent.parent / "examples" / "rolling_disk.py"
 

@@ -14,8 +14,8 @@ import pytest
 import sympy as sp
 
 import knifeedge as ke
-from derivation import engine
-from derivation.sleigh import a, amplitude_analogy, k
+from knifeedge.derive import engine
+from knifeedge.derive.sleigh import a, amplitude_analogy, k
 
 
 @pytest.fixture(scope="module")
@@ -70,7 +70,7 @@ def test_sleigh_motion_respects_the_knife_edge_and_straightens_out():
 def test_analogy_is_exact_symbolically(systems, sleigh):
     """v = -kappa A_phi, phi_dot = mu A_theta maps the sleigh onto the derived single-mode slow flow
     identically, with kappa = D (a^2 + k^2)/(2 a ell) and mu^2 = kappa g D/(2 a L^2)."""
-    from derivation.models import D, L, ell, g
+    from knifeedge.derive.models import D, L, ell, g
 
     amp = systems[("single_mode", "amplitude")]
     m = amplitude_analogy(sleigh, amp)
@@ -88,7 +88,7 @@ def test_analogy_is_exact_symbolically(systems, sleigh):
 def test_analogy_overlay_numerically(systems, sleigh):
     """Simulate the sleigh and the single-mode amplitude model separately; the mapped sleigh
     trajectory lies on the amplitude trajectory (Fig. Elipses <-> the sleigh's energy ellipses)."""
-    from derivation.models import D, L, ell, g
+    from knifeedge.derive.models import D, L, ell, g
 
     amp = systems[("single_mode", "amplitude")]
     m = amplitude_analogy(sleigh, amp)

@@ -11,7 +11,7 @@ integrates them and never imports SymPy.
 >>> m.state_names
 ('theta', 'theta_dot', 'phi_dot')
 """
-from .models import FIDELITIES, MODEL_NAMES, Model, load
+from .models import FIDELITIES, MODEL_NAMES, Model, ValidityWarning, available, load
 from .simulate import METHODS, SimulationResult, simulate
 from .runspec import RunSpec
 from .scenes import Scene, get_scene as scene, scene_names
@@ -20,6 +20,6 @@ from .reversal import ReversalPrediction, reversal_time
 from .animation import animate
 
 __version__ = "0.1.0"
-__all__ = ["load", "simulate", "Model", "SimulationResult", "METHODS", "MODEL_NAMES", "FIDELITIES",
-           "sweep", "SweepTable", "scene", "scene_names", "Scene", "RunSpec", "reversal_time", "ReversalPrediction",
-           "animate"]
+__all__ = ["load", "available", "ValidityWarning", "simulate", "Model", "SimulationResult", "METHODS", "MODEL_NAMES",
+           "FIDELITIES", "sweep", "SweepTable", "scene", "scene_names", "Scene", "RunSpec", "reversal_time",
+           "ReversalPrediction", "animate"]

@@ -19,7 +19,8 @@ What a frame shows, and how it stays honest:
   magnification written on the frame; positions and lengths are never scaled,
   so the body stays rigid (the top view shows the true contact path);
 - which model drew it: runs without the pose (a scene's closed state) are
-  re-run with the pose, at the same fidelity, method and tolerances.
+  re-run with the pose, at the same fidelity, method and tolerances, the pose
+  left out of the error control so that the closed state takes the same steps.
 """
 from __future__ import annotations
 
@@ -67,6 +68,7 @@ class Motion:
 
     @property
     def spin_t(self) -> np.ndarray:
+        """Times of :attr:`spin_y` (every step of the run)."""
         return self.run_t
 
     @property

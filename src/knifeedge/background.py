@@ -151,7 +151,8 @@ def simulate_noisy(model: Model, y0, t_end: float, p, sigma: float, h: float = 0
             raise TypeError(f"`{name}` must be an integer, got {v!r}")
         if not (0 if name == "seed" else 1) <= v <= high:
             raise ValueError(f"`{name}` must be an integer from {0 if name == 'seed' else 1} to {high}, got {v!r}")
-    noise_index = np.array([model.index(q + "_dot") for q in model.tilt_names], dtype=np.int64)
+    rate_of = dict(model.rate_pairs)
+    noise_index = np.array([model.index(rate_of[q]) for q in model.tilt_names], dtype=np.int64)
     rev, t = _loop(model.rhs, y0, p, float(t_end), float(h), noise_index, float(sigma),
                    model.index(model.spin_name), int(seed), int(max_reversals))
     return np.asarray(rev)

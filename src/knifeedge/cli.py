@@ -1,6 +1,6 @@
 """Command line: ``knifeedge COMMAND --help``.
 
-Commands: ``demo``, ``simulate``, ``scene``, ``figures``, ``sweep``, ``animate``, ``bench``.
+Commands: ``demo``, ``simulate``, ``derive``, ``scene``, ``figures``, ``sweep``, ``animate``, ``bench``.
 Errors are one line on stderr and a non-zero exit status, not a traceback.
 """
 from __future__ import annotations
@@ -207,15 +207,10 @@ def grid_assignments(items) -> dict:
 
 
 # -- simulate -----------------------------------------------------------------
-#: defaults of ``simulate``: the paper's scenes (Figs. numerical and Numerical2)
-DEFAULT_PARAMS = {"single_mode": {"g": 1.0, "ell": 1.0, "L": 1.0, "D": 1.0},
-                  "two_mode": {"g": 1.0, "ell": 1.0, "L": 2.0, "D": 0.5, "alpha": math.pi / 4}}
-
-
 def default_state(model) -> dict:
-    """Every tilt (or tilt amplitude) 1e-3, every rate 0, the spin 0.1."""
-    y0 = {n: (1e-3 if n in model.tilt_names else 0.0) for n in model.closed_state_names}
-    y0[model.spin_name] = 0.1
+    """The model's default initial state (its module's ``DEFAULT_STATE``; the pose, if any, starts at 0)."""
+    y0 = dict(model.default_state)
+    y0.update({n: 0.0 for n in model.state_names if n not in y0 and n in model.pose_names})
     return y0
 
 
@@ -239,13 +234,17 @@ def _max_steps(text: str) -> int:
 def _simulate_args(sub: argparse.ArgumentParser) -> None:
     from .models import FIDELITIES, MODEL_NAMES
 
-    sub.add_argument("--model", default="single_mode", help=f"one of {', '.join(MODEL_NAMES)} (default: %(default)s)")
-    sub.add_argument("--fidelity", default="reduced", help=f"one of {', '.join(FIDELITIES)} (default: %(default)s)")
-    sub.add_argument("--pose", action="store_true", help="also integrate the position on the table (phi, x, y)")
+    sub.add_argument("--model", default="single_mode",
+                     help=f"one of {', '.join(MODEL_NAMES)}, or a model in --path (default: %(default)s)")
+    sub.add_argument("--fidelity", default=None,
+                     help=f"one of {', '.join(FIDELITIES)} (default: reduced for the knife edges, else full)")
+    sub.add_argument("--path", type=Path, default=None,
+                     help="folder of models written by `knifeedge derive FILE --out DIR` (default: built-in models)")
+    sub.add_argument("--pose", action="store_true", help="also integrate the pose (position on the table)")
     sub.add_argument("--set", nargs="+", action="extend", default=[], metavar="NAME=VALUE",
                      help="parameters and initial state by name, e.g. --set D=0.5 phi_dot=0.2 alpha=pi/4. Defaults: "
-                          "the paper's scenes (single_mode: g=ell=L=D=1; two_mode: L=2, D=0.5, alpha=pi/4), "
-                          "tilts 1e-3, rates 0, spin 0.1")
+                          "the model's own (its module's DEFAULT_PARAMS and DEFAULT_STATE; for the knife edges the "
+                          "paper's scenes: tilts 1e-3, rates 0, spin 0.1)")
     sub.add_argument("--t-end", type=number, default=300.0, help="end time in sqrt(ell/g) (default: %(default)s)")
     sub.add_argument("--t-start", type=number, default=0.0, help="start time (default: %(default)s)")
     sub.add_argument("--method", default="DOP853", help="integration method, see knifeedge.METHODS (default: %(default)s)")
@@ -274,7 +273,7 @@ def simulate_cmd(args) -> int:
     import numpy as np
 
     from . import load, simulate
-    from .models import MODEL_NAMES
+    from .models import MODEL_NAMES, available
 
     if args.out is not None and args.out.suffix.lower() not in (".csv", ".npz"):
         raise ValueError(f"`--out` must end in .csv or .npz, got {args.out.name!r}")
@@ -282,9 +281,16 @@ def simulate_cmd(args) -> int:
         raise ValueError(f"`--plot` must end in .png, got {args.plot.name!r}")
     if not args.t_end > args.t_start:
         raise ValueError(f"`--t-end` must exceed `--t-start` ({args.t_start:g}), got {args.t_end:g}")
-    if args.model not in MODEL_NAMES:
-        raise ValueError(f"unknown `--model` {args.model!r}; accepted: {', '.join(MODEL_NAMES)}")
-    m = load(args.model, fidelity=args.fidelity, pose=args.pose)
+    fidelity = args.fidelity
+    if args.path is None:
+        if args.model not in MODEL_NAMES:
+            raise ValueError(f"unknown `--model` {args.model!r}; accepted: {', '.join(MODEL_NAMES)} "
+                             f"(or a model of your own with `--path`)")
+        if fidelity is None:
+            fidelity = "reduced" if (args.model, "reduced") in available() else "full"
+    elif fidelity is None:
+        fidelity = "full"
+    m = load(args.model, fidelity=fidelity, pose=args.pose, path=args.path)
     settings = [k for k in (item.partition("=")[0].strip() for item in args.set) if k in _SIMULATE_OPTIONS]
     if settings:
         k = settings[0]
@@ -293,12 +299,11 @@ def simulate_cmd(args) -> int:
     unknown = [k for k in values if k not in m.param_names and k not in m.state_names]
     if unknown:
         raise ValueError(f"`--set`: unknown name(s) {unknown}; parameters {m.param_names}, states {m.state_names}")
-    p = {**DEFAULT_PARAMS.get(m.name, {}), **{k: v for k, v in values.items() if k in m.param_names}}
-    missing = [n for n in m.param_names if n not in p]
-    if missing:
-        raise ValueError(f"`--set`: {m.name} has no default for {missing}: give them, e.g. --set "
-                         + " ".join(f"{n}=1" for n in missing))
+    p = {**m.default_params, **{k: v for k, v in values.items() if k in m.param_names}}
     y0 = {**default_state(m), **{k: v for k, v in values.items() if k in m.state_names}}
+    lacking = [n for n in m.param_names if n not in p] + [n for n in m.state_names if n not in y0]
+    if lacking:
+        raise ValueError(f"{m.name} declares no default for {lacking}: give them with `--set NAME=VALUE`")
     t_eval = np.linspace(args.t_start, args.t_end, args.n_eval)
     r = simulate(m, y0, (args.t_start, args.t_end), p, method=args.method, rtol=args.rtol, atol=args.atol,
                  t_eval=t_eval, max_step=args.max_step, h=args.h, max_steps=args.max_steps,
@@ -306,9 +311,13 @@ def simulate_cmd(args) -> int:
     print(f"{m.name} ({m.fidelity}{', pose' if m.pose else ''}), " + ", ".join(f"{k}={v:g}" for k, v in p.items()))
     print("  y0: " + ", ".join(f"{k}={v:g}" for k, v in y0.items()))
     rev = r.reversal_times
-    print(f"  spin reversals ({len(rev)}): {', '.join(f'{t:.6g}' for t in rev) or 'none'}")
+    if m.reversal_events:
+        print(f"  reversals ({len(rev)}): {', '.join(f'{t:.6g}' for t in rev) or 'none'} "
+              f"(zero crossings of {', '.join(m.reversal_events)})")
     if len(rev) > 1:
         print(f"  intervals between reversals: {', '.join(f'{d:.6g}' for d in np.diff(rev))}")
+    if not r.in_validity_domain:
+        print(f"  warning: {r.validity_message}")
     control = f"h={args.h:g}" if args.h is not None else f"rtol={args.rtol:g}, atol={args.atol:g}"
     print(f"  {r.method}, {control}: {r.nsteps} steps, {r.nfev} rhs evaluations; {r.message}")
     if args.out is not None:
@@ -336,16 +345,22 @@ def _plot_run(r, m, path: Path) -> None:
     import matplotlib.pyplot as plt
 
     fig, (a1, a2) = plt.subplots(2, 1, sharex=True, figsize=(7.5, 5))
-    for name in m.tilt_names:
+    # top: the coordinates of the closed state (the tilts); bottom: the reversal state, else the rates
+    top = [a for a, _ in m.rate_pairs] or list(m.tilt_names) or [m.closed_state_names[0]]
+    bottom = [m.spin_name] if m.spin_name else [n for n in m.closed_state_names if n not in top]
+    unit = dict(zip(m.state_names, m.state_units))
+    for name in top:
         a1.plot(r.t, r[name], lw=0.5, label=name)
-    a1.set_ylabel("tilt [rad]")
+    a1.set_ylabel(" ".join(sorted({f"[{unit[n]}]" for n in top})))
     a1.legend(fontsize=8, loc="upper right")
-    a2.plot(r.t, r[m.spin_name], color="C1")
+    for k, name in enumerate(bottom):
+        a2.plot(r.t, r[name], color=f"C{k + 1}", label=name)
     for t in r.reversal_times:
         a2.axvline(t, color="k", ls=":", lw=0.8)
     a2.axhline(0, color="gray", lw=0.5)
-    a2.set_ylabel(m.spin_name + r" [$\sqrt{g/\ell}$]")
-    a2.set_xlabel(r"t [$\sqrt{\ell/g}$]")
+    a2.set_ylabel(" ".join(sorted({f"[{unit[n]}]" for n in bottom})))
+    a2.legend(fontsize=8, loc="upper right")
+    a2.set_xlabel("t [time]")
     a1.set_title(f"{m.name} ({m.fidelity})", fontsize=10)
     fig.tight_layout()
     path.parent.mkdir(parents=True, exist_ok=True)
@@ -515,6 +530,28 @@ def sweep_cmd(args) -> int:
     return 0
 
 
+# -- derive ---------------------------------------------------------------------
+def _derive_args(sub: argparse.ArgumentParser) -> None:
+    sub.add_argument("files", nargs="+", type=Path, metavar="FILE.py",
+                     help="Python files that each define MODEL: a knifeedge.derive.ModelSpec or a list of them")
+    sub.add_argument("--out", type=Path, required=True, help="folder to write the generated modules into")
+    sub.add_argument("--no-check", action="store_true",
+                     help="skip the numerical check of the symmetry at a random general pose")
+
+
+@command("derive", "derive your own models (files defining MODEL) into compiled modules: load them with path=OUT")
+def derive_cmd(args) -> int:
+    try:
+        from .derive.cli import derive_files
+    except ImportError as exc:
+        if "sympy" not in str(exc).lower():
+            raise
+        raise OSError("`knifeedge derive` needs SymPy: pip install 'knifeedge[derive]'") from None
+    for path in derive_files(args.files, args.out, check=not args.no_check, log=lambda s: print(s, file=sys.stderr)):
+        print(path)
+    return 0
+
+
 # -- bench ----------------------------------------------------------------------
 @command("bench", "speed and accuracy benchmarks: run `make bench` (python -m benchmarks) in a source checkout")
 def bench_cmd(args) -> int:
@@ -533,7 +570,7 @@ class _Parser(argparse.ArgumentParser):
 
 
 _ARGS = {"demo": _demo_args, "simulate": _simulate_args, "scene": _scene_args, "figures": _figures_args,
-         "sweep": _sweep_args, "animate": _animate_args}
+         "sweep": _sweep_args, "animate": _animate_args, "derive": _derive_args}
 
 
 def build_parser() -> argparse.ArgumentParser:

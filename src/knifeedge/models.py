@@ -1,14 +1,20 @@
 """Model registry: :func:`load` returns a :class:`Model` backed by a generated module.
 
-Everything a model knows (state and parameter names, their order, the
-compiled functions) comes from the module that ``make derive`` wrote into
-``knifeedge.generated``; nothing is derived at run time.
+Everything a model knows (state and parameter names, units, admissible
+parameters, defaults, which crossings are events, the compiled functions)
+comes from the module that ``make derive`` wrote into ``knifeedge.generated``,
+or that ``knifeedge derive`` wrote into a folder of the user's (``load(...,
+path=DIR)``); nothing is derived at run time and no model is named here.
 """
 from __future__ import annotations
 
+import hashlib
 import importlib
+import importlib.util
 import math
+import sys
 from collections.abc import Mapping
+from pathlib import Path
 
 import numpy as np
 
@@ -17,52 +23,103 @@ from .generated import MODULES
 
 MODEL_NAMES = tuple(sorted({m for m, _ in MODULES}))
 FIDELITIES = tuple(sorted({f for _, f in MODULES}))
-#: parameters that may take any finite value (angles); the others must be positive
-SIGNED_PARAMS = frozenset({"alpha"})
+#: what a generated module must define for the runtime (older modules lack some: regenerate them)
+REQUIRED_METADATA = ("MODEL", "FIDELITY", "STATE_NAMES", "STATE_UNITS", "POSE_NAMES", "PARAM_NAMES", "PARAM_UNITS",
+                     "PARAM_DOMAINS", "DEFAULT_PARAMS", "DEFAULT_STATE", "RATE_PAIRS", "TILT_NAMES",
+                     "REVERSAL_EVENTS", "EVENT_NAMES", "VALIDITY", "MULTIPLIER_NAMES", "HAS_DISSIPATION", "EXPORTS")
+
+
+class ValidityWarning(UserWarning):
+    """A result left the domain where its model's fidelity holds (``Model.validity``)."""
 
 
 class Model:
-    """A knife-edge model at one fidelity, with or without the pose.
+    """A generated model at one fidelity, with or without the pose.
 
     Attributes
     ----------
     name, fidelity : str
     pose : bool
-        When true the state carries ``("phi", "x", "y")`` after the closed state.
-    state_names : tuple of str
-    param_names : tuple of str
+        When true the state carries :attr:`pose_names` after the closed state.
+    state_names, state_units : tuple of str
+        Names and units of the state (closed state, then the pose if ``pose``).
+    closed_state_names : tuple of str
+    pose_names, pose_units : tuple of str
+    pose_doc : str
+        What the pose coordinates mean.
+    param_names, param_units : tuple of str
+    param_domains : tuple of str
+        ``"positive"`` (the parameter must be > 0) or ``"real"`` (any finite value).
+    default_params, default_state : dict
+        The model's default parameter set and initial closed state (may be empty).
+    rate_pairs : tuple of (str, str)
+        ``(coordinate, rate)`` pairs of the closed state.
     tilt_names : tuple of str
-        The small coordinates (tilt angles).
-    spin_name : str
-        The state whose zero crossings are spin reversals (``"phi_dot"``).
+        The small coordinates (tilts) of the small-angle fidelities.
+    reversal_events : tuple of str
+        States (or :attr:`event_names`) whose zero crossings are ``reversal_times``.
+    spin_name : str or None
+        The first of :attr:`reversal_events` if it is a state, else ``None``.
+    event_names : tuple of str
+        Scalar event functions of the state the module defines (``event_values``).
+    validity : dict
+        Largest ``|value|`` of each named state where this fidelity holds (empty: everywhere);
+        ``validity_doc`` says why.
     multiplier_names : tuple of str
         The constraints whose multipliers :meth:`multipliers` returns.
+    has_dissipation : bool
+        The model has non-conservative forces (:meth:`power_dissipated`).
+    exports : tuple of str
+        Model-specific helpers of the module (``model.module.<name>``).
     rhs : compiled function ``rhs(t, y, p) -> ndarray``
         Also callable from other numba code.
     rhs_into : compiled function ``rhs_into(t, y, p, dy)`` writing into ``dy``.
     module : the generated module.
+    source_path : Path or None
+        The module's file when loaded with ``load(..., path=...)``.
     """
 
-    def __init__(self, name: str, fidelity: str, pose: bool):
-        self.name = name
-        self.fidelity = fidelity
+    def __init__(self, module, pose: bool, source_path: Path | None = None):
+        missing = [a for a in REQUIRED_METADATA if not hasattr(module, a)]
+        if missing:
+            raise ValueError(f"generated module {getattr(module, '__file__', module)} lacks {missing}: it was written "
+                             f"by an older knifeedge; regenerate it (make derive, or knifeedge derive)")
+        self.module = mod = module
+        self.name: str = mod.MODEL
+        self.fidelity: str = mod.FIDELITY
         self.pose = bool(pose)
-        self.module = importlib.import_module(f"{__package__}.generated.{MODULES[(name, fidelity)]}")
-        mod = self.module
+        self.source_path = source_path
         if self.pose and not mod.POSE_NAMES:
-            raise ValueError(f"`pose=True` needs a model with a pose; {name} at fidelity {fidelity!r} has none")
+            raise ValueError(f"`pose=True` needs a model with a pose; {self.name} at fidelity {self.fidelity!r} has none")
+        self.fidelity_doc: str = getattr(mod, "FIDELITY_DOC", "")
         self.closed_state_names: tuple = mod.STATE_NAMES
         self.pose_names: tuple = mod.POSE_NAMES
+        self.pose_units: tuple = getattr(mod, "POSE_UNITS", ())
+        self.pose_doc: str = getattr(mod, "POSE_DOC", "")
         self.state_names: tuple = mod.STATE_NAMES + (mod.POSE_NAMES if self.pose else ())
+        self.state_units: tuple = mod.STATE_UNITS + (self.pose_units if self.pose else ())
         self.param_names: tuple = mod.PARAM_NAMES
+        self.param_units: tuple = mod.PARAM_UNITS
+        self.param_domains: tuple = mod.PARAM_DOMAINS
+        self.default_params: dict = dict(mod.DEFAULT_PARAMS)
+        self.default_state: dict = dict(mod.DEFAULT_STATE)
+        self.rate_pairs: tuple = mod.RATE_PAIRS
         self.tilt_names: tuple = mod.TILT_NAMES
-        self.spin_name: str = mod.SPIN_NAME
+        self.reversal_events: tuple = mod.REVERSAL_EVENTS
+        self.event_names: tuple = mod.EVENT_NAMES
+        self.spin_name: str | None = next((e for e in mod.REVERSAL_EVENTS if e in mod.STATE_NAMES), None)
+        self.validity: dict = dict(mod.VALIDITY)
+        self.validity_doc: str = getattr(mod, "VALIDITY_DOC", "")
         self.multiplier_names: tuple = mod.MULTIPLIER_NAMES
+        self.has_dissipation: bool = bool(mod.HAS_DISSIPATION)
+        self.exports: tuple = mod.EXPORTS
+        self._positive = tuple(d == "positive" for d in mod.PARAM_DOMAINS)
         self.rhs = mod.rhs_pose if self.pose else mod.rhs
         self.rhs_into = mod.rhs_pose_into if self.pose else mod.rhs_into
 
     def __repr__(self) -> str:
-        return f"knifeedge.load({self.name!r}, fidelity={self.fidelity!r}, pose={self.pose})"
+        where = f", path={str(self.source_path.parent)!r}" if self.source_path is not None else ""
+        return f"knifeedge.load({self.name!r}, fidelity={self.fidelity!r}, pose={self.pose}{where})"
 
     @property
     def n_state(self) -> int:
@@ -80,8 +137,8 @@ class Model:
         """Validated float64 parameter vector in the order of :attr:`param_names`.
 
         Accepts keywords (``m.params(g=1.0, ell=1.0, L=2.0, D=0.5)``) or one
-        mapping.  Every parameter is required; lengths and ``g`` must be
-        positive and finite, ``alpha`` any finite angle (radians).
+        mapping.  Every parameter is required; each must be finite, and
+        positive where :attr:`param_domains` says ``"positive"``.
         """
         if values is not None and kwargs:
             raise TypeError("pass the parameters either as one mapping or as keywords, not both")
@@ -101,7 +158,7 @@ class Model:
         out = np.empty(len(self.param_names))
         for i, n in enumerate(self.param_names):
             out[i] = _finite_float(values[n], f"parameter `{n}`")
-            if n not in SIGNED_PARAMS and not out[i] > 0:
+            if self._positive[i] and not out[i] > 0:
                 raise ValueError(f"parameter `{n}` must be positive, got {values[n]!r}")
         return out
 
@@ -115,8 +172,8 @@ class Model:
                 f"parameters `p` must have shape ({len(self.param_names)},) for {self.param_names}, got {arr.shape}"
             )
         values = arr.tolist()
-        for n, v in zip(self.param_names, values):
-            if not math.isfinite(v) or (n not in SIGNED_PARAMS and not v > 0):
+        for positive, v in zip(self._positive, values):
+            if not math.isfinite(v) or (positive and not v > 0):
                 return self.params(dict(zip(self.param_names, values)))  # raises, naming the parameter
         return np.array(values)
 
@@ -180,7 +237,7 @@ class Model:
         return np.stack([self.module.multipliers(np.ascontiguousarray(y[:, k]), p) for k in range(y.shape[1])], 1)
 
     def pose_rates(self, y, p) -> np.ndarray:
-        """``(phi_dot, x_dot, y_dot)`` at a pose-extended state (needs ``pose=True``)."""
+        """Rates of the pose coordinates :attr:`pose_names` at a pose-extended state (needs ``pose=True``)."""
         if not self.pose:
             raise ValueError("pose_rates needs the pose: load the model with `pose=True`")
         y = self._states(y, pose=True)
@@ -203,6 +260,63 @@ class Model:
             raise ValueError("`y` must be finite")
         return np.ascontiguousarray(arr)
 
+    def frequencies(self, p) -> np.ndarray:
+        """Angular frequencies of the small oscillations of :attr:`tilt_names` at zero spin (1/time).
+
+        Only models whose tilts oscillate have them (``hasattr(model.module, "frequencies")``).
+        """
+        if not hasattr(self.module, "frequencies"):
+            raise ValueError(f"{self.name} at fidelity {self.fidelity!r} has no oscillating modes (no `frequencies`)")
+        return self.module.frequencies(self.check_params(p))
+
+    def power_dissipated(self, y, p) -> float | np.ndarray:
+        """Rate at which the non-conservative forces remove :meth:`energy`; 0 for a conservative model.
+
+        ``energy(t) + integral_0^t power_dissipated dt = energy(0)`` along a run.
+        ``y`` of shape (n_state,) or (n_state, n_times).
+        """
+        y = np.asarray(y, dtype=float)
+        p = np.asarray(p, dtype=float)
+        if not self.has_dissipation:
+            return 0.0 if y.ndim == 1 else np.zeros(y.shape[1])
+        if y.ndim == 1:
+            return float(self.module.power_dissipated(y, p))
+        return np.array([self.module.power_dissipated(np.ascontiguousarray(y[:, k]), p) for k in range(y.shape[1])])
+
+    def dissipated_work(self, t, y, p) -> np.ndarray:
+        """Energy removed by the non-conservative forces from ``t[0]`` to each ``t`` (trapezoidal rule on the samples).
+
+        ``energy(y) + dissipated_work(t, y, p)`` is constant along a run, to the
+        accuracy of the quadrature (sample the run densely, e.g. with ``t_eval``).
+        """
+        power = self.power_dissipated(y, p)
+        t = np.asarray(t, dtype=float)
+        out = np.zeros_like(t)
+        if t.size > 1:
+            out[1:] = np.cumsum(0.5 * (power[1:] + power[:-1]) * np.diff(t))
+        return out
+
+    def event_values(self, y, p) -> np.ndarray:
+        """Values of the model's scalar events :attr:`event_names` at the state ``y``."""
+        if not self.event_names:
+            raise ValueError(f"{self.name} defines no event functions")
+        return self.module.event_values(np.asarray(y, dtype=float), np.asarray(p, dtype=float))
+
+    def validity_excess(self, y) -> dict:
+        """States that leave :attr:`validity`: ``{name: largest |value| reached}`` (empty when inside).
+
+        ``y`` of shape (n_state,) or (n_state, n_times).
+        """
+        y = np.asarray(y, dtype=float)
+        out = {}
+        for name, bound in self.validity.items():
+            if name not in self.state_names or y.size == 0:
+                continue
+            peak = float(np.max(np.abs(y[self.state_names.index(name)])))
+            if peak > bound:
+                out[name] = peak
+        return out
+
 
 def _finite_float(v, what: str) -> float:
     return _validate.finite(v, what)
@@ -216,30 +330,93 @@ def _float_array(v, what: str) -> np.ndarray:
 _CACHE: dict = {}
 
 
-def load(name: str, fidelity: str = "full", pose: bool = False) -> Model:
+def _module_from_path(folder: Path, name: str, fidelity: str):
+    """Import ``folder/<name>_<fidelity>.py`` under a name unique to its content; returns (module, path)."""
+    path = (folder / f"{name}_{fidelity}.py").resolve()
+    if not path.is_file():
+        have = sorted(p.stem for p in folder.glob("*_*.py"))
+        raise ValueError(f"no module for model `name` {name!r} at `fidelity` {fidelity!r} in `path` {str(folder)!r} "
+                         f"(expected {path.name}); it holds {', '.join(have) or 'no generated modules'}. "
+                         f"Write it with: knifeedge derive MODEL_FILE.py --out {folder}")
+    data = path.read_bytes()
+    digest = hashlib.sha256(data).hexdigest()[:16]
+    # a flat name (kernels import the right-hand side by it) that changes with the content
+    mod_name = f"knifeedge_model_{name}_{fidelity}_{digest}"
+    module = sys.modules.get(mod_name)
+    if module is None:
+        spec = importlib.util.spec_from_file_location(mod_name, path)
+        module = importlib.util.module_from_spec(spec)
+        sys.modules[mod_name] = module
+        try:
+            spec.loader.exec_module(module)
+        except BaseException:
+            del sys.modules[mod_name]
+            raise
+    if getattr(module, "MODEL", None) != name or getattr(module, "FIDELITY", None) != fidelity:
+        raise ValueError(f"{path} declares model {getattr(module, 'MODEL', None)!r} at fidelity "
+                         f"{getattr(module, 'FIDELITY', None)!r}, not {name!r} at {fidelity!r}")
+    return module, path, digest
+
+
+def available(path: str | Path | None = None) -> list:
+    """``(model, fidelity)`` pairs available built in, or in the folder ``path``."""
+    if path is None:
+        return sorted(MODULES)
+    folder = Path(path)
+    out = []
+    for p in sorted(folder.glob("*.py")):
+        for fid in ("full", "reduced", "amplitude"):
+            if p.stem.endswith("_" + fid):
+                out.append((p.stem[: -len(fid) - 1], fid))
+    return out
+
+
+def load(name: str, fidelity: str = "full", pose: bool = False, path: str | Path | None = None) -> Model:
     """Load a generated model.
 
     Parameters
     ----------
-    name : ``"single_mode"`` (paper section II), ``"two_mode"`` (section III) or
-        ``"chaplygin_sleigh"`` (the sleigh of section II.C, fidelity ``"full"`` only).
-    fidelity : ``"full"`` (exact consequences of the paper's Lagrangian and
-        constraints), ``"reduced"`` (small-angle truncation, the order of
-        the paper's ``FINAL1``/``FINAL2`` and ``eqs_2modes``) or
-        ``"amplitude"`` (the averaged slow flow of ``reduced``, paper
-        ``Chap3``: no pose, no multipliers; ``energy`` is its conserved
-        averaged energy).
-    pose : append ``("phi", "x", "y")`` to the state; only scenes that look at
-        the path on the table need it.
+    name : a built-in model (:data:`MODEL_NAMES`: ``"single_mode"``, paper
+        section II; ``"two_mode"``, section III; ``"chaplygin_sleigh"``,
+        section II.C) or, with ``path``, a model written there by
+        ``knifeedge derive``.
+    fidelity : ``"full"`` (exact consequences of the model's Lagrangian and
+        constraints), ``"reduced"`` (small-angle truncation) or
+        ``"amplitude"`` (the averaged slow flow of ``reduced``: no pose, no
+        multipliers; ``energy`` is its conserved averaged energy).  Each
+        model's module says what its fidelity is (``model.fidelity_doc``)
+        and where it holds (``model.validity``).
+    pose : append the pose coordinates (``model.pose_names``) to the state.
+    path : folder of modules written by ``knifeedge derive FILE --out path``
+        (default: the built-in models).  Such a model works like a built-in
+        one: every method, the compiled-kernel cache (keyed by the module's
+        content), sweeps and the CLI (``--path``).
     """
-    if not isinstance(name, str) or name not in MODEL_NAMES:
-        raise ValueError(f"unknown model `name` {name!r}; accepted: {', '.join(MODEL_NAMES)}")
-    if not isinstance(fidelity, str) or (name, fidelity) not in MODULES:
-        accepted = sorted(f for m, f in MODULES if m == name)
-        raise ValueError(f"unknown `fidelity` {fidelity!r} for {name}; accepted: {', '.join(accepted)}")
+    if not isinstance(name, str) or not name:
+        raise TypeError(f"model `name` must be a non-empty string, got {name!r}")
+    if not isinstance(fidelity, str):
+        raise TypeError(f"`fidelity` must be a string, got {fidelity!r}")
     if not isinstance(pose, (bool, np.bool_)):
         raise TypeError(f"`pose` must be True or False, got {pose!r}")
+    if path is not None:
+        if not isinstance(path, (str, Path)):
+            raise TypeError(f"`path` must be a folder (str or Path), got {type(path).__name__}")
+        folder = Path(path)
+        if not folder.is_dir():
+            raise ValueError(f"`path` {str(path)!r} is not a folder")
+        module, file, digest = _module_from_path(folder, name, fidelity)
+        key = (str(file), digest, bool(pose))
+        if key not in _CACHE:
+            _CACHE[key] = Model(module, bool(pose), source_path=file)
+        return _CACHE[key]
+    if name not in MODEL_NAMES:
+        raise ValueError(f"unknown model `name` {name!r}; accepted: {', '.join(MODEL_NAMES)} "
+                         f"(or a model of your own with `path=`)")
+    if (name, fidelity) not in MODULES:
+        accepted = sorted(f for m, f in MODULES if m == name)
+        raise ValueError(f"unknown `fidelity` {fidelity!r} for {name}; accepted: {', '.join(accepted)}")
     key = (name, fidelity, bool(pose))
     if key not in _CACHE:
-        _CACHE[key] = Model(name, fidelity, bool(pose))
+        module = importlib.import_module(f"{__package__}.generated.{MODULES[(name, fidelity)]}")
+        _CACHE[key] = Model(module, bool(pose))
     return _CACHE[key]

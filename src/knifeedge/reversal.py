@@ -35,9 +35,9 @@ two values.  For ``epsilon`` much below the maximum amplitudes
 """
 from __future__ import annotations
 
-import importlib
 import math
 import sys
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
@@ -45,8 +45,7 @@ from scipy.integrate import quad
 from scipy.optimize import brentq
 
 from . import _validate
-from .generated import MODULES
-from .models import Model
+from .models import Model, ValidityWarning, available, load
 
 
 @dataclass(frozen=True)
@@ -74,6 +73,12 @@ class ReversalPrediction:
         The invariant ``E = A_phi^2 + sum_i w_i A_i^2`` ((rad/time)^2).
     growth_rates, weights : ndarray, shape (n_modes,)
         ``c_i`` and ``w_i`` of the slow flow.
+    in_validity_domain : bool
+        False when the amplitudes the slow flow reaches (up to ``sqrt(E/w_i)``)
+        leave the domain where the amplitude equations hold (the amplitude
+        module's ``VALIDITY``); a :class:`~knifeedge.models.ValidityWarning`
+        is then issued and ``validity_message`` says so.
+    validity_message : str
     """
 
     first: float
@@ -84,13 +89,16 @@ class ReversalPrediction:
     energy: float
     growth_rates: np.ndarray
     weights: np.ndarray
+    in_validity_domain: bool = True
+    validity_message: str = ""
 
 
 def _amplitude_module(model: Model):
-    key = (model.name, "amplitude")
-    if key not in MODULES:
-        raise ValueError(f"`model` {model.name} has no amplitude equations; reversal times need a knife edge")
-    return importlib.import_module(f"{__package__}.generated.{MODULES[key]}")
+    folder = model.source_path.parent if model.source_path is not None else None
+    if (model.name, "amplitude") not in available(folder):
+        raise ValueError(f"`model` {model.name} has no amplitude equations (fidelity 'amplitude'); "
+                         f"reversal times need them")
+    return load(model.name, "amplitude", path=folder).module
 
 
 def initial_amplitudes(model: Model, p: np.ndarray, y0: np.ndarray) -> tuple[np.ndarray, float]:
@@ -102,9 +110,10 @@ def initial_amplitudes(model: Model, p: np.ndarray, y0: np.ndarray) -> tuple[np.
         names = model.closed_state_names
         return np.array([y0[names.index(n)] for n in model.tilt_names]), float(y0[names.index(model.spin_name)])
     omega = _amplitude_module(model).frequencies(p)
+    rate_of = dict(model.rate_pairs)
     amps = []
     for i, q in enumerate(model.tilt_names):
-        th, th_dot = y0[model.index(q)], y0[model.index(q + "_dot")]
+        th, th_dot = y0[model.index(q)], y0[model.index(rate_of[q])]
         amps.append(math.hypot(th, th_dot / omega[i]))
     return np.array(amps), float(y0[model.index(model.spin_name)])
 
@@ -323,5 +332,16 @@ def reversal_time(model: Model, p, y0, background: float = 0.0, n_intervals: int
         raise ValueError(f"`model` {model.name}: reversal theory needs one mode or two modes of opposite chirality")
     interval = float(np.mean(intervals[-2:]))
     energy = spin**2 + float(np.sum(w * amps**2))
+    peak = np.sqrt(energy / w)  # the largest amplitude each mode reaches on this level set
+    bounds = [mod.VALIDITY.get(n) for n in mod.TILT_NAMES]
+    excess = {n: float(a) for n, a, b in zip(mod.TILT_NAMES, np.maximum(peak, amps), bounds)
+              if b is not None and a > b}
+    message = ""
+    if excess:
+        message = ("the prediction leaves the domain where the amplitude equations hold ("
+                   + ", ".join(f"{n} reaches {v:.3g} > {mod.VALIDITY[n]:g}" for n, v in excess.items())
+                   + f"; {mod.VALIDITY_DOC}): simulate the full model instead")
+        warnings.warn(message, ValidityWarning, stacklevel=2)
     return ReversalPrediction(first=float(first), interval=interval, intervals=intervals, amplitudes=amps,
-                              spin=spin, energy=energy, growth_rates=c, weights=w)
+                              spin=spin, energy=energy, growth_rates=c, weights=w,
+                              in_validity_domain=not excess, validity_message=message)

@@ -12,13 +12,14 @@ argument); a failed integration is reported in ``success``/``status``/
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from . import _validate
 from .integrators import ALIASES, COMPILED_METHODS, Status, from_code, kernel
-from .models import Model
+from .models import Model, ValidityWarning
 
 #: the smallest relative tolerance accepted: below it the error estimate is round-off
 MIN_RTOL = 100 * np.finfo(float).eps
@@ -59,6 +60,11 @@ class SimulationResult:
         Accepted steps.
     nrejected : int
         Rejected steps (adaptive methods).
+    in_validity_domain : bool
+        False when the run left the domain where the model's fidelity holds
+        (``model.validity``); a :class:`~knifeedge.models.ValidityWarning`
+        is then issued and ``validity_message`` says which states left it.
+    validity_message : str
     """
 
     t: np.ndarray
@@ -75,6 +81,8 @@ class SimulationResult:
     outcome: Status = Status.SUCCESS
     nsteps: int = 0
     nrejected: int = 0
+    in_validity_domain: bool = True
+    validity_message: str = ""
 
     def __getitem__(self, name: str) -> np.ndarray:
         """Time series of the named state, e.g. ``r["phi_dot"]``."""
@@ -113,11 +121,10 @@ _PAIRS: dict = {}
 
 
 def _mode_pairs(model: Model) -> np.ndarray:
-    """``pair[i]``: the partner of a tilt and its rate (``theta`` <-> ``theta_dot``), else -1 (read-only)."""
+    """``pair[i]``: the partner of a coordinate and its rate (``model.rate_pairs``), else -1 (read-only)."""
     if model not in _PAIRS:
         pair = np.full(model.n_state, -1, dtype=np.int64)
-        for name in model.tilt_names:
-            rate = f"{name}_dot"
+        for name, rate in model.rate_pairs:
             if name in model.state_names and rate in model.state_names:
                 i, j = model.index(name), model.index(rate)
                 pair[i], pair[j] = j, i
@@ -126,12 +133,17 @@ def _mode_pairs(model: Model) -> np.ndarray:
     return _PAIRS[model]
 
 
+def _event_index(model: Model) -> int:
+    """Index of the state whose zero crossings are the reversals (``model.reversal_events``), -1 if none."""
+    return model.index(model.spin_name) if model.spin_name is not None else -1
+
+
 def _run_compiled(name: str):
     spec = COMPILED_METHODS[ALIASES.get(name, name)]
 
     def run(r: _Run):
         solve = kernel(r.model, name)
-        spin = r.model.index(r.model.spin_name)
+        spin = _event_index(r.model)
         every = r.t_eval is None
         t_eval = np.empty(0) if every else np.ascontiguousarray(r.t_eval)
         if spec.fixed_step:
@@ -157,7 +169,7 @@ def _run_scipy(scipy_method: str):
         from scipy.optimize import brentq
 
         solver_class = getattr(integrate, scipy_method)
-        k = r.model.index(r.model.spin_name)
+        k = _event_index(r.model)  # -1: the model has no reversal events
         rhs, p = r.model.rhs, r.p
 
         def fun(t, y):
@@ -168,7 +180,7 @@ def _run_scipy(scipy_method: str):
         ts, ys = ([r.t0], [r.y0.copy()]) if every else ([], [])
         i_eval = 0
         reversals = []
-        g = r.y0[k]
+        g = r.y0[k] if k >= 0 else 0.0
         outcome = Status.SUCCESS
         nsteps = 0
         eps4 = 4 * np.finfo(float).eps
@@ -186,8 +198,8 @@ def _run_scipy(scipy_method: str):
                 break
             nsteps += 1
             sol = None
-            g_new = y[k]
-            if (g <= 0 <= g_new) or (g >= 0 >= g_new):
+            g_new = y[k] if k >= 0 else 0.0
+            if k >= 0 and ((g <= 0 <= g_new) or (g >= 0 >= g_new)):
                 sol = solver.dense_output()
                 reversals.append(brentq(lambda s: sol(s)[k], t_old, t, xtol=eps4, rtol=eps4))
             g = g_new
@@ -405,8 +417,22 @@ def simulate(
     message = outcome.value
     if outcome is Status.NON_FINITE and t.size:
         message = f"{message} Last good state at t = {t[-1]:.6g}."
+    excess = model.validity_excess(y) if model.validity else {}
+    validity_message = ""
+    if excess:
+        validity_message = _validity_message(model, excess)
+        warnings.warn(validity_message, ValidityWarning, stacklevel=2)
     return SimulationResult(
         t=t, y=y, state_names=model.state_names, reversal_times=np.asarray(rev, dtype=float),
         success=outcome.success, status=outcome.code, message=message, nfev=int(nfev), method=method,
         model=model, p=p, outcome=outcome, nsteps=int(nsteps), nrejected=int(nrej),
+        in_validity_domain=not excess, validity_message=validity_message,
     )
+
+
+def _validity_message(model: Model, excess: dict) -> str:
+    """Which states left the domain of the fidelity, by how much, and what to use instead."""
+    parts = ", ".join(f"|{n}| reached {v:.3g} > {model.validity[n]:g}" for n, v in excess.items())
+    return (f"the run left the domain where {model.name} at fidelity {model.fidelity!r} holds ({parts}; "
+            f"{model.validity_doc or 'see model.validity'}); its results there are not those of the full model: "
+            f"use fidelity 'full'")
