@@ -268,7 +268,7 @@ def _base_run(target, params, y0, t_span, method, rtol, atol) -> RunSpec:
         run = RunSpec(model=m.name, fidelity=m.fidelity, pose=m.pose, params=dict(params) if isinstance(params, Mapping)
                       else dict(zip(m.param_names, params)),
                       y0=dict(y0) if isinstance(y0, Mapping) else dict(zip(m.state_names, y0)), t_span=t_span,
-                      path=getattr(m, "path", None))
+                      path=None if getattr(m, "source_path", None) is None else m.source_path.parent)
     else:
         raise TypeError(f"`scene_or_model` must be a Scene, a scene name, a RunSpec or a Model, got {type(target).__name__}")
     changes: dict[str, Any] = {}
@@ -312,13 +312,31 @@ def _columns(run: RunSpec) -> tuple:
 
 
 def _key(spec: RunSpec) -> dict:
-    """The inputs that identify a run (its output sampling does not)."""
+    """The inputs that identify a run (its output sampling does not).
+
+    For a model from a user's folder, the hash of its module's text is part
+    of the key: after ``knifeedge derive`` rewrites the model, its runs are new runs.
+    """
     d = spec.to_dict()
     d.pop("n_eval")
     for k in ("max_steps", "path"):  # absent when unset: run ids of earlier versions stay valid
         if d.get(k) is None:
             d.pop(k, None)
+    if spec.path is not None:
+        d["module_sha256"] = _module_hash(spec.path, spec.model, spec.fidelity)
     return d
+
+
+_MODULE_HASHES: dict = {}
+
+
+def _module_hash(folder: str, model: str, fidelity: str) -> str:
+    f = Path(folder) / f"{model}_{fidelity}.py"
+    stat = f.stat()
+    key = (str(f), stat.st_mtime_ns, stat.st_size)
+    if key not in _MODULE_HASHES:
+        _MODULE_HASHES[key] = hashlib.sha256(f.read_bytes()).hexdigest()
+    return _MODULE_HASHES[key]
 
 
 def _inputs(spec: RunSpec) -> dict:
