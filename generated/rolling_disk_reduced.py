@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk',
 constraints no_slip_along, no_slip_across) through derivation/engine.py and derivation/truncation.py.
-SymPy 1.14.0; input hash sha256:3f684b34da58e04041af0f07b062142280d59987c8bd23ef4af6622466857458
+SymPy 1.14.0; input hash sha256:eb8b7b6f2a2c5ddd69a8425e2af00f1d5d06632dd3fad08e587b7bb340b700f2
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table: heading q1, lean q2 from the vertical, rotation q3 about the axle, contact point (x, y).
 
@@ -62,7 +62,7 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '3f684b34da58e04041af0f07b062142280d59987c8bd23ef4af6622466857458'
+INPUT_HASH = 'eb8b7b6f2a2c5ddd69a8425e2af00f1d5d06632dd3fad08e587b7bb340b700f2'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 27, 'constants': 7, 'rhs_q': 22, 'rhs_pose': 32, 'rhs_pose_q': 27, 'pose_rates': 5, 'energy': 26, 'multipliers': 16}

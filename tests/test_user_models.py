@@ -212,3 +212,13 @@ def test_reversal_prediction_outside_small_tilts_warns_and_says_so():
         warnings.simplefilter("error")
         near = ke.reversal_time(m, m.default_params, m.default_state)
     assert near.in_validity_domain
+
+
+def test_model_specific_helpers_and_event_functions_reach_the_runtime(derived):
+    """`extra_source`/`exports` (presets, a state builder) and `events` (scalar functions of the state)."""
+    m = ke.load("damped_sleigh", path=derived)
+    assert m.exports == ("PRESETS", "initial_state")
+    assert m.module.PRESETS["light_damping"]["c"] == 0.05
+    np.testing.assert_array_equal(m.module.initial_state(0.2, 1.5), [0.2, 1.5])
+    assert m.event_names == ("heading_speed",)
+    assert m.event_values(np.array([0.2, 1.5]), m.params(m.default_params)) == pytest.approx([1.3])

@@ -275,8 +275,7 @@ class Model:
         ``energy(t) + integral_0^t power_dissipated dt = energy(0)`` along a run.
         ``y`` of shape (n_state,) or (n_state, n_times).
         """
-        y = np.asarray(y, dtype=float)
-        p = np.asarray(p, dtype=float)
+        y, p = self._states(y), self.check_params(p)
         if not self.has_dissipation:
             return 0.0 if y.ndim == 1 else np.zeros(y.shape[1])
         if y.ndim == 1:
@@ -300,7 +299,10 @@ class Model:
         """Values of the model's scalar events :attr:`event_names` at the state ``y``."""
         if not self.event_names:
             raise ValueError(f"{self.name} defines no event functions")
-        return self.module.event_values(np.asarray(y, dtype=float), np.asarray(p, dtype=float))
+        y = self._states(y)
+        if y.ndim != 1:
+            raise ValueError(f"`y` must be one state of shape ({len(self.closed_state_names)},), got shape {y.shape}")
+        return self.module.event_values(y, self.check_params(p))
 
     def validity_excess(self, y) -> dict:
         """States that leave :attr:`validity`: ``{name: largest |value| reached}`` (empty when inside).

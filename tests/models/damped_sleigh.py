@@ -36,5 +36,16 @@ MODEL = ModelSpec(
     time_unit="s",
     defaults={a: 0.5, k: 0.8, c: 0.3, v: 0.1, phi_dot: 1.0},
     reversal_events=(phi_dot,),
+    events={"heading_speed": phi_dot - v},
+    extra_source='''
+#: named parameter sets of this sleigh
+PRESETS = {"light_damping": {"a": 0.5, "k": 0.8, "c": 0.05}}
+
+
+def initial_state(speed, turn_rate):
+    """Closed state (v, phi_dot) from the speed along the axis and the turning rate."""
+    return np.array([float(speed), float(turn_rate)])
+''',
+    exports=("PRESETS", "initial_state"),
     description="Chaplygin sleigh with a viscous torque c*phi_dot about the contact point.",
 )
