@@ -406,3 +406,21 @@ def test_cli_simulate_runs_the_sleigh_from_its_module_defaults(capsys):
     # issue 9: the CLI takes default parameters and state from the generated module, for every model
     assert main(["simulate", "--model", "chaplygin_sleigh", "--fidelity", "full", "--t-end", "5"]) == 0
     assert "error" not in capsys.readouterr().err
+
+
+def test_sweep_grid_bounded_before_it_is_expanded():
+    """A grid of 1e8 points was expanded into memory (gigabytes) before any check."""
+    from knifeedge.scenes import get_scene
+    from knifeedge.sweep import MAX_RUNS, sweep
+
+    side = list(np.linspace(1.0, 2.0, 10_000))
+    with pytest.raises(ValueError, match="`grid` makes 1e\\+08 runs"):
+        sweep(get_scene("numerical"), {"D": side, "L": side})
+    assert 10_000 < MAX_RUNS < 10**8
+
+
+def test_scene_progress_must_be_callable():
+    from knifeedge.scenes import get_scene
+
+    with pytest.raises(TypeError, match="`progress`"):
+        get_scene("numerical")(progress=3)

@@ -225,6 +225,10 @@ def _cell(v) -> str:
 
 
 # -- the grid -----------------------------------------------------------------
+#: most runs one sweep may hold (its grid is expanded into memory before any work)
+MAX_RUNS = 1_000_000
+
+
 def _grid_points(grid) -> list:
     """``{name: values}`` -> Cartesian product; a sequence of mappings -> as given."""
     if isinstance(grid, Mapping):
@@ -240,6 +244,9 @@ def _grid_points(grid) -> list:
             if not v:
                 raise ValueError(f"`grid[{n!r}]` has no values")
             values.append(v)
+        n_runs = math.prod(len(v) for v in values)
+        if n_runs > MAX_RUNS:
+            raise ValueError(f"`grid` makes {n_runs:.3g} runs, more than the {MAX_RUNS} one sweep may hold")
         return [dict(zip(names, combo)) for combo in itertools.product(*values)]
     if isinstance(grid, Iterable) and not isinstance(grid, (str, bytes)):
         points = [dict(pt) if isinstance(pt, Mapping) else None for pt in grid]

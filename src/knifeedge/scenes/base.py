@@ -135,4 +135,6 @@ class Scene:
 
     def __call__(self, progress: Callable[[str], None] | None = None) -> SceneResult:
         """Run the scene: ``result = scene()``."""
+        if progress is not None and not callable(progress):
+            raise TypeError(f"`progress` must be None or a callable(message), got {progress!r}")
         return self.compute(self, progress or (lambda msg: None))
