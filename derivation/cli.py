@@ -63,7 +63,9 @@ def load_specs(path: str | Path) -> list:
     if not hasattr(module, "MODEL"):
         raise DeriveError(f"{path} defines no `MODEL` (a knifeedge.derive.ModelSpec or a list of them)")
     models = module.MODEL if isinstance(module.MODEL, (list, tuple)) else [module.MODEL]
-    bad = [type(m).__name__ for m in models if not isinstance(m, ModelSpec)]
+    from .rigid import RigidBody
+
+    bad = [type(m).__name__ for m in models if not isinstance(m, (ModelSpec, RigidBody))]
     if bad or not models:
         raise DeriveError(f"{path}: `MODEL` must be a ModelSpec or a non-empty list of them, got {bad or 'an empty list'}")
     names = [m.name for m in models]
@@ -75,7 +77,9 @@ def load_specs(path: str | Path) -> list:
 
 def project_specs() -> list:
     """The package's models (:data:`~knifeedge.derive.models.MODELS`) and the source tree's example models present."""
-    specs = list(models.MODELS.values())
+    from .rigid_models import MODELS as RIGID_MODELS
+
+    specs = list(models.MODELS.values()) + [RIGID_MODELS[k] for k in sorted(RIGID_MODELS)]
     return specs + [s for f in EXAMPLE_MODELS if (ROOT / f).is_file() for s in load_specs(ROOT / f)]
 
 
@@ -84,14 +88,17 @@ def derive_specs(specs, check: bool = True, log=None) -> dict:
     out = {}
     for spec in specs:
         if log:
-            log(f"deriving {spec.name} ({spec.defined_at})")
+            log(f"deriving {spec.name} ({spec.defined_at if isinstance(spec, ModelSpec) else spec.source})")
         try:
             systems = emit.build(spec)
-            if check:
+            if check and isinstance(spec, ModelSpec):
                 engine.check_symmetry(systems[(spec.name, "full")])
         except ModelSpecError as exc:
             raise DeriveError(str(exc)) from None
         except Exception as exc:  # noqa: BLE001 -- reported with the spec's line
+            if not isinstance(spec, ModelSpec):
+                raise DeriveError(f"{spec.name} ({spec.source}): the derivation failed: {type(exc).__name__}: {exc}") \
+                    from None
             raise DeriveError(spec.error_message(f"the derivation failed: {type(exc).__name__}: {exc}")) from None
         out.update(systems)
     return out

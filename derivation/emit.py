@@ -363,6 +363,9 @@ def module_source(system, fidelity: str, frequencies=None) -> str:
     """
     if isinstance(system, AmplitudeSystem):
         return amplitude_module_source(system, fidelity)
+    from . import rigid, rigid_emit  # rigid bodies: derivation/rigid.py
+    if isinstance(system, rigid.RollingSystem):
+        return rigid_emit.module_source(system, fidelity)
     spec = system.spec
     state = [str(s) for s in system.state]
     pose = [str(q) for q in spec.pose]
@@ -604,6 +607,9 @@ def _amplitude_defaults(system: AmplitudeSystem) -> dict:
 
 def build(spec: engine.ModelSpec) -> dict:
     """Derive one model at every fidelity of :data:`~derivation.fidelities.FIDELITIES` that applies to it."""
+    from . import rigid  # a rigid body (derivation/rigid.py) has the fidelity "full" only
+    if isinstance(spec, rigid.RigidBody):
+        return {(spec.name, "full"): rigid.derive(spec)}
     out = {}
     for fid in FIDELITIES.values():
         if not fid.applies(spec):

@@ -6,13 +6,15 @@ Produced by derivation/emit.py (make derive); SymPy 1.14.0.
 
 #: (model, fidelity) -> module name inside this package
 MODULES = {
+    ('celt', 'full'): 'celt_full',
     ('chaplygin_sleigh', 'full'): 'chaplygin_sleigh_full',
     ('rolling_disk', 'full'): 'rolling_disk_full',
-    ('rolling_disk', 'reduced'): 'rolling_disk_reduced',
+    ('rolling_disk_damped', 'full'): 'rolling_disk_damped_full',
     ('single_mode', 'amplitude'): 'single_mode_amplitude',
     ('single_mode', 'full'): 'single_mode_full',
     ('single_mode', 'reduced'): 'single_mode_reduced',
     ('two_mode', 'amplitude'): 'two_mode_amplitude',
     ('two_mode', 'full'): 'two_mode_full',
     ('two_mode', 'reduced'): 'two_mode_reduced',
+    ('two_mode_rigid', 'full'): 'two_mode_rigid_full',
 }

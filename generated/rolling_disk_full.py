@@ -3,23 +3,23 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:6cfd662734eab0df4684a292de35e24cb5b3ed6375d195243fedf3f12974ec80
+SymPy 1.14.0; input hash sha256:a5d9d33286e8a972d64906aa764503c46e669a0f79a5b204065f6d3ea66d3264
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table: heading q1, lean q2 from the vertical, rotation q3 about the axle, contact point (x, y).
 
 State vector ``s`` (closed state; the pose follows by quadrature):
     s[0] = q2           [rad]
-    s[1] = q2_dot       [rad/time]
-    s[2] = q1_dot       [rad/time]
-    s[3] = q3_dot       [rad/time]
+    s[1] = q1_dot       [rad/s]
+    s[2] = q2_dot       [rad/s]
+    s[3] = q3_dot       [rad/s]
 Pose-extended state (``*_pose`` functions) appends:
     s[4] = q1           [rad]
     s[5] = q3           [rad]
-    s[6] = x            [length]
-    s[7] = y            [length]
+    s[6] = x            [m]
+    s[7] = y            [m]
 Parameter vector ``p``:
-    p[0] = g            [length/time^2]
-    p[1] = r            [length]
+    p[0] = g            [m/s^2]
+    p[1] = r            [m]
 Multipliers (constraint forces in the normalization of the Lagrangian, e.g. per unit mass),
 in the order no_slip_along, no_slip_across.  Energy in the same normalization.
 """
@@ -32,37 +32,37 @@ MODEL = 'rolling_disk'
 FIDELITY = 'full'
 #: what this fidelity is
 FIDELITY_DOC = "exact consequences of the model's Lagrangian and constraints, nothing dropped"
-STATE_NAMES = ('q2', 'q2_dot', 'q1_dot', 'q3_dot')
+STATE_NAMES = ('q2', 'q1_dot', 'q2_dot', 'q3_dot')
 #: unit of each state (``time`` is the unit of t)
-STATE_UNITS = ('rad', 'rad/time', 'rad/time', 'rad/time')
+STATE_UNITS = ('rad', 'rad/s', 'rad/s', 'rad/s')
 POSE_NAMES = ('q1', 'q3', 'x', 'y')
-POSE_UNITS = ('rad', 'rad', 'length', 'length')
+POSE_UNITS = ('rad', 'rad', 'm', 'm')
 #: what the pose coordinates mean
-POSE_DOC = 'q1: heading; q3: rotation about the axle; (x, y): contact point on the table'
+POSE_DOC = 'heading q1, rotation q3 about the axle, contact point (x, y) on the table'
 PARAM_NAMES = ('g', 'r')
-PARAM_UNITS = ('length/time^2', 'length')
+PARAM_UNITS = ('m/s^2', 'm')
 #: admissible values of each parameter: 'positive' (> 0) or 'real' (any finite value)
 PARAM_DOMAINS = ('positive', 'positive')
 #: default parameter set and initial state (the CLI's defaults); empty if the model declares none
-DEFAULT_PARAMS = {'g': 1.0, 'r': 1.0}
-DEFAULT_STATE = {'q2': 0.1, 'q2_dot': 0.0, 'q1_dot': 0.0, 'q3_dot': 2.0}
+DEFAULT_PARAMS = {'g': 9.81, 'r': 0.1}
+DEFAULT_STATE = {'q2': 0.05, 'q1_dot': 0.0, 'q2_dot': 0.0, 'q3_dot': 8.0}
 #: (coordinate, rate) pairs of the state
 RATE_PAIRS = (('q2', 'q2_dot'),)
 #: the small coordinates (tilts) of the small-angle fidelities
-TILT_NAMES = ('q2',)
+TILT_NAMES = ()
 #: states (or EVENT_NAMES) whose zero crossings are reported as ``reversal_times``
 REVERSAL_EVENTS = ()
 #: scalar functions of the state returned by ``event_values(s, p)``
 EVENT_NAMES = ()
 #: largest |value| of each named state where this fidelity holds (empty: everywhere)
-VALIDITY = {}
-VALIDITY_DOC = ''
+VALIDITY = {'q2': 1.5707963267948966}
+VALIDITY_DOC = 'the disk lies flat on the table at |q2| = pi/2; beyond, it would pass through it'
 MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 #: non-conservative forces: the module has ``power_dissipated(s, p)``
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '6cfd662734eab0df4684a292de35e24cb5b3ed6375d195243fedf3f12974ec80'
+INPUT_HASH = 'a5d9d33286e8a972d64906aa764503c46e669a0f79a5b204065f6d3ea66d3264'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 129, 'constants': 7, 'rhs_q': 125, 'rhs_pose': 134, 'rhs_pose_q': 130, 'pose_rates': 5, 'energy': 45, 'multipliers': 113}
@@ -72,45 +72,45 @@ OP_COUNTS = {'rhs': 129, 'constants': 7, 'rhs_q': 125, 'rhs_pose': 134, 'rhs_pos
 def rhs_into(t, s, p, ds):
     """Write d(state)/dt into ``ds`` (129 operations)."""
     q2 = s[0]
-    q2_dot = s[1]
-    q1_dot = s[2]
+    q1_dot = s[1]
+    q2_dot = s[2]
     q3_dot = s[3]
     g = p[0]
     r = p[1]
     _c0 = math.sin(q2)
-    _c1 = (_c0*_c0*_c0*_c0)
+    _c1 = _c0**6
     _c2 = math.cos(q2)
-    _c3 = (_c2*_c2*_c2*_c2)
-    _c4 = _c0**6
-    _c5 = _c2**6
-    _c6 = (_c2*_c2)
-    _c7 = (_c0*_c0)
-    _c8 = _c6*_c7
-    _c9 = _c3*_c7
-    _c10 = _c1*_c6
-    _c11 = 1/(_c1 + 12*_c10 + _c3 + 4*_c4 + 4*_c5 + 2*_c8 + 12*_c9)
-    _c12 = _c0**5
-    _c13 = 4*g
-    _c14 = _c0*_c3
-    _c15 = 6*q3_dot
-    _c16 = q1_dot*r
-    _c17 = _c15*_c16
-    _c18 = (_c0*_c0*_c0)
-    _c19 = _c18*_c6
-    _c20 = _c2**5
-    _c21 = (q1_dot*q1_dot)*r
-    _c22 = 5*_c21
-    _c23 = 18*_c16*q3_dot
-    _c24 = (_c2*_c2*_c2)
-    _c25 = _c11*q2_dot/_c2
+    _c3 = _c2**6
+    _c4 = (_c0*_c0)
+    _c5 = (_c2*_c2*_c2*_c2)
+    _c6 = _c4*_c5
+    _c7 = (_c2*_c2)
+    _c8 = (_c0*_c0*_c0*_c0)
+    _c9 = _c7*_c8
+    _c10 = _c4*_c7
+    _c11 = 1/(4*_c1 + 2*_c10 + 4*_c3 + _c5 + 12*_c6 + _c8 + 12*_c9)
+    _c12 = _c11*q2_dot/_c2
+    _c13 = _c0**5
+    _c14 = 4*g
+    _c15 = _c0*_c5
+    _c16 = 6*q3_dot
+    _c17 = q1_dot*r
+    _c18 = _c16*_c17
+    _c19 = (_c0*_c0*_c0)
+    _c20 = _c19*_c7
+    _c21 = _c2**5
+    _c22 = (q1_dot*q1_dot)*r
+    _c23 = 5*_c22
+    _c24 = 18*_c17*q3_dot
+    _c25 = (_c2*_c2*_c2)
     _c26 = 5*q1_dot
     _c27 = 20*q1_dot
     _c28 = 24*q3_dot
     _c29 = 72*q3_dot
     ds[0] = q2_dot
-    ds[1] = _c11*(_c0*_c20*_c22 + _c1*_c23*_c24 + _c12*_c13 + _c12*_c2*_c22 + _c13*_c14 + _c17*_c2**7 + _c17*_c2*_c4 + 10*_c18*_c21*_c24 + 8*_c19*g + _c20*_c23*_c7)/r
-    ds[2] = -2*_c25*q3_dot*(4*_c0**8 + 24*_c1*_c3 + 3*_c10 + 4*_c2**8 + 16*_c4*_c6 + _c4 + 16*_c5*_c7 + _c5 + 3*_c9)
-    ds[3] = ((1.0/3.0))*_c25*(_c0**7*_c28 + _c0*_c28*_c5 - _c10*_c27 + _c12*_c15 + _c12*_c29*_c6 + _c14*_c15 + _c18*_c29*_c3 + 12*_c19*q3_dot - _c26*_c3 - _c26*_c8 - _c27*_c5 - 40*_c9*q1_dot)
+    ds[1] = -2*_c12*q3_dot*(4*_c0**8 + 16*_c1*_c7 + _c1 + 4*_c2**8 + 16*_c3*_c4 + _c3 + 24*_c5*_c8 + 3*_c6 + 3*_c9)
+    ds[2] = _c11*(_c0*_c21*_c23 + _c1*_c18*_c2 + _c13*_c14 + _c13*_c2*_c23 + _c14*_c15 + _c18*_c2**7 + 10*_c19*_c22*_c25 + 8*_c20*g + _c21*_c24*_c4 + _c24*_c25*_c8)/r
+    ds[3] = ((1.0/3.0))*_c12*(_c0**7*_c28 + _c0*_c28*_c3 - _c10*_c26 + _c13*_c16 + _c13*_c29*_c7 + _c15*_c16 + _c19*_c29*_c5 + 12*_c20*q3_dot - _c26*_c5 - _c27*_c3 - _c27*_c9 - 40*_c6*q1_dot)
 
 
 @njit(cache=True)
@@ -143,8 +143,8 @@ def constants(p):
 def rhs_q_into(t, s, q, ds):
     """``rhs_into`` with ``q = constants(p)`` in place of ``p`` (125 operations)."""
     q2 = s[0]
-    q2_dot = s[1]
-    q1_dot = s[2]
+    q1_dot = s[1]
+    q2_dot = s[2]
     q3_dot = s[3]
     g = q[0]
     r = q[1]
@@ -156,46 +156,46 @@ def rhs_q_into(t, s, q, ds):
     _k5 = q[7]
     _k6 = q[8]
     _c0 = math.sin(q2)
-    _c1 = (_c0*_c0*_c0*_c0)
+    _c1 = _c0**6
     _c2 = math.cos(q2)
-    _c3 = (_c2*_c2*_c2*_c2)
-    _c4 = _c0**6
-    _c5 = _c2**6
-    _c6 = (_c2*_c2)
-    _c7 = (_c0*_c0)
-    _c8 = _c6*_c7
-    _c9 = _c3*_c7
-    _c10 = _c1*_c6
-    _c11 = 1/(_c1 + 12*_c10 + _c3 + 4*_c4 + 4*_c5 + 2*_c8 + 12*_c9)
-    _c12 = _c0**5
-    _c13 = _c0*_c3
-    _c14 = q1_dot*q3_dot
-    _c15 = _c14*_k3
-    _c16 = (_c0*_c0*_c0)
-    _c17 = _c16*_c6
-    _c18 = _c2**5
-    _c19 = (q1_dot*q1_dot)
-    _c20 = _c19*_k2
-    _c21 = _c14*_k5
-    _c22 = (_c2*_c2*_c2)
-    _c23 = _c11*q2_dot/_c2
+    _c3 = _c2**6
+    _c4 = (_c0*_c0)
+    _c5 = (_c2*_c2*_c2*_c2)
+    _c6 = _c4*_c5
+    _c7 = (_c2*_c2)
+    _c8 = (_c0*_c0*_c0*_c0)
+    _c9 = _c7*_c8
+    _c10 = _c4*_c7
+    _c11 = 1/(4*_c1 + 2*_c10 + 4*_c3 + _c5 + 12*_c6 + _c8 + 12*_c9)
+    _c12 = _c11*q2_dot/_c2
+    _c13 = _c0**5
+    _c14 = _c0*_c5
+    _c15 = q1_dot*q3_dot
+    _c16 = _c15*_k3
+    _c17 = (_c0*_c0*_c0)
+    _c18 = _c17*_c7
+    _c19 = _c2**5
+    _c20 = (q1_dot*q1_dot)
+    _c21 = _c20*_k2
+    _c22 = _c15*_k5
+    _c23 = (_c2*_c2*_c2)
     _c24 = 5*q1_dot
     _c25 = 20*q1_dot
     _c26 = 6*q3_dot
     _c27 = 24*q3_dot
     _c28 = 72*q3_dot
     ds[0] = q2_dot
-    ds[1] = _c11*_k6*(_c0*_c18*_c20 + _c1*_c21*_c22 + _c12*_c2*_c20 + _c12*_k0 + _c13*_k0 + _c15*_c2**7 + _c15*_c2*_c4 + _c16*_c19*_c22*_k4 + _c17*_k1 + _c18*_c21*_c7)
-    ds[2] = -2*_c23*q3_dot*(4*_c0**8 + 24*_c1*_c3 + 3*_c10 + 4*_c2**8 + 16*_c4*_c6 + _c4 + 16*_c5*_c7 + _c5 + 3*_c9)
-    ds[3] = ((1.0/3.0))*_c23*(_c0**7*_c27 + _c0*_c27*_c5 - _c10*_c25 + _c12*_c26 + _c12*_c28*_c6 + _c13*_c26 + _c16*_c28*_c3 + 12*_c17*q3_dot - _c24*_c3 - _c24*_c8 - _c25*_c5 - 40*_c9*q1_dot)
+    ds[1] = -2*_c12*q3_dot*(4*_c0**8 + 16*_c1*_c7 + _c1 + 4*_c2**8 + 16*_c3*_c4 + _c3 + 24*_c5*_c8 + 3*_c6 + 3*_c9)
+    ds[2] = _c11*_k6*(_c0*_c19*_c21 + _c1*_c16*_c2 + _c13*_c2*_c21 + _c13*_k0 + _c14*_k0 + _c16*_c2**7 + _c17*_c20*_c23*_k4 + _c18*_k1 + _c19*_c22*_c4 + _c22*_c23*_c8)
+    ds[3] = ((1.0/3.0))*_c12*(_c0**7*_c27 + _c0*_c27*_c3 - _c10*_c24 + _c13*_c26 + _c13*_c28*_c7 + _c14*_c26 + _c17*_c28*_c5 + 12*_c18*q3_dot - _c24*_c5 - _c25*_c3 - _c25*_c9 - 40*_c6*q1_dot)
 
 
 @njit(cache=True)
 def rhs_pose_into(t, s, p, ds):
     """Write d(state, pose)/dt into ``ds`` (134 operations)."""
     q2 = s[0]
-    q2_dot = s[1]
-    q1_dot = s[2]
+    q1_dot = s[1]
+    q2_dot = s[2]
     q3_dot = s[3]
     q1 = s[4]
     q3 = s[5]
@@ -204,43 +204,43 @@ def rhs_pose_into(t, s, p, ds):
     g = p[0]
     r = p[1]
     _c0 = math.sin(q2)
-    _c1 = (_c0*_c0*_c0*_c0)
+    _c1 = _c0**6
     _c2 = math.cos(q2)
-    _c3 = (_c2*_c2*_c2*_c2)
-    _c4 = _c0**6
-    _c5 = _c2**6
-    _c6 = (_c2*_c2)
-    _c7 = (_c0*_c0)
-    _c8 = _c6*_c7
-    _c9 = _c3*_c7
-    _c10 = _c1*_c6
-    _c11 = 1/(_c1 + 12*_c10 + _c3 + 4*_c4 + 4*_c5 + 2*_c8 + 12*_c9)
-    _c12 = _c0**5
-    _c13 = 4*g
-    _c14 = _c0*_c3
-    _c15 = 6*q3_dot
-    _c16 = _c15*q1_dot*r
-    _c17 = (_c0*_c0*_c0)
-    _c18 = _c17*_c6
-    _c19 = _c2**5
-    _c20 = (q1_dot*q1_dot)*r
-    _c21 = 5*_c20
-    _c22 = q3_dot*r
-    _c23 = 18*_c22*q1_dot
-    _c24 = (_c2*_c2*_c2)
-    _c25 = _c11*q2_dot/_c2
+    _c3 = _c2**6
+    _c4 = (_c0*_c0)
+    _c5 = (_c2*_c2*_c2*_c2)
+    _c6 = _c4*_c5
+    _c7 = (_c2*_c2)
+    _c8 = (_c0*_c0*_c0*_c0)
+    _c9 = _c7*_c8
+    _c10 = _c4*_c7
+    _c11 = 1/(4*_c1 + 2*_c10 + 4*_c3 + _c5 + 12*_c6 + _c8 + 12*_c9)
+    _c12 = _c11*q2_dot/_c2
+    _c13 = _c0**5
+    _c14 = 4*g
+    _c15 = _c0*_c5
+    _c16 = 6*q3_dot
+    _c17 = _c16*q1_dot*r
+    _c18 = (_c0*_c0*_c0)
+    _c19 = _c18*_c7
+    _c20 = _c2**5
+    _c21 = (q1_dot*q1_dot)*r
+    _c22 = 5*_c21
+    _c23 = q3_dot*r
+    _c24 = 18*_c23*q1_dot
+    _c25 = (_c2*_c2*_c2)
     _c26 = 5*q1_dot
     _c27 = 20*q1_dot
     _c28 = 24*q3_dot
     _c29 = 72*q3_dot
     ds[0] = q2_dot
-    ds[1] = _c11*(_c0*_c19*_c21 + _c1*_c23*_c24 + _c12*_c13 + _c12*_c2*_c21 + _c13*_c14 + _c16*_c2**7 + _c16*_c2*_c4 + 10*_c17*_c20*_c24 + 8*_c18*g + _c19*_c23*_c7)/r
-    ds[2] = -2*_c25*q3_dot*(4*_c0**8 + 24*_c1*_c3 + 3*_c10 + 4*_c2**8 + 16*_c4*_c6 + _c4 + 16*_c5*_c7 + _c5 + 3*_c9)
-    ds[3] = ((1.0/3.0))*_c25*(_c0**7*_c28 + _c0*_c28*_c5 - _c10*_c27 + _c12*_c15 + _c12*_c29*_c6 + _c14*_c15 + _c17*_c29*_c3 + 12*_c18*q3_dot - _c26*_c3 - _c26*_c8 - _c27*_c5 - 40*_c9*q1_dot)
+    ds[1] = -2*_c12*q3_dot*(4*_c0**8 + 16*_c1*_c7 + _c1 + 4*_c2**8 + 16*_c3*_c4 + _c3 + 24*_c5*_c8 + 3*_c6 + 3*_c9)
+    ds[2] = _c11*(_c0*_c20*_c22 + _c1*_c17*_c2 + _c13*_c14 + _c13*_c2*_c22 + _c14*_c15 + _c17*_c2**7 + 10*_c18*_c21*_c25 + 8*_c19*g + _c20*_c24*_c4 + _c24*_c25*_c8)/r
+    ds[3] = ((1.0/3.0))*_c12*(_c0**7*_c28 + _c0*_c28*_c3 - _c10*_c26 + _c13*_c16 + _c13*_c29*_c7 + _c15*_c16 + _c18*_c29*_c5 + 12*_c19*q3_dot - _c26*_c5 - _c27*_c3 - _c27*_c9 - 40*_c6*q1_dot)
     ds[4] = q1_dot
     ds[5] = q3_dot
-    ds[6] = _c22*math.cos(q1)
-    ds[7] = _c22*math.sin(q1)
+    ds[6] = _c23*math.cos(q1)
+    ds[7] = _c23*math.sin(q1)
 
 
 @njit(cache=True)
@@ -255,8 +255,8 @@ def rhs_pose(t, s, p):
 def rhs_pose_q_into(t, s, q, ds):
     """``rhs_pose_into`` with ``q = constants(p)`` in place of ``p`` (130 operations)."""
     q2 = s[0]
-    q2_dot = s[1]
-    q1_dot = s[2]
+    q1_dot = s[1]
+    q2_dot = s[2]
     q3_dot = s[3]
     q1 = s[4]
     q3 = s[5]
@@ -272,29 +272,29 @@ def rhs_pose_q_into(t, s, q, ds):
     _k5 = q[7]
     _k6 = q[8]
     _c0 = math.sin(q2)
-    _c1 = (_c0*_c0*_c0*_c0)
+    _c1 = _c0**6
     _c2 = math.cos(q2)
-    _c3 = (_c2*_c2*_c2*_c2)
-    _c4 = _c0**6
-    _c5 = _c2**6
-    _c6 = (_c2*_c2)
-    _c7 = (_c0*_c0)
-    _c8 = _c6*_c7
-    _c9 = _c3*_c7
-    _c10 = _c1*_c6
-    _c11 = 1/(_c1 + 12*_c10 + _c3 + 4*_c4 + 4*_c5 + 2*_c8 + 12*_c9)
-    _c12 = _c0**5
-    _c13 = _c0*_c3
-    _c14 = q1_dot*q3_dot
-    _c15 = _c14*_k3
-    _c16 = (_c0*_c0*_c0)
-    _c17 = _c16*_c6
-    _c18 = _c2**5
-    _c19 = (q1_dot*q1_dot)
-    _c20 = _c19*_k2
-    _c21 = _c14*_k5
-    _c22 = (_c2*_c2*_c2)
-    _c23 = _c11*q2_dot/_c2
+    _c3 = _c2**6
+    _c4 = (_c0*_c0)
+    _c5 = (_c2*_c2*_c2*_c2)
+    _c6 = _c4*_c5
+    _c7 = (_c2*_c2)
+    _c8 = (_c0*_c0*_c0*_c0)
+    _c9 = _c7*_c8
+    _c10 = _c4*_c7
+    _c11 = 1/(4*_c1 + 2*_c10 + 4*_c3 + _c5 + 12*_c6 + _c8 + 12*_c9)
+    _c12 = _c11*q2_dot/_c2
+    _c13 = _c0**5
+    _c14 = _c0*_c5
+    _c15 = q1_dot*q3_dot
+    _c16 = _c15*_k3
+    _c17 = (_c0*_c0*_c0)
+    _c18 = _c17*_c7
+    _c19 = _c2**5
+    _c20 = (q1_dot*q1_dot)
+    _c21 = _c20*_k2
+    _c22 = _c15*_k5
+    _c23 = (_c2*_c2*_c2)
     _c24 = 5*q1_dot
     _c25 = 20*q1_dot
     _c26 = 6*q3_dot
@@ -302,9 +302,9 @@ def rhs_pose_q_into(t, s, q, ds):
     _c28 = 72*q3_dot
     _c29 = q3_dot*r
     ds[0] = q2_dot
-    ds[1] = _c11*_k6*(_c0*_c18*_c20 + _c1*_c21*_c22 + _c12*_c2*_c20 + _c12*_k0 + _c13*_k0 + _c15*_c2**7 + _c15*_c2*_c4 + _c16*_c19*_c22*_k4 + _c17*_k1 + _c18*_c21*_c7)
-    ds[2] = -2*_c23*q3_dot*(4*_c0**8 + 24*_c1*_c3 + 3*_c10 + 4*_c2**8 + 16*_c4*_c6 + _c4 + 16*_c5*_c7 + _c5 + 3*_c9)
-    ds[3] = ((1.0/3.0))*_c23*(_c0**7*_c27 + _c0*_c27*_c5 - _c10*_c25 + _c12*_c26 + _c12*_c28*_c6 + _c13*_c26 + _c16*_c28*_c3 + 12*_c17*q3_dot - _c24*_c3 - _c24*_c8 - _c25*_c5 - 40*_c9*q1_dot)
+    ds[1] = -2*_c12*q3_dot*(4*_c0**8 + 16*_c1*_c7 + _c1 + 4*_c2**8 + 16*_c3*_c4 + _c3 + 24*_c5*_c8 + 3*_c6 + 3*_c9)
+    ds[2] = _c11*_k6*(_c0*_c19*_c21 + _c1*_c16*_c2 + _c13*_c2*_c21 + _c13*_k0 + _c14*_k0 + _c16*_c2**7 + _c17*_c20*_c23*_k4 + _c18*_k1 + _c19*_c22*_c4 + _c22*_c23*_c8)
+    ds[3] = ((1.0/3.0))*_c12*(_c0**7*_c27 + _c0*_c27*_c3 - _c10*_c24 + _c13*_c26 + _c13*_c28*_c7 + _c14*_c26 + _c17*_c28*_c5 + 12*_c18*q3_dot - _c24*_c5 - _c25*_c3 - _c25*_c9 - 40*_c6*q1_dot)
     ds[4] = q1_dot
     ds[5] = q3_dot
     ds[6] = _c29*math.cos(q1)
@@ -316,8 +316,8 @@ def pose_rates(s, p):
     """Return the rates (q1_dot, q3_dot, x_dot, y_dot) of the pose at the pose-extended state ``s`` (5 operations)."""
     out = np.empty(4)
     q2 = s[0]
-    q2_dot = s[1]
-    q1_dot = s[2]
+    q1_dot = s[1]
+    q2_dot = s[2]
     q3_dot = s[3]
     q1 = s[4]
     q3 = s[5]
@@ -337,8 +337,8 @@ def pose_rates(s, p):
 def energy(s, p):
     """Energy per unit mass (45 operations)."""
     q2 = s[0]
-    q2_dot = s[1]
-    q1_dot = s[2]
+    q1_dot = s[1]
+    q2_dot = s[2]
     q3_dot = s[3]
     g = p[0]
     r = p[1]
@@ -361,8 +361,8 @@ def multipliers(s, p):
     """Lagrange multipliers (contact forces per unit mass) no_slip_along, no_slip_across (113 operations)."""
     out = np.empty(2)
     q2 = s[0]
-    q2_dot = s[1]
-    q1_dot = s[2]
+    q1_dot = s[1]
+    q2_dot = s[2]
     q3_dot = s[3]
     g = p[0]
     r = p[1]

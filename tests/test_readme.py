@@ -7,6 +7,7 @@ from pathlib import Path
 
 import pytest
 
+import knifeedge as ke
 from knifeedge.cli import main
 
 README = Path(__file__).resolve().parents[1] / "README.md"
@@ -38,4 +39,4 @@ def test_readme_shell_commands_run(tmp_path, monkeypatch, capsys):
     for line in commands:
         assert main(shlex.split(line)[1:]) == 0, line
     assert (tmp_path / "figures" / "index.html").exists()
-    assert len(list((tmp_path / "figures").glob("*.png"))) == 7
+    assert len(list((tmp_path / "figures").glob("*.png"))) == len(ke.scene_names())

@@ -32,9 +32,9 @@ def test_every_scene_says_what_it_uses_and_why(name):
     assert set(s.run.y0) == set(m.closed_state_names)
 
 
-def test_only_table_path_carries_the_pose():
+def test_only_the_path_scenes_carry_the_pose():
     with_pose = [n for n in SCENE_NAMES if any(pose for _, _, pose in ke.scene(n).uses)]
-    assert with_pose == ["table_path"]
+    assert with_pose == ["table_path", "rolling_disk"]   # the paths on the table
 
 
 def test_scene_variations_are_one_line():

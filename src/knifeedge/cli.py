@@ -303,8 +303,7 @@ def simulate_cmd(args) -> int:
     y0 = {**default_state(m), **{k: v for k, v in values.items() if k in m.state_names}}
     lacking = [n for n in m.param_names if n not in p] + [n for n in m.state_names if n not in y0]
     if lacking:
-        raise ValueError(f"`--set`: {m.name} has no default for {lacking}: give them, e.g. --set "
-                         + " ".join(f"{n}=1" for n in lacking))
+        raise ValueError(f"{m.name} declares no default for {lacking}: give them with `--set NAME=VALUE`")
     t_eval = np.linspace(args.t_start, args.t_end, args.n_eval)
     r = simulate(m, y0, (args.t_start, args.t_end), p, method=args.method, rtol=args.rtol, atol=args.atol,
                  t_eval=t_eval, max_step=args.max_step, h=args.h, max_steps=args.max_steps,

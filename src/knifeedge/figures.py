@@ -20,7 +20,8 @@ from .scenes import SCENE_NAMES, get_scene
 from .scenes.base import format_number
 
 #: heaviest first, so that the parallel run ends sooner
-_ORDER = ("numerical2", "model_fidelity", "tinversion", "table_path", "ellipses", "amplitudes", "numerical")
+_ORDER = ("numerical2", "knife_edge_rigid", "model_fidelity", "tinversion", "knife_edge_vs_celt", "celt", "table_path", "ellipses",
+          "celt_schoemer", "amplitudes", "numerical")
 #: scenes whose run is also animated, with the animation's settings (modest size and frame count)
 ANIMATIONS = {
     "numerical": {"frames": 150, "fps": 12.5, "size": (8.0, 4.5), "dpi": 70},

@@ -114,6 +114,9 @@ class Model:
         self.has_dissipation: bool = bool(mod.HAS_DISSIPATION)
         self.exports: tuple = mod.EXPORTS
         self._positive = tuple(d == "positive" for d in mod.PARAM_DOMAINS)
+        self._nonnegative = tuple(d == "nonnegative" for d in mod.PARAM_DOMAINS)
+        #: named parameter sets the module ships (``preset``)
+        self.preset_names: tuple = tuple(sorted(getattr(mod, "PRESETS", {})))
         self.rhs = mod.rhs_pose if self.pose else mod.rhs
         self.rhs_into = mod.rhs_pose_into if self.pose else mod.rhs_into
 
@@ -160,7 +163,43 @@ class Model:
             out[i] = _finite_float(values[n], f"parameter `{n}`")
             if self._positive[i] and not out[i] > 0:
                 raise ValueError(f"parameter `{n}` must be positive, got {values[n]!r}")
+            if self._nonnegative[i] and not out[i] >= 0:
+                raise ValueError(f"parameter `{n}` must be nonnegative, got {values[n]!r}")
         return out
+
+    def preset(self, name: str, /, **overrides) -> np.ndarray:
+        """Validated parameter vector of a named parameter set the module ships; keywords override.
+
+        ``m.preset("kane_levinson_1982", sigma=1e-4)``; the names are in :attr:`preset_names`.
+        """
+        presets = getattr(self.module, "PRESETS", {})
+        if not isinstance(name, str) or name not in presets:
+            accepted = ", ".join(self.preset_names) or "none"
+            raise ValueError(f"unknown preset `name` {name!r} for {self.name}; accepted: {accepted}")
+        unknown = [k for k in overrides if k not in self.param_names]
+        if unknown:
+            raise ValueError(f"unknown parameters {unknown} in the overrides of preset {name!r}; "
+                             f"expected some of {self.param_names}")
+        return self.params({**presets[name], **overrides})
+
+    def initial_state(self, **physical) -> np.ndarray:
+        """Initial state from a physical description, through the module's ``initial_state``.
+
+        The keywords are the module's (for a rigid body: ``n0``, the upward vertical in body axes,
+        normalized; ``omega0``, the angular velocity in body axes).  With ``pose=True`` the pose
+        (zero unless ``pose=(...)`` is given) is appended.
+        """
+        build = getattr(self.module, "initial_state", None)
+        if build is None:
+            raise ValueError(f"{self.name} at fidelity {self.fidelity!r} has no physical initial-state builder; "
+                             "use `state(...)`")
+        if self.pose:
+            physical.setdefault("pose", (0.0,) * len(self.pose_names))
+        elif physical.get("pose") is not None:
+            raise ValueError("`pose` needs a model loaded with `pose=True`")
+        else:
+            physical.pop("pose", None)
+        return self.check_state(build(**physical))
 
     def check_params(self, p) -> np.ndarray:
         """Validate a parameter vector or mapping; returns a float64 array."""
@@ -172,8 +211,8 @@ class Model:
                 f"parameters `p` must have shape ({len(self.param_names)},) for {self.param_names}, got {arr.shape}"
             )
         values = arr.tolist()
-        for positive, v in zip(self._positive, values):
-            if not math.isfinite(v) or (positive and not v > 0):
+        for positive, nonneg, v in zip(self._positive, self._nonnegative, values):
+            if not math.isfinite(v) or (positive and not v > 0) or (nonneg and not v >= 0):
                 return self.params(dict(zip(self.param_names, values)))  # raises, naming the parameter
         return np.array(values)
 

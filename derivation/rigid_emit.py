@@ -1,0 +1,232 @@
+"""Emitter of rigid-body modules (:mod:`derivation.rigid`): the common right-hand side plus rigid-body data.
+
+A rigid module has what every generated module has (``rhs``/``rhs_into``/
+``constants``/``rhs_q_into`` and the pose variants, ``pose_rates``,
+``energy``, ``multipliers``) and, as data and plain functions the runtime
+reads generically: units (``STATE_UNITS``, ``PARAM_UNITS``), admissible
+parameter values (``PARAM_DOMAINS``), named parameter sets (``PRESETS`` with
+``PRESET_SOURCES``), ``initial_state(n0, omega0)`` from the physical
+description, and ``power_dissipated(s, p)``.
+"""
+from __future__ import annotations
+
+import hashlib
+import inspect
+import sys
+from pathlib import Path
+
+import sympy as sp
+
+from . import drawing, emit, rigid
+from .emit import _cse_block, _rhs_source, _unpack
+
+
+def input_hash(system: rigid.RollingSystem, fidelity: str) -> str:
+    """SHA-256 of the body's description, the front end's and emitters' sources and SymPy's version."""
+    body, spec = system.body, system.spec
+    h = hashlib.sha256()
+    model_file = sys.modules.get(body.source)
+    for part in (
+        spec.name, fidelity, sp.__version__, sp.srepr(spec.lagrangian), *(sp.srepr(c) for c in spec.constraints),
+        sp.srepr(sp.Matrix(body.inertia)), sp.srepr(body.sigma), repr(sorted(body.presets.items())),
+        inspect.getsource(rigid), inspect.getsource(model_file) if model_file else "", Path(__file__).read_text(),
+        Path(emit.__file__).read_text(), drawing.source_text(), repr(sorted(body.param_units.items())),
+        repr(sorted(body.param_domains.items())), body.description,
+    ):
+        h.update(part.encode())
+        h.update(b"\0")
+    return h.hexdigest()
+
+
+_INITIAL_STATE = '''
+
+def initial_state(n0=(0.0, 0.0, 1.0), omega0=(0.0, 0.0, 0.0), pose=None):
+    """Closed state (or pose-extended state) from the physical description.
+
+    Parameters
+    ----------
+    n0 : upward vertical in body axes (normalized here); for tilts ``al``
+        (about the body x axis) and ``be`` (about the body y axis),
+        ``n0 = (cos(al) sin(be), sin(al), cos(al) cos(be))``.  Any direction
+        is accepted (these coordinates have no singular orientation).
+    omega0 : angular velocity in body axes [rad/s].
+    pose : optional ``(psi, x, y)`` (heading [rad], centre of mass [m]); when
+        given the pose-extended state is returned.
+
+    Returns
+    -------
+    ndarray of shape ({n},) (or ({n_pose},) with ``pose``) in the order of
+    ``STATE_NAMES`` (+ ``POSE_NAMES``); ``omega_n = omega0 . n0``.
+    """
+    n0 = np.array(n0, dtype=float)
+    omega0 = np.array(omega0, dtype=float)
+    if n0.shape != (3,) or not np.isfinite(n0).all():
+        raise ValueError(f"`n0` must be 3 finite numbers (the upward vertical in body axes), got {{n0!r}}")
+    if omega0.shape != (3,) or not np.isfinite(omega0).all():
+        raise ValueError(f"`omega0` must be 3 finite numbers (angular velocity in body axes), got {{omega0!r}}")
+    norm = math.sqrt(float(n0 @ n0))
+    if not norm > 0:
+        raise ValueError("`n0` must not be the zero vector")
+    n0 = n0 / norm
+    s = np.concatenate([n0, omega0, [float(omega0 @ n0)]])
+    if pose is None:
+        return s
+    pose = np.array(pose, dtype=float)
+    if pose.shape != (3,) or not np.isfinite(pose).all():
+        raise ValueError(f"`pose` must be 3 finite numbers (psi, x, y), got {{pose!r}}")
+    return np.concatenate([s, pose])
+'''
+
+
+def module_source(system: rigid.RollingSystem, fidelity: str) -> str:
+    """Source of the generated module of a derived rigid body."""
+    spec, body = system.spec, system.body
+    state = [str(s) for s in system.state]
+    pose = [str(q) for q in spec.pose]
+    params = [str(p) for p in spec.params]
+    n, npose = len(state), len(pose)
+    rates = system.state_rhs()
+    allowed = set(system.state) | set(spec.params)
+    pose_exprs = [system.pose_rates[q] for q in spec.pose]
+    pose_lines, pose_ops = _cse_block(pose_exprs, [f"out[{i}]" for i in range(npose)], allowed | set(spec.pose))
+    rhs_src, rhs_ops = _rhs_source(system.state, spec.params, rates, spec.pose, pose_exprs)
+    energy_lines, energy_ops = _cse_block([system.energy], ["energy"], allowed)
+    power_lines, power_ops = _cse_block([sp.sympify(system.power)], ["power"], allowed)
+    lam = list(system.multipliers)
+    lam_lines, lam_ops = _cse_block(lam, [f"out[{i}]" for i in range(len(lam))], allowed)
+    digest = input_hash(system, fidelity)
+    nl = "\n"
+    power_src = (f'''@njit(cache=True)
+def power_dissipated(s, p):
+    """Power dissipated by the damping torque ({power_ops} operations)."""
+{nl.join(_unpack([str(x) for x in system.state], "s"))}
+{nl.join(_unpack([str(x) for x in spec.params], "p"))}
+{nl.join(power_lines)}
+    return power
+''' if body.sigma is not None and body.sigma != 0 else "")
+    units = {**rigid.STATE_UNITS, **{str(k): v for k, v in body.param_units.items()}}
+    domains = {p: body.param_domains.get(p, "positive") for p in params}
+    presets = {k: {p: float(v[p]) for p in params} for k, v in sorted(body.presets.items())}
+    if body.defaults:
+        defaults = {p: float(body.defaults[p]) for p in params}
+    else:
+        defaults = presets[sorted(body.presets)[0]] if body.presets else {}
+    n0 = body.default_state.get("n0", (0.0, 0.0, 1.0))
+    omega0 = body.default_state.get("omega0", (0.0, 0.0, 1.0))
+    nrm = sum(float(c) ** 2 for c in n0) ** 0.5
+    n0 = [float(c) / nrm for c in n0]
+    omega0 = [float(c) for c in omega0]
+    default_state = dict(zip(state, n0 + omega0 + [sum(a * b for a, b in zip(n0, omega0))]))
+    dissipative = body.sigma is not None and body.sigma != 0
+    state_doc = "\n".join(f"    s[{i}] = {nm:<12} [{units.get(nm, '?')}]" for i, nm in enumerate(state))
+    pose_doc = "\n".join(f"    s[{n + i}] = {nm:<12} [{units.get(nm, '?')}]" for i, nm in enumerate(pose))
+    par_doc = "\n".join(f"    p[{i}] = {nm:<12} [{units.get(nm, '?')}] {domains[nm]}" for i, nm in enumerate(params))
+    preset_doc = "\n".join(f"    {k}: {body.preset_sources.get(k, '')}" for k in sorted(body.presets))
+    unpack_s, unpack_p = _unpack(state, "s"), _unpack(params, "p")
+    unpack_pose = [f"    {q} = s[{n + i}]" for i, q in enumerate(pose)]
+    model_file = body.source
+    nl = "\n"
+    ops = dict(rhs_ops, pose_rates=pose_ops, energy=energy_ops, multipliers=lam_ops)
+    if dissipative:
+        ops["power_dissipated"] = power_ops
+    return f'''"""{spec.name}, fidelity {fidelity}: rigid body rolling without slipping, nothing dropped.
+
+GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
+Produced by derivation/rigid_emit.py (make derive) from the rigid body {spec.name!r}
+through derivation/rigid.py (Lagrange-d'Alembert in body quasi-velocities).
+SymPy {sp.__version__}; input hash sha256:{digest}
+
+{spec.description}
+
+State vector ``s`` (closed state; the pose follows by quadrature):
+{state_doc}
+Pose-extended state (``*_pose`` functions) appends:
+{pose_doc}
+Parameter vector ``p``:
+{par_doc}
+Presets:
+{preset_doc}
+Multipliers: the contact force on the body in body axes, {", ".join(spec.constraint_labels)}.
+Energy and ``power_dissipated`` in the units of the parameters (J and W for SI parameters).
+"""
+import math
+
+import numpy as np
+from numba import njit
+
+MODEL = {spec.name!r}
+FIDELITY = {fidelity!r}
+#: what this fidelity is
+FIDELITY_DOC = "rigid body rolling without slipping, exact in the orientation (derivation/rigid.py)"
+STATE_NAMES = {tuple(state)!r}
+#: unit of each state
+STATE_UNITS = {tuple(units[k] for k in state)!r}
+POSE_NAMES = {tuple(pose)!r}
+POSE_UNITS = {tuple(units[k] for k in pose)!r}
+#: what the pose coordinates mean
+POSE_DOC = "psi: heading of the horizontal projection of the body axis {tuple(body.heading_axis)}; (x, y): centre of mass"
+PARAM_NAMES = {tuple(params)!r}
+PARAM_UNITS = {tuple(units[k] for k in params)!r}
+#: admissible values of each parameter: 'positive' (> 0), 'nonnegative' (>= 0) or 'real' (any finite value)
+PARAM_DOMAINS = {tuple(domains[k] for k in params)!r}
+#: default parameter set and initial state (the CLI's defaults)
+DEFAULT_PARAMS = {defaults!r}
+DEFAULT_STATE = {default_state!r}
+#: (coordinate, rate) pairs of the state: none (n and omega are not coordinate and rate)
+RATE_PAIRS = ()
+TILT_NAMES = ()
+#: the vertical spin omega . n (carried as a state), whose zero crossings are the spin reversals
+REVERSAL_EVENTS = ('omega_n',)
+EVENT_NAMES = ()
+#: largest |value| of each named state where this fidelity holds (empty: everywhere)
+VALIDITY = {{}}
+VALIDITY_DOC = ''
+MULTIPLIER_NAMES = {tuple(spec.constraint_labels)!r}
+#: non-conservative forces (the torque -sigma omega): the module has ``power_dissipated(s, p)``
+HAS_DISSIPATION = {dissipative!r}
+#: model-specific helpers: named parameter sets and the initial state from the physical description
+EXPORTS = ('PRESETS', 'PRESET_SOURCES', 'initial_state')
+#: named parameter sets (SI units); sources in PRESET_SOURCES
+PRESETS = {presets!r}
+PRESET_SOURCES = {dict(sorted(body.preset_sources.items()))!r}
+#: the model file the body comes from
+SOURCE = {model_file!r}
+INPUT_HASH = {digest!r}
+SYMPY_VERSION = {sp.__version__!r}
+#: floating-point operation counts of each function body (SymPy count_ops after CSE)
+OP_COUNTS = {ops!r}
+
+
+{rhs_src}
+
+@njit(cache=True)
+def pose_rates(s, p):
+    """Return (psi_dot, x_dot, y_dot) at the pose-extended state ``s`` ({pose_ops} operations)."""
+    out = np.empty({npose})
+{nl.join(unpack_s)}
+{nl.join(unpack_pose)}
+{nl.join(unpack_p)}
+{nl.join(pose_lines)}
+    return out
+
+
+@njit(cache=True)
+def energy(s, p):
+    """Mechanical energy ({energy_ops} operations)."""
+{nl.join(unpack_s)}
+{nl.join(unpack_p)}
+{nl.join(energy_lines)}
+    return energy
+
+
+{power_src}
+
+@njit(cache=True)
+def multipliers(s, p):
+    """Contact force on the body in body axes ({lam_ops} operations)."""
+    out = np.empty({len(lam)})
+{nl.join(unpack_s)}
+{nl.join(unpack_p)}
+{nl.join(lam_lines)}
+    return out
+{_INITIAL_STATE.format(n=n, n_pose=n + npose)}''' + drawing.module_source(system)
