@@ -61,16 +61,16 @@ _RESERVED = frozenset(INPUT_COLUMNS + RESULT_COLUMNS + ("spec", "finished_at", "
 
 # -- rows -----------------------------------------------------------------------
 def checksum(row: Mapping, columns: Iterable[str]) -> str:
-    """Hash of a row's values in ``columns`` (floats exactly, NaN as null)."""
-    canon = {}
+    """Hash of a row's values in ``columns`` (floats by their exact ``repr``; NaN and a missing value alike)."""
+    parts = []
     for c in sorted(columns):
         v = row.get(c)
-        if isinstance(v, float):
-            v = float.hex(v) if math.isfinite(v) else (None if math.isnan(v) else repr(v))
+        if isinstance(v, float) and v != v:
+            v = None
         elif isinstance(v, (list, tuple)):
-            v = [float.hex(float(x)) for x in v]
-        canon[c] = v
-    return hashlib.sha256(json.dumps(canon, sort_keys=True).encode()).hexdigest()[:16]
+            v = [float(x) for x in v]
+        parts.append(f"{c}={v!r}")
+    return hashlib.blake2b("\x1f".join(parts).encode(), digest_size=8).hexdigest()
 
 
 def _coerce(column: str, value, where: str):
@@ -158,6 +158,7 @@ class ResultStore:
         self.pid = os.getpid()
         self.started = _start_time(self.pid)
         self._mine: set = set()
+        self._sql: dict = {}
         self._last_renew = 0.0
         self.path.parent.mkdir(parents=True, exist_ok=True)
         try:
@@ -325,23 +326,31 @@ class ResultStore:
             return
         now = time.time()
         with self._transaction():
-            for row in rows:
-                self._insert(row, now, (specs or {}).get(row["run_id"]))
-                self.db.execute("DELETE FROM claims WHERE run_id = ? AND owner = ?", (row["run_id"], self.owner))
+            self._insert(rows, now, specs or {})
+            self.db.executemany("DELETE FROM claims WHERE run_id = ? AND owner = ?",
+                                [(r["run_id"], self.owner) for r in rows])
         self._mine.difference_update(r["run_id"] for r in rows)
 
-    def _insert(self, row: Mapping, finished_at: float | None, spec: str | None) -> None:
-        missing = sorted(set(row) - set(self.columns))
-        if missing:
-            raise StoreError(f"{self.path}: the results table has no column(s) {missing}")
-        stored = dict(row)
-        stored["reversal_times"] = json.dumps([float(t) for t in row["reversal_times"]])
-        stored["finished_at"] = finished_at
-        stored["spec"] = spec
-        stored["checksum"] = checksum(row, row)
-        names = list(stored)
-        self.db.execute(f"INSERT OR REPLACE INTO runs ({','.join(_q(n) for n in names)}) "
-                        f"VALUES ({','.join('?' * len(names))})", [stored[n] for n in names])
+    def _insert(self, rows: Sequence[Mapping], finished_at: float | None, specs: Mapping[str, str]) -> None:
+        groups: dict = {}
+        for row in rows:
+            groups.setdefault(tuple(row), []).append(row)
+        for names, group in groups.items():
+            missing = sorted(set(names) - set(self.columns))
+            if missing:
+                raise StoreError(f"{self.path}: the results table has no column(s) {missing}")
+            sql = self._sql.get(names)
+            if sql is None:
+                cols = names + ("finished_at", "spec", "checksum")
+                sql = self._sql[names] = (f"INSERT OR REPLACE INTO runs ({','.join(_q(n) for n in cols)}) "
+                                          f"VALUES ({','.join('?' * len(cols))})")
+            rt = names.index("reversal_times")
+            values = []
+            for row in group:
+                v = [row[n] for n in names]
+                v[rt] = json.dumps([float(t) for t in v[rt]])
+                values.append(v + [finished_at, specs.get(row["run_id"]), checksum(row, names)])
+            self.db.executemany(sql, values)
 
     def import_rows(self, rows: Sequence[Mapping]) -> int:
         """Add rows read from an older text file (those whose run is not stored yet)."""
@@ -357,8 +366,7 @@ class ResultStore:
             for n in sorted(names):
                 self.db.execute(f"ALTER TABLE runs ADD COLUMN {_q(n)} REAL")
             self.columns = tuple(r[1] for r in self.db.execute("PRAGMA table_info(runs)"))
-            for r in new:
-                self._insert(r, None, None)
+            self._insert(new, None, {})
         return len(new)
 
     def close(self) -> None:

@@ -275,7 +275,7 @@ def _base_run(target, params, y0, t_span, method, rtol, atol) -> RunSpec:
         run = RunSpec(model=m.name, fidelity=m.fidelity, pose=m.pose, params=dict(params) if isinstance(params, Mapping)
                       else dict(zip(m.param_names, params)),
                       y0=dict(y0) if isinstance(y0, Mapping) else dict(zip(m.state_names, y0)), t_span=t_span,
-                      path=getattr(m, "path", None))
+                      path=None if getattr(m, "source_path", None) is None else m.source_path.parent)
     else:
         raise TypeError(f"`scene_or_model` must be a Scene, a scene name, a RunSpec or a Model, got {type(target).__name__}")
     changes: dict[str, Any] = {}
@@ -319,13 +319,31 @@ def _columns(run: RunSpec) -> tuple:
 
 
 def _key(spec: RunSpec) -> dict:
-    """The inputs that identify a run (its output sampling does not)."""
+    """The inputs that identify a run (its output sampling does not).
+
+    For a model from a user's folder, the hash of its module's text is part
+    of the key: after ``knifeedge derive`` rewrites the model, its runs are new runs.
+    """
     d = spec.to_dict()
     d.pop("n_eval")
     for k in ("max_steps", "path"):  # absent when unset: run ids of earlier versions stay valid
         if d.get(k) is None:
             d.pop(k, None)
+    if spec.path is not None:
+        d["module_sha256"] = _module_hash(spec.path, spec.model, spec.fidelity)
     return d
+
+
+_MODULE_HASHES: dict = {}
+
+
+def _module_hash(folder: str, model: str, fidelity: str) -> str:
+    f = Path(folder) / f"{model}_{fidelity}.py"
+    stat = f.stat()
+    key = (str(f), stat.st_mtime_ns, stat.st_size)
+    if key not in _MODULE_HASHES:
+        _MODULE_HASHES[key] = hashlib.sha256(f.read_bytes()).hexdigest()
+    return _MODULE_HASHES[key]
 
 
 def _inputs(spec: RunSpec) -> dict:
@@ -510,10 +528,11 @@ class _Sweep:
         self.since = None if resume else time.time()
         self.progress = progress
         self.by_id: dict = {}  # run_id -> index of its first grid point
-        self.spec_of: dict = {}
+        self.spec_of: dict = {}  # run_id -> the run as a plain dict
         for i, (s, inp) in enumerate(zip(specs, inputs)):
-            self.by_id.setdefault(inp["run_id"], i)
-            self.spec_of.setdefault(inp["run_id"], s)
+            if inp["run_id"] not in self.by_id:
+                self.by_id[inp["run_id"]] = i
+                self.spec_of[inp["run_id"]] = s.to_dict()
         self.results: dict = {}  # run_id -> row
         self.missing: dict = {}  # run_id -> reason
         self.damaged: list = []
@@ -572,9 +591,15 @@ class _Sweep:
             warnings.warn(msg, RuntimeWarning, stacklevel=3)
         n_reused = len(self.results)
         todo = deque(r for r in order if r not in self.results)
-        self.bar = _Progress(len(order), n_reused, self.progress)
-        self.bar.done = n_reused
         pool, n_workers = (None, 0)
+        if todo:  # before the progress bar's thread: workers are forked while this process has one thread
+            pool, n_workers = self._pool(len(todo))
+        try:
+            self.bar = _Progress(len(order), n_reused, self.progress)
+        except BaseException:
+            if pool is not None:
+                pool.shutdown()
+            raise
         attempts: dict = {}
         others: dict = {}  # run_id -> who holds it
         inflight: dict = {}  # task id -> run ids
@@ -582,8 +607,6 @@ class _Sweep:
         interrupted = False
         last_poll = 0.0
         try:
-            if todo:
-                pool, n_workers = self._pool(len(todo))
             while todo or inflight or others:
                 # hand out work while the pool has room
                 while todo and pool.free():
@@ -593,7 +616,7 @@ class _Sweep:
                     if ids:
                         t = next(task_ids)
                         inflight[t] = ids
-                        pool.submit(t, [self.spec_of[r].to_dict() for r in ids])
+                        pool.submit(t, [self.spec_of[r] for r in ids])
                 # collect finished tasks
                 for t, out in pool.wait(0.5 if (inflight or not others) else 1.0):
                     ids = inflight.pop(t)
@@ -603,7 +626,7 @@ class _Sweep:
                     rows = [self._row(rid, o) for rid, o in zip(ids, out)]
                     self.times.extend(o["seconds"] for o in out)
                     if self.store is not None:
-                        self.store.write(rows, {r: json.dumps(self.spec_of[r].to_dict()) for r in ids})
+                        self.store.write(rows, {r: json.dumps(self.spec_of[r]) for r in ids})
                     self._record(rows, computed=True)
                 broken = getattr(pool, "broken", None)
                 if broken and not inflight and todo:  # an executor that takes no more work

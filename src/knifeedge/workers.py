@@ -18,6 +18,12 @@ so that
   elsewhere), when its stdin closes, or when the sweep shuts the pool down;
 * a worker ignores Ctrl-C (the terminal sends it to the whole process
   group); the sweep decides what to do and ends its workers.
+
+On Linux, when no other thread is running, a worker is forked from the
+sweep's process (it starts with the package imported and the kernels
+compiled, in milliseconds); otherwise it is a new interpreter
+(``python -c ...``), which imports the package and loads the kernels from the
+cache first.
 """
 from __future__ import annotations
 
@@ -68,51 +74,101 @@ def _die_with_parent(parent: int) -> None:
 
 
 def worker_main(parent: int) -> None:
-    """Loop of a worker process: read a task from stdin, run it, write the outcomes to stdout."""
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
-    _die_with_parent(parent)
+    """Entry of a worker started as a new interpreter: the protocol runs on its stdin and stdout."""
     proto_out = os.fdopen(os.dup(1), "wb", buffering=0)
     os.dup2(2, 1)  # anything printed goes to stderr, not into the protocol
     sys.stdout = sys.stderr
     proto_in = os.fdopen(os.dup(0), "rb", buffering=0)
+    _serve(proto_in, proto_out, parent)
 
-    from .sweep import run_batch
 
-    def read_exact(n: int) -> bytes | None:
-        buf = b""
-        while len(buf) < n:
-            chunk = proto_in.read(n - len(buf))
-            if not chunk:
-                return None
-            buf += chunk
-        return buf
+def _serve(proto_in, proto_out, parent: int) -> None:
+    """Loop of a worker: read a task, run it, write the outcomes; leave with ``os._exit``."""
+    try:
+        signal.signal(signal.SIGINT, signal.SIG_IGN)
+        _die_with_parent(parent)
+        from .sweep import run_batch
 
-    proto_out.write(_frame(("ready", os.getpid())))
-    while True:
-        head = read_exact(_HEADER.size)
-        if head is None:
-            return  # the sweep closed our stdin (or died)
-        body = read_exact(_HEADER.unpack(head)[0])
-        if body is None:
-            return
-        msg = pickle.loads(body)
-        if msg is None:
-            return
-        task_id, runs = msg
-        out = run_batch(runs)
-        try:
+        def read_exact(n: int) -> bytes | None:
+            buf = b""
+            while len(buf) < n:
+                chunk = proto_in.read(n - len(buf))
+                if not chunk:
+                    return None
+                buf += chunk
+            return buf
+
+        proto_out.write(_frame(("ready", os.getpid())))
+        while True:
+            head = read_exact(_HEADER.size)
+            body = None if head is None else read_exact(_HEADER.unpack(head)[0])
+            msg = None if body is None else pickle.loads(body)
+            if msg is None:  # the sweep is done (or closed our stdin, or died): nothing to tidy up
+                break
+            task_id, runs = msg
+            out = run_batch(runs)
             proto_out.write(_frame((task_id, out)))
-        except (BrokenPipeError, OSError):
-            return
+    except BaseException:  # noqa: BLE001 - a broken pipe, a crash: the parent sees the end of the pipe
+        import traceback
+
+        traceback.print_exc()
+    finally:
+        os._exit(0)
 
 
 # -- the parent side ----------------------------------------------------------------------
+class _Forked:
+    """A worker forked from this process (Linux, when no other thread runs): it starts with the package and the
+    compiled kernels already loaded.  Offers the part of ``subprocess.Popen`` the pool uses."""
+
+    def __init__(self):
+        parent = os.getpid()
+        r_task, w_task = os.pipe()
+        r_out, w_out = os.pipe()
+        pid = os.fork()
+        if pid == 0:  # the worker
+            os.close(w_task)
+            os.close(r_out)
+            _serve(os.fdopen(r_task, "rb", buffering=0), os.fdopen(w_out, "wb", buffering=0), parent)
+        os.close(r_task)
+        os.close(w_out)
+        self.pid = pid
+        self.stdin = os.fdopen(w_task, "wb", buffering=0)
+        self.stdout = os.fdopen(r_out, "rb", buffering=0)
+        self.returncode = None
+
+    def poll(self):
+        if self.returncode is None:
+            pid, status = os.waitpid(self.pid, os.WNOHANG)
+            if pid:
+                self.returncode = os.waitstatus_to_exitcode(status)
+        return self.returncode
+
+    def wait(self, timeout=None):
+        deadline = None if timeout is None else time.monotonic() + timeout
+        while self.poll() is None:
+            if deadline is not None and time.monotonic() > deadline:
+                raise subprocess.TimeoutExpired(f"worker {self.pid}", timeout)
+            time.sleep(0.01)
+        return self.returncode
+
+    def kill(self):
+        os.kill(self.pid, signal.SIGKILL)
+
+
+def _can_fork() -> bool:
+    return sys.platform.startswith("linux") and threading.active_count() == 1 and hasattr(os, "fork")
+
+
 class _Worker:
     def __init__(self, env: dict):
-        code = ("import sys; sys.path[:0] = %r; from knifeedge.workers import worker_main; worker_main(%d)"
-                % ([p for p in sys.path if p], os.getpid()))
-        self.proc = subprocess.Popen([sys.executable, "-c", code], stdin=subprocess.PIPE, stdout=subprocess.PIPE,
-                                     env=env, close_fds=True, start_new_session=False)
+        if _can_fork():
+            self.proc = _Forked()
+        else:
+            code = ("import sys; sys.path[:0] = %r; from knifeedge.workers import worker_main; worker_main(%d)"
+                    % ([p for p in sys.path if p], os.getpid()))
+            self.proc = subprocess.Popen([sys.executable, "-c", code], stdin=subprocess.PIPE,
+                                         stdout=subprocess.PIPE, env=env, close_fds=True)
         os.set_blocking(self.proc.stdout.fileno(), False)
         self.buf = b""
         self.ready = False

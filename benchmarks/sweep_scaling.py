@@ -1,0 +1,140 @@
+"""Scale-out of ``ke.sweep``: wall time on 1 and 2 local workers and a Dask LocalCluster, and the share of it
+spent outside integration (scheduling, serialization, writing rows).
+
+    python -m benchmarks.sweep_scaling [--runs 10000] [--out benchmarks/results/sweep_scaling.json]
+
+The sweep: first-reversal runs of the two-mode ``full`` model (the ``tinversion`` scene's run: ``ell/L = 1/2``,
+``D/ell = 1/2``, ``alpha = pi/4``, tilts 1e-3, DOP853 at rtol 1e-10), ``phi_dot`` from 0.05 to 0.4, each run's
+span the scene's bound on its first reversal (``_t_end``); every row committed to an SQLite store.
+
+Two measures of the time spent outside integration, for each configuration with ``w`` workers:
+
+* ``overhead_wall = 1 - busy / (w * wall)``: ``busy`` is the sum over runs of the wall time each spent in its
+  worker integrating (the row's ``seconds``: ``RunSpec.simulate`` and the reversal columns); the rest of the
+  workers' time went to starting them, handing out tasks, pickling, the parent's commits and the tail.  On a
+  machine shared with other work both times stretch, and a worker waiting for a core counts as overhead.
+* ``overhead_cpu = 1 - cpu_integration / cpu_total``: ``cpu_integration`` is the CPU time of the same runs
+  integrated one after another in this process (``run_one``, measured first); ``cpu_total`` the CPU time the
+  sweep used -- its own process (scheduling, the store, unpickling rows) plus its workers (start-up included).
+  CPU time does not count waiting for a core, so this is the figure that other load on the machine leaves alone.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import platform
+import resource
+import sqlite3
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+
+import knifeedge as ke
+from knifeedge.scenes.tinversion import RUN, _t_end
+from knifeedge.sweep import run_one
+
+
+def _points(n: int) -> list:
+    run = RUN.with_(fidelity="full")
+    return [{"phi_dot": float(v), "t_end": _t_end(run, float(v), run.params["D"])} for v in np.linspace(0.05, 0.4, n)]
+
+
+def _integration_cpu(points: list) -> float:
+    """CPU seconds of the runs alone: run_one on each, in this process, one after another."""
+    run = RUN.with_(fidelity="full")
+    specs = [run.with_(**pt).to_dict() for pt in points]
+    c0 = time.process_time()
+    for spec in specs:
+        run_one(spec)
+    return time.process_time() - c0
+
+
+def _descendants_cpu() -> float:
+    """CPU seconds of this process's live descendants (Dask's worker processes)."""
+    import psutil
+
+    total = 0.0
+    for p in psutil.Process().children(recursive=True):
+        try:
+            t = p.cpu_times()
+            total += t.user + t.system
+        except psutil.Error:
+            pass
+    return total
+
+
+def _children_cpu() -> float:
+    r = resource.getrusage(resource.RUSAGE_CHILDREN)  # reaped children: the sweep's own workers
+    return r.ru_utime + r.ru_stime
+
+
+def _measure(name: str, n_workers: int, points: list, cpu_integration: float, executor=None) -> dict:
+    run = RUN.with_(fidelity="full")
+    with tempfile.TemporaryDirectory() as d:
+        store = Path(d) / "runs.sqlite"
+        load0 = os.getloadavg()[0]
+        c_self, c_children, c_desc = time.process_time(), _children_cpu(), _descendants_cpu()
+        t0 = time.time()
+        w0 = time.perf_counter()
+        table = ke.sweep(run, points, executor=executor if executor is not None else "processes",
+                         max_workers=n_workers, out=store, progress=False)
+        wall = time.perf_counter() - w0
+        cpu_parent = time.process_time() - c_self
+        cpu_workers = (_children_cpu() - c_children) + (_descendants_cpu() - c_desc)
+        with sqlite3.connect(store) as con:
+            first = min(r[0] for r in con.execute("SELECT finished_at FROM runs")) - t0
+    busy = float(np.nansum(table["seconds"]))
+    assert table.n_missing == 0 and table.n_computed == len(points), table.summary()
+    cpu_total = cpu_parent + cpu_workers
+    return {
+        "config": name, "workers": n_workers, "runs": len(points), "wall_s": wall, "busy_s": busy,
+        "overhead_wall": 1.0 - busy / (n_workers * wall),
+        "cpu_integration_s": cpu_integration, "cpu_parent_s": cpu_parent, "cpu_workers_s": cpu_workers,
+        "overhead_cpu": 1.0 - cpu_integration / cpu_total,
+        "start_to_first_row_s": first, "runs_per_s": len(points) / wall, "mean_run_ms": 1e3 * busy / len(points),
+        "ok": int(np.sum(table.ok)), "load_avg_1min_before": load0, "load_avg_1min_after": os.getloadavg()[0],
+    }
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(prog="python -m benchmarks.sweep_scaling", description=__doc__.splitlines()[0])
+    ap.add_argument("--runs", type=int, default=10_000)
+    ap.add_argument("--out", type=Path, default=Path(__file__).resolve().parent / "results" / "sweep_scaling.json")
+    ap.add_argument("--skip-dask", action="store_true")
+    args = ap.parse_args(argv)
+    points = _points(args.runs)
+    # warm the compiled-kernel cache once (a first use compiles; that is not the sweep's cost)
+    ke.sweep(RUN.with_(fidelity="full"), points[:1], executor="serial", progress=False)
+    cpu_integration = _integration_cpu(points)
+    print(f"integration alone: {cpu_integration:.1f} CPU s for {len(points)} runs", flush=True)
+    results = {"machine": platform.platform(), "cpus": os.cpu_count(), "python": platform.python_version(),
+               "cpu_integration_s": cpu_integration,
+               "sweep": f"two_mode full, DOP853 rtol 1e-10, phi_dot 0.05..0.4, {args.runs} runs", "rows": []}
+    configs = [("local, 1 worker", 1, None), ("local, 2 workers", 2, None)]
+    for name, w, ex in configs:
+        r = _measure(name, w, points, cpu_integration, ex)
+        results["rows"].append(r)
+        print(json.dumps(r), flush=True)
+    if not args.skip_dask:
+        from distributed import Client, LocalCluster
+
+        with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster, \
+                Client(cluster) as client:
+            client.run(lambda: __import__("knifeedge"))  # import in the workers before the clock starts
+            r = _measure("dask LocalCluster, 2 workers", 2, points, cpu_integration, client.get_executor())
+        results["rows"].append(r)
+        print(json.dumps(r), flush=True)
+    one, two = results["rows"][0], results["rows"][1]
+    results["speedup_2_vs_1"] = one["wall_s"] / two["wall_s"]
+    print(f"speed-up of 2 local workers over 1: {results['speedup_2_vs_1']:.2f}x")
+    args.out.parent.mkdir(parents=True, exist_ok=True)
+    args.out.write_text(json.dumps(results, indent=1) + "\n")
+    print(f"written to {args.out}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
