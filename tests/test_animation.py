@@ -540,3 +540,83 @@ def test_celt_frames_differ_where_it_rocks():
     h, w, _ = a.shape
     body = (slice(int(0.1 * h), int(0.9 * h)), slice(0, int(0.6 * w)))
     assert np.count_nonzero(np.any(a[body] != b[body], axis=2)) > 50
+
+
+def test_mp4_with_the_real_ffmpeg_opens_with_the_stated_frames(tmp_path):
+    """With ffmpeg installed (never required: skipped without it), the MP4 opens (ffprobe) with every frame."""
+    import json
+    import shutil
+    import subprocess
+
+    if shutil.which("ffmpeg") is None or shutil.which("ffprobe") is None:
+        pytest.skip("ffmpeg/ffprobe not on the PATH: MP4 output not checked (GIF needs no system dependency)")
+    out = tmp_path / "spin.mp4"
+    info = ke.animate("numerical", out, frames=9, fps=10, size=(4.0, 2.5), dpi=42)
+    probe = subprocess.run(["ffprobe", "-v", "error", "-count_frames", "-select_streams", "v:0", "-show_entries",
+                            "stream=codec_name,width,height,nb_read_frames,avg_frame_rate", "-of", "json", str(out)],
+                           capture_output=True, text=True, check=True)
+    (stream,) = json.loads(probe.stdout)["streams"]
+    assert info.n_frames == 9 and int(stream["nb_read_frames"]) == 9
+    assert stream["codec_name"] == "h264" and stream["avg_frame_rate"] == "10/1"
+    assert (int(stream["width"]), int(stream["height"])) == (168, 106)  # 4 x 2.5 in at 42 dpi: 168 x 105, padded to even (yuv420p)
+
+
+def _chromium():
+    import shutil
+
+    return next((p for p in (shutil.which("chromium"), shutil.which("chromium-browser"), shutil.which("google-chrome"))
+                 if p), None)
+
+
+def test_figures_page_loads_its_figures_and_animations_in_a_browser(tmp_path, monkeypatch):
+    """The figures page, served over HTTP and opened in headless Chromium (skipped without it): every image
+    (figure PNG and animation GIF) loads, at the pixel size of its file."""
+    import functools
+    import http.server
+    import json
+    import re
+    import subprocess
+    import threading
+
+    from knifeedge import figures
+
+    exe = _chromium()
+    if exe is None:
+        pytest.skip("chromium not found: the figures page was not opened in a browser")
+    monkeypatch.setattr(figures, "ANIMATIONS", {"numerical": {"frames": 6, "fps": 10, "size": (4.0, 2.5), "dpi": 40}})
+    site = tmp_path / "figures"
+    recs = figures.make_figures(site, names=["numerical"], max_workers=1, progress=False)
+    assert recs[0]["ok"] and recs[0]["animation"]["ok"]
+    probe = ("<script>window.addEventListener('load', function () {"
+             "var out = document.createElement('pre'); out.id = 'loaded';"
+             "out.textContent = JSON.stringify(Array.from(document.images).map(function (i) {"
+             "return [i.getAttribute('src'), i.complete, i.naturalWidth, i.naturalHeight]; }));"
+             "document.body.appendChild(out); });</script></body>")
+    (site / "check.html").write_text((site / "index.html").read_text().replace("</body>", probe))
+    handler = functools.partial(http.server.SimpleHTTPRequestHandler, directory=str(site))
+    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
+    server.RequestHandlerClass.log_message = lambda *a: None
+    thread = threading.Thread(target=server.serve_forever, daemon=True)
+    thread.start()
+    try:
+        url = f"http://127.0.0.1:{server.server_address[1]}/check.html"
+        dom = subprocess.run([exe, "--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
+                              "--disable-component-update", "--no-first-run", f"--user-data-dir={tmp_path / 'profile'}",
+                              "--virtual-time-budget=10000", "--dump-dom", url],
+                             capture_output=True, text=True, timeout=600).stdout
+    finally:
+        server.shutdown()
+        server.server_close()
+    found = re.search(r"<pre id=\"loaded\">(.*?)</pre>", dom, re.S)
+    assert found, "the page's load event never fired"
+    images = json.loads(html_unescape(found.group(1)))
+    assert sorted(src for src, *_ in images) == ["numerical.gif", "numerical.png"]
+    for src, complete, width, height in images:
+        with Image.open(site / src) as im:
+            assert complete and (width, height) == im.size, src
+
+
+def html_unescape(text: str) -> str:
+    import html
+
+    return html.unescape(text)
