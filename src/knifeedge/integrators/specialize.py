@@ -46,7 +46,7 @@ N_MARK = "# knifeedge:n"
 EVENTS_MARK = "# knifeedge:event_values"
 BLOCK_MARK = "# knifeedge:"
 #: blocks every template takes from ``templates/_blocks.py`` (the bodies of its functions of these names)
-EVENT_BLOCKS = ("alloc", "ends", "output")
+EVENT_BLOCKS = ("alloc", "ends", "suspect", "output")
 #: functions of ``templates/_blocks.py`` compiled into the kernels of models with event functions
 FUNCTION_DEFS = ("_event_at", "_function_ends", "_locate_functions")
 _LOADED: dict = {}

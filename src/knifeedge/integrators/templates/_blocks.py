@@ -17,7 +17,9 @@ crossings are found in three moves (:mod:`knifeedge.integrators.common`):
 1. ``ends``: its value ``g`` and rate ``h dg/dt`` at both ends of the step
    (a component's rate is its derivative; an event function's is a forward
    difference over 1e-7 of the step);
-2. ``screen``: a crossing is certain when the signs at the ends differ; a
+2. ``screen`` (called only when the bound ``suspect`` computes leaves doubt,
+   which for an event far from zero is almost never): a crossing is
+   certain when the signs at the ends differ; a
    pair of crossings inside the step (same signs at both ends) is suspected
    when the cubic Hermite interpolant of those four numbers has an extremum
    inside the step that crosses zero or comes within ``NEAR`` of the larger
@@ -36,7 +38,7 @@ requested times ``t_eval`` inside it (on the interpolant).
 """
 import numpy as np
 
-from knifeedge.integrators.common import MAX_ITER, SAMPLES
+from knifeedge.integrators.common import MAX_ITER, NEAR, SAMPLES  # noqa: F401
 
 _EPS = np.finfo(np.float64).eps
 
@@ -67,6 +69,23 @@ def ends(events, ne, y, y_new, fa, fb, h, ga, gb, sa, sb):
             gb[k] = y_new[c]
             sa[k] = h * fa[c]
             sb[k] = h * fb[c]
+
+
+def suspect(ne, ga, gb, sa, sb, NEAR):
+    # whether the screen may flag any event: the Hermite cubic differs from the chord by at most
+    # x (1 - x) max(|s0 - d|, |s1 - d|) <= dev (d = g1 - g0), so ends of one sign whose smaller magnitude
+    # exceeds dev + NEAR * the larger one leave nothing to screen (the usual step: no call)
+    suspect = False
+    for k in range(ne):
+        g0 = ga[k]
+        g1 = gb[k]
+        if g0 == 0.0 or g1 == 0.0 or (g0 > 0.0) != (g1 > 0.0):
+            suspect = True
+        else:
+            d = g1 - g0
+            dev = 0.25 * max(abs(sa[k] - d), abs(sb[k] - d))
+            if min(abs(g0), abs(g1)) - dev <= NEAR * max(abs(g0), abs(g1)):
+                suspect = True
 
 
 def _event_at(F, y, x, j, p, work):

@@ -23,7 +23,7 @@ from numba import njit
 
 from knifeedge.integrators import common as _c
 from knifeedge.integrators import tableau as _tableau
-from knifeedge.integrators.common import MAX_ITER, SAMPLES  # noqa: F401 (MAX_ITER: the event functions)
+from knifeedge.integrators.common import MAX_ITER, NEAR, SAMPLES  # noqa: F401 (used by the blocks)
 from knifeedge.integrators.templates._stub import constants as _constants, rhs_q_into as _rhs  # knifeedge:rhs
 from knifeedge.integrators.templates._stub import event_values as _event_values  # knifeedge:event_values
 
@@ -259,7 +259,10 @@ def solve(t0, t1, y0, f0, p, rtol, atol, h_init, max_step, t_eval, every, events
             if n_fun > 0:
                 _function_ends(events, y, y_new, fa, fb, h, p, work, ga, gb, sa, sb)
             # knifeedge:end functions
-            any_flag = _c.screen(ga, gb, sa, sb, crit, n_crit, flag)
+            # knifeedge:begin suspect
+            # knifeedge:end suspect
+            if suspect:
+                any_flag = _c.screen(ga, gb, sa, sb, crit, n_crit, flag)
         if any_flag or (ie < t_eval.size and t_eval[ie] < t_new):
             # the interpolant of the step: F (DENSE_ROWS x N)
             # knifeedge:begin dense
