@@ -24,9 +24,9 @@ _ORDER = ("numerical2", "knife_edge_rigid", "model_fidelity", "tinversion", "kni
           "celt_schoemer", "amplitudes", "numerical")
 #: scenes whose run is also animated, with the animation's settings (modest size and frame count)
 ANIMATIONS = {
-    "numerical": {"frames": 150, "fps": 12.5, "size": (8.0, 4.5), "dpi": 70},
-    "numerical2": {"frames": 180, "fps": 12.5, "size": (8.0, 4.5), "dpi": 70},
-    "celt": {"frames": 120, "fps": 12.5, "size": (8.0, 4.5), "dpi": 70},
+    "numerical": {"frames": 120, "fps": 12.5, "size": (8.0, 4.5), "dpi": 80},
+    "numerical2": {"frames": 150, "fps": 12.5, "size": (8.0, 4.5), "dpi": 80},
+    "celt": {"frames": 100, "fps": 12.5, "size": (8.0, 4.5), "dpi": 80},
 }
 
 
