@@ -214,6 +214,10 @@ def test_frames_differ_where_the_body_moves(single_motion):
     h, w, _ = a.shape
     body = (slice(int(0.1 * h), int(0.9 * h)), slice(0, int(0.6 * w)))  # the 3D view
     assert np.count_nonzero(np.any(a[body] != b[body], axis=2)) > 50
+    # the time and the speed (written by pillow) are in the frame's pixels, below the title, and change with it
+    label = (slice(int(0.07 * h), int(0.14 * h)), slice(0, int(0.4 * w)))
+    assert np.count_nonzero(np.any(a[label] < 128, axis=2)) > 20
+    assert np.count_nonzero(np.any(a[label] != b[label], axis=2)) > 5
 
 
 def test_gif_has_the_stated_frames(tmp_path):
