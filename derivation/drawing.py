@@ -62,6 +62,8 @@ class Drawing:
         factor to make small rocking visible; positions are never scaled.
     outlines : dict name -> (x, y, z) expressions of ``u`` (closed curves).
     description : one line saying what is drawn.
+    gauge : name of the state the picture shows as the spin rate (its gauge);
+        ``""``: the model's spin (its first reversal event).
     """
 
     points: dict
@@ -71,6 +73,7 @@ class Drawing:
     magnify: tuple = ()
     outlines: dict = field(default_factory=dict)
     description: str = ""
+    gauge: str = ""
 
     def __post_init__(self):
         for attr in ("points", "outlines"):
@@ -176,8 +179,174 @@ def chaplygin_sleigh() -> Drawing:
     )
 
 
+def rigid_placement(body) -> tuple:
+    """``(place, contact)`` for a :class:`~derivation.rigid.RigidBody` at its pose-extended state.
+
+    The rigid modules' state holds the upward vertical ``n`` in body axes and
+    the pose ``(psi, x, y)``: heading of the horizontal projection ``X`` of
+    the body axis ``e = body.heading_axis`` and the centre of mass.  With
+    ``n`` normalized (so that a picture may magnify its horizontal
+    components) and ``Y = n x X``, a body vector ``b`` (from the centre of
+    mass, body axes) points along ``Rz(psi) (X.b, Y.b, n.b)`` in the world;
+    the centre of mass is at height ``-r(n).n`` above the table, ``r(n)`` the
+    shape's lowest point (derivation/rigid.py).  ``place(b)`` returns the world
+    position of the body point ``b``; ``contact`` is the body vector ``r(n)``.
+    """
+    from . import rigid
+
+    n = rigid.N_VEC / sp.sqrt(rigid.N_VEC.dot(rigid.N_VEC))
+    e = sp.Matrix(body.heading_axis)
+    en = e.dot(n)
+    X = (e - en * n) / sp.sqrt(e.dot(e) - en**2)
+    Y = n.cross(X)
+    rot = _rz(rigid.psi) * sp.Matrix.vstack(X.T, Y.T, n.T)
+    r = body.shape.lowest_point(n)
+    centre = sp.Matrix([rigid.x, rigid.y, -r.dot(n)])
+
+    def place(b) -> tuple:
+        return tuple(centre + rot * sp.Matrix(b))
+
+    return place, r
+
+
+def _sections(a, b, c, centre) -> dict:
+    """The three principal sections of an ellipsoid (body frame), as closed curves in ``u``."""
+    cx, cy, cz = centre
+    cu, su = sp.cos(u), sp.sin(u)
+    return {"section_xy": (cx + a * cu, cy + b * su, cz), "section_xz": (cx + a * cu, cy, cz + c * su),
+            "section_yz": (cx, cy + b * cu, cz + c * su)}
+
+
+def _principal_directions(inertia) -> tuple:
+    """Unit vectors (body axes) of the principal axes of ``inertia`` whose ``xz`` and ``yz`` entries vanish.
+
+    The horizontal block ``[[I_xx, I_xy], [I_xy, I_yy]]`` has the eigenvector
+    of its smaller moment at the angle ``delta = atan2(-2 I_xy, I_yy - I_xx) / 2``
+    from the body ``x`` axis (first), that of the larger at ``delta + pi/2``;
+    the body ``z`` axis is the third.
+    """
+    delta = sp.atan2(-2 * inertia[0, 1], inertia[1, 1] - inertia[0, 0]) / 2
+    return ((sp.cos(delta), sp.sin(delta), 0), (-sp.sin(delta), sp.cos(delta), 0), (0, 0, 1))
+
+
+def celt() -> Drawing:
+    """The rattleback: its ellipsoid's principal sections, its principal axes of inertia, the contact point.
+
+    Body frame (derivation/celt.py): origin at the centre of mass ``G``, the
+    ellipsoid of semi-axes ``a, b, c`` centred ``h`` above it.  The principal
+    axes of inertia are drawn through ``G`` (the horizontal ones as long as
+    the radius of the ellipsoid's horizontal section along them, the third
+    from the ellipsoid's bottom to its top): their turn from the ellipsoid's
+    axes, ``delta`` (``tan 2 delta = 2 I_xy / (I_xx - I_yy)``), is the
+    chirality.  Exact when ``I_xz = I_yz = 0`` (both
+    presets); otherwise the drawn horizontal axes are those of the inertia's
+    horizontal block.
+    """
+    from . import celt as c
+
+    body = c.celt()
+    place, r = rigid_placement(body)
+    inertia = sp.Matrix(body.inertia)
+    d1, d2, d3 = _principal_directions(inertia)
+    # each horizontal axis as long as the radius of the ellipsoid's horizontal section along it
+    k1 = 1 / sp.sqrt((d1[0] / c.a) ** 2 + (d1[1] / c.b) ** 2)
+    k2 = 1 / sp.sqrt((d2[0] / c.a) ** 2 + (d2[1] / c.b) ** 2)
+    body_pts = {"G": (0, 0, 0), "C": tuple(r), "E": (0, 0, c.h)}
+    for name, d, k in (("axis1", d1, k1), ("axis2", d2, k2)):
+        body_pts[f"{name}_minus"] = tuple(-k * v for v in d)
+        body_pts[f"{name}_plus"] = tuple(k * v for v in d)
+    body_pts["axis3_minus"] = (0, 0, -c.c + c.h)
+    body_pts["axis3_plus"] = (0, 0, c.c + c.h)
+    sections = _sections(c.a, c.b, c.c, (0, 0, c.h))
+    return Drawing(
+        points={k: place(v) for k, v in body_pts.items()},
+        segments=(("axis1_minus", "axis1_plus"), ("axis2_minus", "axis2_plus"), ("axis3_minus", "axis3_plus")),
+        contact="C", masses=("G",), magnify=("n_x", "n_y"),
+        outlines={k: place(v) for k, v in sections.items()},
+        description=("rattleback: the principal sections of its ellipsoid (semi-axes a, b, c, centre E a height h "
+                     "above the centre of mass G), its principal axes of inertia through G (turned by the chirality "
+                     "delta from the ellipsoid's axes), the contact point C; tilts magnified by scaling n_x, n_y"),
+    )
+
+
+def two_mode_rigid() -> Drawing:
+    """The knife edge of section III as the rigid body (derivation/rigid_knife_edge.py, Fig. ``sketch_2modes``).
+
+    Body frame: origin at the centre of mass ``G`` (midway between the
+    masses), ``x`` along the bar, ``z`` up; the bar's ends ``(+-L, 0, ell)``,
+    the masses ``(+-L, 0, 0)``, ``O = (0, 0, ell)``; the contact circle of
+    radius ``D`` centred ``(0, 0, ell + D)`` in the plane of ``z`` and
+    ``a = (cos alpha, sin alpha, 0)``.
+    """
+    from . import rigid_knife_edge as k
+
+    body = k.knife_edge_body()
+    place, r = rigid_placement(body)
+    a = sp.Matrix([sp.cos(k.alpha), sp.sin(k.alpha), 0])
+    ez = sp.Matrix([0, 0, 1])
+    centre = (k.ell + k.D) * ez
+    body_pts = {"O": (0, 0, k.ell), "end_minus": (-k.L, 0, k.ell), "end_plus": (k.L, 0, k.ell),
+                "mass_minus": (-k.L, 0, 0), "mass_plus": (k.L, 0, 0), "C": tuple(r),
+                "circle_centre": tuple(centre)}
+    circle = centre + k.D * (sp.sin(u) * a - sp.cos(u) * ez)
+    return Drawing(
+        points={n: place(v) for n, v in body_pts.items()},
+        segments=_KNIFE_SEGMENTS + (("O", "circle_centre"),), contact="C", masses=("mass_minus", "mass_plus"),
+        magnify=("n_x", "n_y"), outlines={"contact_circle": place(tuple(circle))},
+        description=("inverted-U bar of half-length L (middle point O), masses M/2 hanging ell below its ends, the "
+                     "contact circle of radius D at the chiral angle alpha, contact point C its lowest point; "
+                     "tilts magnified by scaling n_x, n_y"),
+    )
+
+
+def rigid_body(body) -> Drawing:
+    """A plain drawing of any :class:`~derivation.rigid.RigidBody` (used when none is registered).
+
+    The shape's outline (an ellipsoid's principal sections, a circle, a
+    sphere's three great circles about its centre), the centre of mass ``G``,
+    the contact point and, when the inertia has no ``xz`` and ``yz`` entries,
+    its principal axes through ``G``.
+    """
+    from . import rigid
+
+    place, r = rigid_placement(body)
+    shape = body.shape
+    size = None
+    cu, su = sp.cos(u), sp.sin(u)
+    if isinstance(shape, rigid.Ellipsoid):
+        outlines = _sections(shape.a, shape.b, shape.c, shape.centre)
+        size = sp.Max(shape.a, shape.b, shape.c)
+    elif isinstance(shape, rigid.Sphere):
+        outlines = _sections(shape.radius, shape.radius, shape.radius, shape.centre)
+        size = shape.radius
+    elif isinstance(shape, rigid.Circle):
+        k = sp.Matrix(shape.axis)
+        helper = sp.Matrix([0, 0, 1]) if sp.simplify(k.cross(sp.Matrix([0, 0, 1])).norm()) != 0 else sp.Matrix([1, 0, 0])
+        e1 = k.cross(helper)
+        e1 = e1 / sp.sqrt(e1.dot(e1))
+        e2 = k.cross(e1)
+        outlines = {"rim": tuple(sp.Matrix(shape.centre) + shape.radius * (cu * e1 + su * e2))}
+        size = shape.radius
+    else:
+        outlines = {}
+    pts = {"G": (0, 0, 0), "C": tuple(r)}
+    segments = [("G", "C")]
+    inertia = sp.Matrix(body.inertia)
+    if size is not None and inertia[0, 2] == 0 and inertia[1, 2] == 0:
+        for i, d in enumerate(_principal_directions(inertia), 1):
+            pts[f"axis{i}_minus"] = tuple(-size * v for v in d)
+            pts[f"axis{i}_plus"] = tuple(size * v for v in d)
+            segments.append((f"axis{i}_minus", f"axis{i}_plus"))
+    return Drawing(
+        points={k: place(v) for k, v in pts.items()}, segments=tuple(segments), contact="C", masses=("G",),
+        magnify=("n_x", "n_y"), outlines={k: place(v) for k, v in outlines.items()},
+        description=f"{body.name}: the outline of its contact shape, its centre of mass G, the contact C",
+    )
+
+
 #: model name -> its drawing (models whose ModelSpec has no ``drawing`` attribute)
-DRAWINGS: dict = {"single_mode": single_mode(), "two_mode": two_mode(), "chaplygin_sleigh": chaplygin_sleigh()}
+DRAWINGS: dict = {"single_mode": single_mode(), "two_mode": two_mode(), "chaplygin_sleigh": chaplygin_sleigh(),
+                  "celt": celt(), "two_mode_rigid": two_mode_rigid()}
 
 
 def register(name: str, drawing: Drawing) -> None:
@@ -208,6 +377,8 @@ def module_source(system) -> str:
     if not spec.pose:
         return ""
     drawing = drawing_of(spec)
+    if drawing is None and getattr(system, "body", None) is not None:  # a rigid body without its own drawing
+        drawing = rigid_body(system.body)
     if drawing is None:
         return "\n\n#: this model has no drawing (derivation/drawing.py)\nDRAWING = None\n"
     return block_source(drawing, tuple(system.state) + tuple(spec.pose), spec.params, spec.name)
@@ -239,10 +410,12 @@ def block_source(drawing: Drawing, state, params, name: str = "model") -> str:
     missing = [q for q in drawing.magnify if q not in state]
     if missing:
         raise ValueError(f"drawing of {name}: `magnify` names {missing} are not states {state}")
+    if drawing.gauge and drawing.gauge not in state:
+        raise ValueError(f"drawing of {name}: `gauge` {drawing.gauge!r} is not a state {state}")
     meta = {
         "points": tuple(names), "segments": tuple(tuple(s) for s in drawing.segments), "contact": drawing.contact,
         "masses": tuple(drawing.masses), "magnify": tuple(drawing.magnify), "outlines": tuple(onames),
-        "description": drawing.description,
+        "description": drawing.description, **({"gauge": drawing.gauge} if drawing.gauge else {}),
     }
     nl = "\n"
     body = nl.join(pt_lines)

@@ -27,6 +27,7 @@ import math
 import sympy as sp
 
 from knifeedge.derive import ModelSpec
+from knifeedge.derive.drawing import Drawing, u
 
 g, r, c = sp.symbols("g r c", positive=True)
 x, y, q1, q2, q3 = sp.symbols("x y q1 q2 q3", real=True)
@@ -74,6 +75,22 @@ slip = centre_vel + omega.cross(contact - centre)
 heading = sp.Matrix([sp.cos(q1), sp.sin(q1), 0])
 across = vertical.cross(heading)
 
+# How the disk draws itself (knifeedge animate): its rim, two perpendicular diameters
+# that turn with it by q3 about the axle, the axle, the centre and the contact point.
+spoke = sp.cos(q3) * e_z + sp.sin(q3) * e_x   # e_z turned by q3 about the axle e_y
+across_spoke = sp.cos(q3) * e_x - sp.sin(q3) * e_z
+drawing = Drawing(
+    points={"C": tuple(contact), "centre": tuple(centre),
+            "spoke_a": tuple(centre + r * spoke), "spoke_b": tuple(centre - r * spoke),
+            "spoke_c": tuple(centre + r * across_spoke), "spoke_d": tuple(centre - r * across_spoke),
+            "axle_a": tuple(centre + r / 3 * e_y), "axle_b": tuple(centre - r / 3 * e_y)},
+    segments=(("spoke_a", "spoke_b"), ("spoke_c", "spoke_d"), ("axle_a", "axle_b")),
+    contact="C", masses=("centre",), magnify=(q2.name,),
+    outlines={"rim": tuple(centre + r * (sp.cos(u) * e_x + sp.sin(u) * e_z))},
+    gauge=q1_dot.name,
+    description="disk: its rim, two diameters turning with it, the axle, the centre and the contact point",
+)
+
 common = dict(
     coordinates=coordinates,
     velocities=velocities,
@@ -88,6 +105,7 @@ common = dict(
     state_order=(q2, q1_dot, q2_dot, q3_dot),
     validity={"full": {q2: math.pi / 2}},
     validity_description="the disk lies flat on the table at |q2| = pi/2; beyond, it would pass through it",
+    drawing=drawing,
 )
 
 units = {x: "m", y: "m", q1: "rad", q2: "rad", q3: "rad", g: "m/s^2", r: "m"}

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/rigid_emit.py (make derive) from the rigid body 'celt'
 through derivation/rigid.py (Lagrange-d'Alembert in body quasi-velocities).
-SymPy 1.14.0; input hash sha256:ec8bba181a4c506b9cce2cc751c13d0d0f24d1d8e6da3cc60be139de31508b75
+SymPy 1.14.0; input hash sha256:d8fe62e60a1cc04bbfdd8b0715e9228d35e51fed41ec823697d67fbca9c084c1
 
 Classical rattleback (celt): a rigid body with an ellipsoidal bottom (semi-axes a, b, c along the body axes x, y, z; centre of mass a distance h below the ellipsoid's centre), inertia tensor about the centre of mass with entries I_xx..I_yz in body axes, rolling without slipping on a horizontal table under gravity g, dissipation torque -sigma*omega.  State: upward vertical n and angular velocity omega in body axes, vertical spin omega_n = omega.n; pose: heading psi of the body x axis, centre of mass (x, y).
 
@@ -81,7 +81,7 @@ PRESETS = {'kane_levinson_1982': {'a': 0.2, 'b': 0.03, 'c': 0.02, 'h': 0.01, 'm'
 PRESET_SOURCES = {'kane_levinson_1982': 'Kane & Levinson, Int. J. Non-Linear Mech. 17 (1982) 175-186', 'schoemer': "E. Schoemer's rattleback (golden-ratio ellipsoid)"}
 #: the model file the body comes from
 SOURCE = 'knifeedge.derive.celt'
-INPUT_HASH = 'ec8bba181a4c506b9cce2cc751c13d0d0f24d1d8e6da3cc60be139de31508b75'
+INPUT_HASH = 'd8fe62e60a1cc04bbfdd8b0715e9228d35e51fed41ec823697d67fbca9c084c1'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 247, 'constants': 23, 'rhs_q': 250, 'rhs_pose': 285, 'rhs_pose_q': 286, 'pose_rates': 71, 'energy': 72, 'multipliers': 265, 'power_dissipated': 6}
@@ -894,5 +894,218 @@ def initial_state(n0=(0.0, 0.0, 1.0), omega0=(0.0, 0.0, 0.0), pose=None):
     return np.concatenate([s, pose])
 
 
-#: this model has no drawing (derivation/drawing.py)
-DRAWING = None
+
+#: how to draw the body (derivation/drawing.py): names of the rows of ``body_points``,
+#: segments between them, the contact point, the point masses, the tilts a picture may
+#: magnify, the outline curves of ``body_outlines``
+DRAWING = {'points': ('G', 'C', 'E', 'axis1_minus', 'axis1_plus', 'axis2_minus', 'axis2_plus', 'axis3_minus', 'axis3_plus'), 'segments': (('axis1_minus', 'axis1_plus'), ('axis2_minus', 'axis2_plus'), ('axis3_minus', 'axis3_plus')), 'contact': 'C', 'masses': ('G',), 'magnify': ('n_x', 'n_y'), 'outlines': ('section_xy', 'section_xz', 'section_yz'), 'description': "rattleback: the principal sections of its ellipsoid (semi-axes a, b, c, centre E a height h above the centre of mass G), its principal axes of inertia through G (turned by the chirality delta from the ellipsoid's axes), the contact point C; tilts magnified by scaling n_x, n_y"}
+
+
+@njit(cache=True)
+def body_points(s, p):
+    """World coordinates (z up, table z = 0) of DRAWING["points"] at the pose-extended state ``s``; shape (9, 3) (182 operations)."""
+    out = np.empty((9, 3))
+    n_x = s[0]
+    n_y = s[1]
+    n_z = s[2]
+    omega_x = s[3]
+    omega_y = s[4]
+    omega_z = s[5]
+    omega_n = s[6]
+    psi = s[7]
+    x = s[8]
+    y = s[9]
+    a = p[0]
+    b = p[1]
+    c = p[2]
+    h = p[3]
+    m = p[4]
+    g = p[5]
+    I_xx = p[6]
+    I_yy = p[7]
+    I_zz = p[8]
+    I_xy = p[9]
+    I_xz = p[10]
+    I_yz = p[11]
+    sigma = p[12]
+    _c0 = (a*a)
+    _c1 = (n_x*n_x)
+    _c2 = (n_y*n_y)
+    _c3 = (n_z*n_z)
+    _c4 = _c1 + _c2 + _c3
+    _c5 = 1/_c4
+    _c6 = _c1*_c5
+    _c7 = _c0*_c6
+    _c8 = (b*b)
+    _c9 = _c2*_c5*_c8
+    _c10 = (c*c)
+    _c11 = 1/math.sqrt(_c10*_c3*_c5 + _c7 + _c9)
+    _c12 = -h
+    _c13 = 1/math.sqrt(_c4)
+    _c14 = _c13*n_z
+    _c15 = -_c10*_c11*_c14 - _c12
+    _c16 = _c14*_c15
+    _c17 = _c11*_c7 + _c11*_c9 - _c16
+    _c18 = -x
+    _c19 = math.cos(psi)
+    _c20 = math.sqrt(1 - _c6)
+    _c21 = _c19*_c20
+    _c22 = _c13*n_x
+    _c23 = _c0*_c11*_c22
+    _c24 = 1/_c20
+    _c25 = _c24*n_y
+    _c26 = _c5*n_x
+    _c27 = _c19*_c26
+    _c28 = math.sin(psi)
+    _c29 = _c1/_c4**((3.0/2.0))
+    _c30 = _c24*n_z
+    _c31 = _c14*_c20 + _c29*_c30
+    _c32 = -_c25*_c27 - _c28*_c31
+    _c33 = _c13*n_y
+    _c34 = _c11*_c33*_c8
+    _c35 = -_c20*_c33 - _c25*_c29
+    _c36 = -_c27*_c30 - _c28*_c35
+    _c37 = -y
+    _c38 = _c20*_c28
+    _c39 = _c26*_c28
+    _c40 = _c19*_c31 - _c25*_c39
+    _c41 = _c19*_c35 - _c30*_c39
+    _c42 = 1/_c0
+    _c43 = ((1.0/2.0))*math.atan2(-2*I_xy, -I_xx + I_yy)
+    _c44 = math.cos(_c43)
+    _c45 = (_c44*_c44)
+    _c46 = 1/_c8
+    _c47 = math.sin(_c43)
+    _c48 = (_c47*_c47)
+    _c49 = 1/math.sqrt(_c42*_c45 + _c46*_c48)
+    _c50 = _c47*_c49
+    _c51 = _c44*_c49
+    _c52 = _c21*_c51 + _c32*_c50
+    _c53 = _c38*_c51 + _c40*_c50
+    _c54 = _c22*_c51 + _c33*_c50
+    _c55 = 1/math.sqrt(_c42*_c48 + _c45*_c46)
+    _c56 = _c47*_c55
+    _c57 = _c21*_c56
+    _c58 = _c44*_c55
+    _c59 = _c32*_c58
+    _c60 = _c38*_c56
+    _c61 = _c40*_c58
+    _c62 = _c22*_c56
+    _c63 = _c33*_c58
+    _c64 = -_c12 - c
+    _c65 = c + h
+    out[0, 0] = x
+    out[0, 1] = y
+    out[0, 2] = _c17
+    out[1, 0] = _c15*_c36 - _c18 - _c21*_c23 - _c32*_c34
+    out[1, 1] = _c15*_c41 - _c23*_c38 - _c34*_c40 - _c37
+    out[1, 2] = 0
+    out[2, 0] = _c36*h + x
+    out[2, 1] = _c41*h + y
+    out[2, 2] = _c14*h + _c17
+    out[3, 0] = -_c18 - _c52
+    out[3, 1] = -_c37 - _c53
+    out[3, 2] = _c0*_c1*_c11*_c5 + _c11*_c2*_c5*_c8 - _c16 - _c54
+    out[4, 0] = _c52 + x
+    out[4, 1] = _c53 + y
+    out[4, 2] = _c17 + _c54
+    out[5, 0] = _c57 - _c59 + x
+    out[5, 1] = _c60 - _c61 + y
+    out[5, 2] = _c17 + _c62 - _c63
+    out[6, 0] = -_c57 + _c59 + x
+    out[6, 1] = -_c60 + _c61 + y
+    out[6, 2] = _c17 - _c62 + _c63
+    out[7, 0] = _c36*_c64 + x
+    out[7, 1] = _c41*_c64 + y
+    out[7, 2] = _c14*_c64 + _c17
+    out[8, 0] = _c36*_c65 + x
+    out[8, 1] = _c41*_c65 + y
+    out[8, 2] = _c14*_c65 + _c17
+    return out
+
+
+@njit(cache=True)
+def body_outlines(s, p, uu):
+    """World coordinates of the curves DRAWING["outlines"] at the parameters ``uu`` in [0, 2 pi); shape (3, len(uu), 3) (114 operations)."""
+    out = np.empty((3, uu.shape[0], 3))
+    n_x = s[0]
+    n_y = s[1]
+    n_z = s[2]
+    omega_x = s[3]
+    omega_y = s[4]
+    omega_z = s[5]
+    omega_n = s[6]
+    psi = s[7]
+    x = s[8]
+    y = s[9]
+    a = p[0]
+    b = p[1]
+    c = p[2]
+    h = p[3]
+    m = p[4]
+    g = p[5]
+    I_xx = p[6]
+    I_yy = p[7]
+    I_zz = p[8]
+    I_xy = p[9]
+    I_xz = p[10]
+    I_yz = p[11]
+    sigma = p[12]
+    for j in range(uu.shape[0]):
+        u = uu[j]
+        _c0 = math.cos(psi)
+        _c1 = (n_x*n_x)
+        _c2 = (n_y*n_y)
+        _c3 = (n_z*n_z)
+        _c4 = _c1 + _c2 + _c3
+        _c5 = 1/_c4
+        _c6 = _c1*_c5
+        _c7 = math.sqrt(1 - _c6)
+        _c8 = math.cos(u)
+        _c9 = _c8*a
+        _c10 = _c7*_c9
+        _c11 = _c0*_c10
+        _c12 = 1/_c7
+        _c13 = _c12*n_z
+        _c14 = _c5*n_x
+        _c15 = _c0*_c14
+        _c16 = math.sin(psi)
+        _c17 = 1/math.sqrt(_c4)
+        _c18 = _c17*_c7
+        _c19 = _c12*n_y
+        _c20 = _c1/_c4**((3.0/2.0))
+        _c21 = -_c18*n_y - _c19*_c20
+        _c22 = -_c13*_c15 - _c16*_c21
+        _c23 = _c13*_c20 + _c18*n_z
+        _c24 = -_c15*_c19 - _c16*_c23
+        _c25 = math.sin(u)
+        _c26 = _c25*b
+        _c27 = _c10*_c16
+        _c28 = _c14*_c16
+        _c29 = _c0*_c21 - _c13*_c28
+        _c30 = _c0*_c23 - _c19*_c28
+        _c31 = _c17*n_z
+        _c32 = _c17*_c9*n_x
+        _c33 = _c17*n_y
+        _c34 = _c6*(a*a)
+        _c35 = _c2*_c5*(b*b)
+        _c36 = (c*c)
+        _c37 = 1/math.sqrt(_c3*_c36*_c5 + _c34 + _c35)
+        _c38 = _c34*_c37
+        _c39 = _c35*_c37
+        _c40 = -_c31*(-_c31*_c36*_c37 + h)
+        _c41 = _c25*c + h
+        _c42 = _c22*_c41 + x
+        _c43 = _c29*_c41 + y
+        _c44 = _c31*_c41 + _c38 + _c39 + _c40
+        _c45 = _c8*b
+        out[0, j, 0] = _c11 + _c22*h + _c24*_c26 + x
+        out[0, j, 1] = _c26*_c30 + _c27 + _c29*h + y
+        out[0, j, 2] = _c26*_c33 + _c31*h + _c32 + _c38 + _c39 + _c40
+        out[1, j, 0] = _c11 + _c42
+        out[1, j, 1] = _c27 + _c43
+        out[1, j, 2] = _c32 + _c44
+        out[2, j, 0] = _c24*_c45 + _c42
+        out[2, j, 1] = _c30*_c45 + _c43
+        out[2, j, 2] = _c33*_c45 + _c44
+    return out

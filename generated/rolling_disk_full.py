@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:f4ab23075479e22223559de41140aef094ee5e99c4eb51ec3d474651a213fc10
+SymPy 1.14.0; input hash sha256:32e2ca21cd2626c4bbc38fc6bcf8dcc31c2b7d86091575de3466ce14ca6f58c9
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table: heading q1, lean q2 from the vertical, rotation q3 about the axle, contact point (x, y).
 
@@ -62,7 +62,7 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'f4ab23075479e22223559de41140aef094ee5e99c4eb51ec3d474651a213fc10'
+INPUT_HASH = '32e2ca21cd2626c4bbc38fc6bcf8dcc31c2b7d86091575de3466ce14ca6f58c9'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 129, 'constants': 7, 'rhs_q': 125, 'rhs_pose': 134, 'rhs_pose_q': 130, 'pose_rates': 5, 'energy': 45, 'multipliers': 113}
@@ -402,5 +402,105 @@ def multipliers(s, p):
     return out
 
 
-#: this model has no drawing (derivation/drawing.py)
-DRAWING = None
+
+#: how to draw the body (derivation/drawing.py): names of the rows of ``body_points``,
+#: segments between them, the contact point, the point masses, the tilts a picture may
+#: magnify, the outline curves of ``body_outlines``
+DRAWING = {'points': ('C', 'centre', 'spoke_a', 'spoke_b', 'spoke_c', 'spoke_d', 'axle_a', 'axle_b'), 'segments': (('spoke_a', 'spoke_b'), ('spoke_c', 'spoke_d'), ('axle_a', 'axle_b')), 'contact': 'C', 'masses': ('centre',), 'magnify': ('q2',), 'outlines': ('rim',), 'description': 'disk: its rim, two diameters turning with it, the axle, the centre and the contact point', 'gauge': 'q1_dot'}
+
+
+@njit(cache=True)
+def body_points(s, p):
+    """World coordinates (z up, table z = 0) of DRAWING["points"] at the pose-extended state ``s``; shape (8, 3) (63 operations)."""
+    out = np.empty((8, 3))
+    q2 = s[0]
+    q1_dot = s[1]
+    q2_dot = s[2]
+    q3_dot = s[3]
+    q1 = s[4]
+    q3 = s[5]
+    x = s[6]
+    y = s[7]
+    g = p[0]
+    r = p[1]
+    _c0 = math.sin(q1)
+    _c1 = math.sin(q2)
+    _c2 = _c1*r
+    _c3 = _c0*_c2 + x
+    _c4 = math.cos(q1)
+    _c5 = _c2*_c4
+    _c6 = _c5 - y
+    _c7 = math.cos(q2)
+    _c8 = _c7*r
+    _c9 = math.sin(q3)
+    _c10 = _c4*_c9
+    _c11 = math.cos(q3)
+    _c12 = _c0*_c11
+    _c13 = r*(_c1*_c12 + _c10)
+    _c14 = _c0*_c9
+    _c15 = r*(-_c1*_c11*_c4 + _c14)
+    _c16 = -_c5 + y
+    _c17 = _c11*_c8
+    _c18 = -_c7*r
+    _c19 = r*(-_c1*_c14 + _c11*_c4)
+    _c20 = r*(_c1*_c10 + _c12)
+    _c21 = _c8*_c9
+    _c22 = ((1.0/3.0))*_c8
+    _c23 = _c0*_c22
+    _c24 = _c22*_c4
+    _c25 = ((1.0/3.0))*_c2
+    out[0, 0] = x
+    out[0, 1] = y
+    out[0, 2] = 0
+    out[1, 0] = _c3
+    out[1, 1] = -_c6
+    out[1, 2] = _c8
+    out[2, 0] = _c13 + _c3
+    out[2, 1] = _c15 + _c16
+    out[2, 2] = _c17 + _c8
+    out[3, 0] = -_c13 + _c3
+    out[3, 1] = -_c15 - _c6
+    out[3, 2] = -_c17 - _c18
+    out[4, 0] = _c19 + _c3
+    out[4, 1] = _c16 + _c20
+    out[4, 2] = -_c18 - _c21
+    out[5, 0] = -_c19 + _c3
+    out[5, 1] = -_c20 - _c6
+    out[5, 2] = _c21 + _c8
+    out[6, 0] = -_c23 + _c3
+    out[6, 1] = _c16 + _c24
+    out[6, 2] = _c25 + _c8
+    out[7, 0] = _c23 + _c3
+    out[7, 1] = -_c24 - _c6
+    out[7, 2] = -_c18 - _c25
+    return out
+
+
+@njit(cache=True)
+def body_outlines(s, p, uu):
+    """World coordinates of the curves DRAWING["outlines"] at the parameters ``uu`` in [0, 2 pi); shape (1, len(uu), 3) (25 operations)."""
+    out = np.empty((1, uu.shape[0], 3))
+    q2 = s[0]
+    q1_dot = s[1]
+    q2_dot = s[2]
+    q3_dot = s[3]
+    q1 = s[4]
+    q3 = s[5]
+    x = s[6]
+    y = s[7]
+    g = p[0]
+    r = p[1]
+    for j in range(uu.shape[0]):
+        u = uu[j]
+        _c0 = math.sin(q1)
+        _c1 = math.sin(q2)
+        _c2 = _c0*_c1
+        _c3 = math.cos(q1)
+        _c4 = math.cos(u)
+        _c5 = math.sin(u)
+        _c6 = _c1*_c3
+        _c7 = r*math.cos(q2)
+        out[0, j, 0] = _c2*r + r*(_c2*_c5 + _c3*_c4) + x
+        out[0, j, 1] = -_c6*r + r*(_c0*_c4 - _c5*_c6) + y
+        out[0, j, 2] = _c5*_c7 + _c7
+    return out

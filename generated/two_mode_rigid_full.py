@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/rigid_emit.py (make derive) from the rigid body 'two_mode_rigid'
 through derivation/rigid.py (Lagrange-d'Alembert in body quasi-velocities).
-SymPy 1.14.0; input hash sha256:3d4ec7ed921ece3b1fd4b1851f0e89f9d9e5cc258f7adb6c4ec6910aa5aa1660
+SymPy 1.14.0; input hash sha256:2c4255ea46a19d5abf900e40ff92212a2fc9531af3acf7857a2e133748daf337
 
 Chiral knife edge of the paper's section III as the real rigid body: massless inverted-U bar of half-length L, masses M/2 a distance ell below its ends, contact at the lowest point of a circle of radius D in a vertical plane at the chiral angle alpha to the bar; per unit mass, exact in the tilts.
 
@@ -72,7 +72,7 @@ PRESETS = {}
 PRESET_SOURCES = {}
 #: the model file the body comes from
 SOURCE = 'knifeedge.derive.rigid_knife_edge'
-INPUT_HASH = '3d4ec7ed921ece3b1fd4b1851f0e89f9d9e5cc258f7adb6c4ec6910aa5aa1660'
+INPUT_HASH = '2c4255ea46a19d5abf900e40ff92212a2fc9531af3acf7857a2e133748daf337'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 253, 'constants': 25, 'rhs_q': 221, 'rhs_pose': 293, 'rhs_pose_q': 261, 'pose_rates': 73, 'energy': 56, 'multipliers': 267}
@@ -800,5 +800,154 @@ def initial_state(n0=(0.0, 0.0, 1.0), omega0=(0.0, 0.0, 0.0), pose=None):
     return np.concatenate([s, pose])
 
 
-#: this model has no drawing (derivation/drawing.py)
-DRAWING = None
+
+#: how to draw the body (derivation/drawing.py): names of the rows of ``body_points``,
+#: segments between them, the contact point, the point masses, the tilts a picture may
+#: magnify, the outline curves of ``body_outlines``
+DRAWING = {'points': ('O', 'end_minus', 'end_plus', 'mass_minus', 'mass_plus', 'C', 'circle_centre'), 'segments': (('end_minus', 'end_plus'), ('end_minus', 'mass_minus'), ('end_plus', 'mass_plus'), ('O', 'circle_centre')), 'contact': 'C', 'masses': ('mass_minus', 'mass_plus'), 'magnify': ('n_x', 'n_y'), 'outlines': ('contact_circle',), 'description': 'inverted-U bar of half-length L (middle point O), masses M/2 hanging ell below its ends, the contact circle of radius D at the chiral angle alpha, contact point C its lowest point; tilts magnified by scaling n_x, n_y'}
+
+
+@njit(cache=True)
+def body_points(s, p):
+    """World coordinates (z up, table z = 0) of DRAWING["points"] at the pose-extended state ``s``; shape (7, 3) (122 operations)."""
+    out = np.empty((7, 3))
+    n_x = s[0]
+    n_y = s[1]
+    n_z = s[2]
+    omega_x = s[3]
+    omega_y = s[4]
+    omega_z = s[5]
+    omega_n = s[6]
+    psi = s[7]
+    x = s[8]
+    y = s[9]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+    _c0 = math.cos(psi)
+    _c1 = (n_x*n_x)
+    _c2 = (n_z*n_z)
+    _c3 = _c1 + _c2 + (n_y*n_y)
+    _c4 = 1/_c3
+    _c5 = math.sqrt(-_c1*_c4 + 1)
+    _c6 = 1/_c5
+    _c7 = _c6*n_z
+    _c8 = _c4*n_x
+    _c9 = _c7*_c8
+    _c10 = math.sin(psi)
+    _c11 = 1/math.sqrt(_c3)
+    _c12 = _c11*n_y
+    _c13 = _c6*n_y
+    _c14 = _c1/_c3**((3.0/2.0))
+    _c15 = -_c12*_c5 - _c13*_c14
+    _c16 = -_c0*_c9 - _c10*_c15
+    _c17 = _c16*ell + x
+    _c18 = _c0*_c15 - _c10*_c9
+    _c19 = _c18*ell + y
+    _c20 = _c11*n_z
+    _c21 = _c11*n_x
+    _c22 = math.sin(alpha)
+    _c23 = math.cos(alpha)
+    _c24 = _c11*_c23*n_y - _c21*_c22
+    _c25 = _c21 + _c22*_c24
+    _c26 = _c12 - _c23*_c24
+    _c27 = D/math.sqrt(_c2*_c4 + (_c25*_c25) + (_c26*_c26))
+    _c28 = D + ell
+    _c29 = -_c20*_c27 + _c28
+    _c30 = _c25*_c27
+    _c31 = _c26*_c27
+    _c32 = _c12*_c31 - _c20*_c29 + _c21*_c30
+    _c33 = _c20*ell + _c32
+    _c34 = L*_c5
+    _c35 = _c0*_c34
+    _c36 = _c10*_c34
+    _c37 = L*_c21
+    _c38 = -_c37
+    _c39 = -x
+    _c40 = -y
+    _c41 = _c30*_c5
+    _c42 = _c13*_c8
+    _c43 = _c14*_c7 + _c20*_c5
+    out[0, 0] = _c17
+    out[0, 1] = _c19
+    out[0, 2] = _c33
+    out[1, 0] = _c17 - _c35
+    out[1, 1] = _c19 - _c36
+    out[1, 2] = _c33 + _c38
+    out[2, 0] = _c17 + _c35
+    out[2, 1] = _c19 + _c36
+    out[2, 2] = _c33 + _c37
+    out[3, 0] = -_c35 - _c39
+    out[3, 1] = -_c36 - _c40
+    out[3, 2] = _c32 + _c38
+    out[4, 0] = _c35 + x
+    out[4, 1] = _c36 + y
+    out[4, 2] = _c32 + _c37
+    out[5, 0] = -_c0*_c41 + _c16*_c29 - _c31*(-_c0*_c42 - _c10*_c43) - _c39
+    out[5, 1] = -_c10*_c41 + _c18*_c29 - _c31*(_c0*_c43 - _c10*_c42) - _c40
+    out[5, 2] = 0
+    out[6, 0] = _c16*_c28 + x
+    out[6, 1] = _c18*_c28 + y
+    out[6, 2] = _c20*_c28 + _c32
+    return out
+
+
+@njit(cache=True)
+def body_outlines(s, p, uu):
+    """World coordinates of the curves DRAWING["outlines"] at the parameters ``uu`` in [0, 2 pi); shape (1, len(uu), 3) (102 operations)."""
+    out = np.empty((1, uu.shape[0], 3))
+    n_x = s[0]
+    n_y = s[1]
+    n_z = s[2]
+    omega_x = s[3]
+    omega_y = s[4]
+    omega_z = s[5]
+    omega_n = s[6]
+    psi = s[7]
+    x = s[8]
+    y = s[9]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+    for j in range(uu.shape[0]):
+        u = uu[j]
+        _c0 = math.cos(psi)
+        _c1 = (n_x*n_x)
+        _c2 = (n_z*n_z)
+        _c3 = _c1 + _c2 + (n_y*n_y)
+        _c4 = 1/_c3
+        _c5 = math.sqrt(-_c1*_c4 + 1)
+        _c6 = math.cos(alpha)
+        _c7 = D*math.sin(u)
+        _c8 = _c6*_c7
+        _c9 = _c5*_c8
+        _c10 = 1/_c5
+        _c11 = _c10*n_y
+        _c12 = _c4*n_x
+        _c13 = _c0*_c12
+        _c14 = math.sin(psi)
+        _c15 = 1/math.sqrt(_c3)
+        _c16 = _c15*n_z
+        _c17 = _c1/_c3**((3.0/2.0))
+        _c18 = _c10*n_z
+        _c19 = _c16*_c5 + _c17*_c18
+        _c20 = math.sin(alpha)
+        _c21 = _c20*_c7
+        _c22 = D + ell
+        _c23 = -D*math.cos(u) + _c22
+        _c24 = _c15*n_y
+        _c25 = -_c11*_c17 - _c24*_c5
+        _c26 = _c12*_c14
+        _c27 = _c15*n_x
+        _c28 = _c15*_c6*n_y - _c20*_c27
+        _c29 = _c20*_c28 + _c27
+        _c30 = _c24 - _c28*_c6
+        _c31 = D/math.sqrt(_c2*_c4 + (_c29*_c29) + (_c30*_c30))
+        out[0, j, 0] = _c0*_c9 + _c21*(-_c11*_c13 - _c14*_c19) + _c23*(-_c13*_c18 - _c14*_c25) + x
+        out[0, j, 1] = _c14*_c9 + _c21*(_c0*_c19 - _c11*_c26) + _c23*(_c0*_c25 - _c18*_c26) + y
+        out[0, j, 2] = _c16*_c23 - _c16*(-_c16*_c31 + _c22) + _c21*_c24 + _c24*_c30*_c31 + _c27*_c29*_c31 + _c27*_c8
+    return out

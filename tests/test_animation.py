@@ -333,7 +333,7 @@ def test_mp4_frames_are_piped_to_ffmpeg(tmp_path, monkeypatch):
 def test_drawing_refuses_inconsistent_descriptions():
     """A drawing naming undefined points, undeclared symbols or unknown tilt states is refused before emitting."""
     sp = pytest.importorskip("sympy")
-    from derivation import drawing, models
+    from knifeedge.derive import drawing, models
 
     with pytest.raises(ValueError, match="undefined point"):
         drawing.Drawing(points={"A": (0, 0, 0)}, segments=(("A", "B"),), contact="A")
@@ -358,3 +358,265 @@ def test_rerun_with_the_pose_keeps_the_scenes_reversal_times():
     assert len(own) == len(drawn) == 3
     np.testing.assert_allclose(drawn, own, rtol=1e-9)
     # (a plain re-run with the pose in the error norm puts the second reversal ~0.2 % later)
+
+
+# -- rigid bodies and the rolling disk: drawn points against the pose, computed independently ----------------------
+def _rotation_from_vertical_and_heading(n, psi, axis=(1.0, 0.0, 0.0)):
+    """Body -> world rotation with the world vertical along ``n`` (body axes) and the body ``axis`` heading ``psi``.
+
+    Found by SciPy's Wahba solver (``Rotation.align_vectors``, the vertical held exactly), not by the drawing's
+    construction.
+    """
+    from scipy.spatial.transform import Rotation
+
+    n = np.asarray(n, float) / np.linalg.norm(n)
+    rot, _ = Rotation.align_vectors([[0.0, 0.0, 1.0], [math.cos(psi), math.sin(psi), 0.0]],
+                                    [n, np.asarray(axis, float)], weights=[np.inf, 1.0])
+    return rot.as_matrix()
+
+
+def test_celt_drawing_is_the_ellipsoid_at_its_pose():
+    """Celt (derivation/celt.py): centre of mass at the height of the ellipsoid's support function, the contact
+    point the ellipsoid's lowest point, the sections on the ellipsoid, the axes the inertia's eigenvectors."""
+    m = ke.load("celt", "full", pose=True)
+    p = m.preset("kane_levinson_1982")
+    par = dict(zip(m.param_names, p))
+    a, b, c, h = par["a"], par["b"], par["c"], par["h"]
+    inertia = np.array([[par["I_xx"], par["I_xy"], par["I_xz"]], [par["I_xy"], par["I_yy"], par["I_yz"]],
+                        [par["I_xz"], par["I_yz"], par["I_zz"]]])
+    E = np.diag([a * a, b * b, c * c])
+    for n0, psi, x, y in (((0.1, 0.05, 1.0), 0.3, 0.01, 0.02), ((-0.3, 0.2, 0.9), -2.0, -0.5, 0.7)):
+        s = m.initial_state(n0=n0, omega0=(0.0, 0.0, 5.0), pose=(psi, x, y))
+        pt = _points(m, s, p)
+        R = _rotation_from_vertical_and_heading(n0, psi)
+        ez = np.array([0.0, 0.0, 1.0])
+        nh = np.asarray(n0) / np.linalg.norm(n0)
+        # centre of the ellipsoid at the height of its support function in the vertical, G h below it along body z
+        centre = np.array([x, y, 0.0]) + R @ [0.0, 0.0, h]
+        centre[2] = math.sqrt(nh @ E @ nh)
+        G = centre - R @ [0.0, 0.0, h]
+        np.testing.assert_allclose(pt["G"], G, atol=1e-14)
+        np.testing.assert_allclose(G[:2], [x, y], atol=1e-14)
+        Ew = R @ E @ R.T
+        np.testing.assert_allclose(pt["C"], centre - Ew @ ez / math.sqrt(ez @ Ew @ ez), atol=1e-14)
+        u = np.linspace(0, 2 * math.pi, 721)
+        curves = m.module.body_outlines(s, p, u)
+        for curve in curves:  # every drawn section lies on the ellipsoid and above the table
+            body = (curve - centre) @ R  # rows R^T (P - centre)
+            np.testing.assert_allclose(np.sum(body**2 / np.array([a, b, c]) ** 2, axis=1), 1.0, rtol=1e-12)
+            assert curve[:, 2].min() > -1e-15
+        w, v = np.linalg.eigh(inertia)
+        for name, k in (("axis1", 0), ("axis2", 1), ("axis3", 2)):
+            d = pt[f"{name}_plus"] - pt[f"{name}_minus"]
+            expect = R @ v[:, np.argsort(w)[k] if k < 2 else int(np.argmax(np.abs(v[2])))]
+            assert abs(d @ expect) / np.linalg.norm(d) == pytest.approx(1.0, abs=1e-12)
+    assert m.module.DRAWING["magnify"] == ("n_x", "n_y")
+
+
+def test_two_mode_rigid_drawing_is_the_inverted_u_at_its_pose():
+    """Rigid knife edge (derivation/rigid_knife_edge.py, Fig. sketch_2modes): masses at G +- L x_body, bar ends
+    ell above them, the contact circle of radius D in the plane at the chiral angle alpha, touching the table."""
+    m = ke.load("two_mode_rigid", "full", pose=True)
+    par = {"g": 1.0, "ell": 1.0, "L": 2.0, "D": 0.5, "alpha": math.pi / 4}
+    p = m.params(par)
+    L, ell, D, alpha = par["L"], par["ell"], par["D"], par["alpha"]
+    n0, psi, x, y = (0.2, -0.1, 1.0), 0.8, 0.3, -0.2
+    s = m.initial_state(n0=n0, omega0=(0.0, 0.0, 0.1), pose=(psi, x, y))
+    pt = _points(m, s, p)
+    R = _rotation_from_vertical_and_heading(n0, psi)
+    k_w = R @ [-math.sin(alpha), math.cos(alpha), 0.0]  # normal of the circle's plane
+    cz = D * math.sqrt(1.0 - k_w[2] ** 2)  # height of the circle's centre above the table: it touches it
+    G = np.array([x, y, cz - (R @ [0.0, 0.0, ell + D])[2]])
+    np.testing.assert_allclose(pt["mass_minus"], G - L * R[:, 0], atol=1e-14)
+    np.testing.assert_allclose(pt["mass_plus"], G + L * R[:, 0], atol=1e-14)
+    for end, mass in (("end_minus", "mass_minus"), ("end_plus", "mass_plus")):
+        np.testing.assert_allclose(pt[end] - pt[mass], ell * R[:, 2], atol=1e-14)
+    circle = m.module.body_outlines(s, p, np.linspace(0, 2 * math.pi, 20001))[0]
+    np.testing.assert_allclose(np.linalg.norm(circle - pt["circle_centre"], axis=1), D, rtol=1e-12)
+    np.testing.assert_allclose((circle - pt["circle_centre"]) @ k_w, 0.0, atol=1e-14)
+    assert circle[:, 2].min() == pytest.approx(0.0, abs=1e-8)
+    assert np.linalg.norm(circle[np.argmin(circle[:, 2])] - pt["C"]) < 1e-3 * D
+    assert pt["C"][2] == pytest.approx(0.0, abs=1e-15)
+
+
+def _disk_points(m, s, p):
+    return _points(m, np.asarray(s, float), np.asarray(p, float))
+
+
+def test_rolling_disk_drawing_is_the_disk_at_its_pose():
+    """Rolling disk (examples/rolling_disk.py): contact (x, y, 0), centre r cos(q2) high, the rim a circle of
+    radius r normal to the axle (heading q1, lean q2: axle (-sin q1 cos q2, cos q1 cos q2, sin q2)), through C."""
+    m = ke.load("rolling_disk", "full", pose=True)
+    r_ = 0.1
+    p = m.params(g=9.81, r=r_)
+    q1, q2, q3, x, y = 0.7, 0.3, 1.1, 0.4, -0.2
+    s = m.state(q2=q2, q1_dot=0.0, q2_dot=0.0, q3_dot=8.0, q1=q1, q3=q3, x=x, y=y)
+    pt = _disk_points(m, s, p)
+    axle = np.array([-math.sin(q1) * math.cos(q2), math.cos(q1) * math.cos(q2), math.sin(q2)])
+    np.testing.assert_allclose(pt["C"], [x, y, 0.0], atol=1e-15)
+    assert pt["centre"][2] == pytest.approx(r_ * math.cos(q2), rel=1e-14)
+    assert np.linalg.norm(pt["centre"] - pt["C"]) == pytest.approx(r_, rel=1e-14)
+    assert (pt["centre"] - pt["C"]) @ axle == pytest.approx(0.0, abs=1e-15)
+    np.testing.assert_allclose(pt["axle_a"] - pt["axle_b"], 2 * r_ / 3 * axle, atol=1e-15)
+    rim = m.module.body_outlines(s, p, np.linspace(0, 2 * math.pi, 3601))[0]
+    np.testing.assert_allclose(np.linalg.norm(rim - pt["centre"], axis=1), r_, rtol=1e-13)
+    np.testing.assert_allclose((rim - pt["centre"]) @ axle, 0.0, atol=1e-15)
+    assert rim[:, 2].min() == pytest.approx(0.0, abs=1e-6)
+    assert m.module.DRAWING["gauge"] == "q1_dot" and m.module.DRAWING["magnify"] == ("q2",)
+
+
+def test_drawn_rigid_bodies_roll_without_slipping():
+    """Along runs with the pose, the drawn points move as a rigid body about the contact at rest: the velocity of
+    any drawn point (finite differences) is omega x (P - C).  Disk: omega = q1_dot z + q2_dot u_q1 + q3_dot axle
+    (its spokes turn by q3); celt: omega = R omega_body with R found from n and psi as in the test above."""
+    t = np.linspace(0.0, 0.5, 2001)
+    m = ke.load("rolling_disk", "full", pose=True)
+    r = ke.simulate(m, m.state(q2=0.2, q1_dot=0.5, q2_dot=0.3, q3_dot=8.0, q1=0.0, q3=0.0, x=0.0, y=0.0), (0.0, 0.5),
+                    m.params(g=9.81, r=0.1), t_eval=t, rtol=1e-12, atol=1e-14)
+    names = m.module.DRAWING["points"]
+    pts = np.array([m.module.body_points(np.ascontiguousarray(r.y[:, j]), r.p) for j in range(t.size)])
+    vel = np.gradient(pts, t, axis=0, edge_order=2)
+    q1, q2 = r["q1"], r["q2"]
+    heading = np.stack([np.cos(q1), np.sin(q1), 0 * q1], 1)
+    axle = np.stack([-np.sin(q1) * np.cos(q2), np.cos(q1) * np.cos(q2), np.sin(q2)], 1)
+    omega = (r["q1_dot"][:, None] * [0.0, 0.0, 1.0] + r["q2_dot"][:, None] * heading + r["q3_dot"][:, None] * axle)
+    c = pts[:, names.index("C")]
+    for k in ("spoke_a", "spoke_c", "centre"):
+        expect = np.cross(omega, pts[:, names.index(k)] - c)
+        np.testing.assert_allclose(vel[5:-5, names.index(k)], expect[5:-5], atol=1e-5 * np.abs(expect).max())
+
+    m = ke.load("celt", "full", pose=True)
+    p = m.preset("kane_levinson_1982")
+    y0 = m.initial_state(n0=(0.05, 0.03, 1.0), omega0=(0.3, -0.2, 5.0), pose=(0.4, 0.0, 0.0))
+    t = np.linspace(0.0, 0.05, 5001)  # it rocks at up to ~30 rad/s: a fine grid for the finite differences
+    r = ke.simulate(m, y0, (0.0, 0.05), p, t_eval=t, rtol=1e-12, atol=1e-14)
+    names = m.module.DRAWING["points"]
+    pts = np.array([m.module.body_points(np.ascontiguousarray(r.y[:, j]), r.p) for j in range(t.size)])
+    vel = np.gradient(pts, t, axis=0, edge_order=2)
+    for j in range(10, t.size - 10, 249):
+        R = _rotation_from_vertical_and_heading(r.y[:3, j], r["psi"][j])
+        w = R @ r.y[3:6, j]
+        c = pts[j, names.index("C")]
+        for k in ("G", "axis1_plus", "axis2_minus", "axis3_plus"):
+            expect = np.cross(w, pts[j, names.index(k)] - c)
+            np.testing.assert_allclose(vel[j, names.index(k)], expect, atol=1e-5 * np.linalg.norm(w) * 0.2)  # finite differences: O(dt^2 |w|^3)
+
+
+def test_a_rigid_body_without_its_own_drawing_gets_one():
+    """examples/rolling_disk_rigid.py (front end, no drawing of its own): its rim, its centre of mass at height
+    r cos(lean), lean = asin(|n_y|) (axle along body y), and the contact on the table r from it."""
+    sp = pytest.importorskip("sympy")
+    import importlib.util
+    from pathlib import Path
+
+    from knifeedge.derive import drawing, rigid
+
+    path = Path(__file__).resolve().parent.parent / "examples" / "rolling_disk_rigid.py"
+    spec = importlib.util.spec_from_file_location("rolling_disk_rigid_example", path)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    d = drawing.rigid_body(mod.BODY)
+    syms = (*rigid.STATE, *rigid.POSE)
+    n = np.array([0.3, -0.4, 0.8])
+    vals = (*n, 0.0, 0.0, 0.0, 0.0, 0.5, 0.1, 0.2)
+    sub = {**dict(zip(syms, vals)), mod.r: 0.1, mod.g: 9.81, mod.m: 1.0}
+    pt = {k: np.array([float(c.subs(sub)) for c in v]) for k, v in d.points.items()}
+    lean = math.asin(abs(n[1]) / np.linalg.norm(n))
+    np.testing.assert_allclose(pt["G"], [0.1, 0.2, 0.1 * math.cos(lean)], atol=1e-14)
+    assert pt["C"][2] == pytest.approx(0.0, abs=1e-15)
+    assert np.linalg.norm(pt["C"] - pt["G"]) == pytest.approx(0.1, rel=1e-14)
+    rim = sp.lambdify(drawing.u, sp.Matrix(d.outlines["rim"]).subs(sub), "numpy")
+    ring = np.array([np.ravel(rim(v)) for v in np.linspace(0, 2 * math.pi, 721)])
+    np.testing.assert_allclose(np.linalg.norm(ring - pt["G"], axis=1), 0.1, rtol=1e-13)
+    assert ring[:, 2].min() == pytest.approx(0.0, abs=1e-5)
+
+
+def test_celt_frames_differ_where_it_rocks():
+    """The celt drawn from the scene's run: the 3D view changes between frames while it rocks."""
+    mo = an.motion("celt", frames=30)
+    r = an.FrameRenderer(mo, fps=10, magnify=1.0, size=(6.0, 3.4), dpi=50)
+    k = int(np.argmin(np.abs(mo.t - mo.reversal_times[0])))
+    a, b = r.render(k), r.render(k + 1)
+    h, w, _ = a.shape
+    body = (slice(int(0.1 * h), int(0.9 * h)), slice(0, int(0.6 * w)))
+    assert np.count_nonzero(np.any(a[body] != b[body], axis=2)) > 50
+
+
+def test_mp4_with_the_real_ffmpeg_opens_with_the_stated_frames(tmp_path):
+    """With ffmpeg installed (never required: skipped without it), the MP4 opens (ffprobe) with every frame."""
+    import json
+    import shutil
+    import subprocess
+
+    if shutil.which("ffmpeg") is None or shutil.which("ffprobe") is None:
+        pytest.skip("ffmpeg/ffprobe not on the PATH: MP4 output not checked (GIF needs no system dependency)")
+    out = tmp_path / "spin.mp4"
+    info = ke.animate("numerical", out, frames=9, fps=10, size=(4.0, 2.5), dpi=42)
+    probe = subprocess.run(["ffprobe", "-v", "error", "-count_frames", "-select_streams", "v:0", "-show_entries",
+                            "stream=codec_name,width,height,nb_read_frames,avg_frame_rate", "-of", "json", str(out)],
+                           capture_output=True, text=True, check=True)
+    (stream,) = json.loads(probe.stdout)["streams"]
+    assert info.n_frames == 9 and int(stream["nb_read_frames"]) == 9
+    assert stream["codec_name"] == "h264" and stream["avg_frame_rate"] == "10/1"
+    assert (int(stream["width"]), int(stream["height"])) == (168, 106)  # 4 x 2.5 in at 42 dpi: 168 x 105, padded to even (yuv420p)
+
+
+def _chromium():
+    import shutil
+
+    return next((p for p in (shutil.which("chromium"), shutil.which("chromium-browser"), shutil.which("google-chrome"))
+                 if p), None)
+
+
+def test_figures_page_loads_its_figures_and_animations_in_a_browser(tmp_path, monkeypatch):
+    """The figures page, served over HTTP and opened in headless Chromium (skipped without it): every image
+    (figure PNG and animation GIF) loads, at the pixel size of its file."""
+    import functools
+    import http.server
+    import json
+    import re
+    import subprocess
+    import threading
+
+    from knifeedge import figures
+
+    exe = _chromium()
+    if exe is None:
+        pytest.skip("chromium not found: the figures page was not opened in a browser")
+    monkeypatch.setattr(figures, "ANIMATIONS", {"numerical": {"frames": 6, "fps": 10, "size": (4.0, 2.5), "dpi": 40}})
+    site = tmp_path / "figures"
+    recs = figures.make_figures(site, names=["numerical"], max_workers=1, progress=False)
+    assert recs[0]["ok"] and recs[0]["animation"]["ok"]
+    probe = ("<script>window.addEventListener('load', function () {"
+             "var out = document.createElement('pre'); out.id = 'loaded';"
+             "out.textContent = JSON.stringify(Array.from(document.images).map(function (i) {"
+             "return [i.getAttribute('src'), i.complete, i.naturalWidth, i.naturalHeight]; }));"
+             "document.body.appendChild(out); });</script></body>")
+    (site / "check.html").write_text((site / "index.html").read_text().replace("</body>", probe))
+    handler = functools.partial(http.server.SimpleHTTPRequestHandler, directory=str(site))
+    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
+    server.RequestHandlerClass.log_message = lambda *a: None
+    thread = threading.Thread(target=server.serve_forever, daemon=True)
+    thread.start()
+    try:
+        url = f"http://127.0.0.1:{server.server_address[1]}/check.html"
+        dom = subprocess.run([exe, "--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
+                              "--disable-component-update", "--no-first-run", f"--user-data-dir={tmp_path / 'profile'}",
+                              "--virtual-time-budget=10000", "--dump-dom", url],
+                             capture_output=True, text=True, timeout=600).stdout
+    finally:
+        server.shutdown()
+        server.server_close()
+    found = re.search(r"<pre id=\"loaded\">(.*?)</pre>", dom, re.S)
+    assert found, "the page's load event never fired"
+    images = json.loads(html_unescape(found.group(1)))
+    assert sorted(src for src, *_ in images) == ["numerical.gif", "numerical.png"]
+    for src, complete, width, height in images:
+        with Image.open(site / src) as im:
+            assert complete and (width, height) == im.size, src
+
+
+def html_unescape(text: str) -> str:
+    import html
+
+    return html.unescape(text)

@@ -74,7 +74,7 @@ class Motion:
     @property
     def spin_y(self) -> np.ndarray:
         """Spin rate over the whole run."""
-        return self.run_y[self.model.index(self.model.spin_name)]
+        return self.run_y[self.model.index(gauge_name(self.model))]
 
     @property
     def drawing(self) -> dict:
@@ -286,6 +286,16 @@ def _motion_of_result(result, frames: int) -> Motion:
                   f"({result.t.size} samples, cubic interpolation)")
 
 
+def gauge_name(model) -> str:
+    """The state shown as the spin rate: the drawing's ``gauge``, else the model's spin (first reversal event)."""
+    drawing = getattr(model.module, "DRAWING", None) or {}
+    name = drawing.get("gauge") or model.spin_name
+    if name is None:
+        raise ValueError(f"model {model.name} names no spin rate to show: give its drawing a `gauge` state "
+                         "(derivation/drawing.py) or the model a reversal event")
+    return name
+
+
 def _has_pose(name: str, fidelity: str) -> bool:
     from .generated import MODULES
 
@@ -338,7 +348,7 @@ def frame_times(t: np.ndarray, y: np.ndarray, model, reversal_times, frames: int
     t0, t1 = float(t[0]), float(t[-1])
     span = t1 - t0
     grid = np.linspace(t0, t1, 20001)
-    spin = np.abs(y[model.index(model.spin_name)])
+    spin = np.abs(y[model.index(gauge_name(model))])
     revs = [float(r) for r in reversal_times if t0 < r < t1]
     inner, outer = [], []
     for r in revs:
@@ -472,7 +482,7 @@ class FrameRenderer:
             ga.axvline(r, color="k", ls=":", lw=0.8)
         ga.set_xlim(*mo.t_span)
         ga.tick_params(labelsize=6)
-        spin_name = mo.model.spin_name
+        spin_name = gauge_name(mo.model)
         ga.set_xlabel("t", fontsize=7, labelpad=1)
         ga.set_title(f"spin rate {spin_name} (dotted: reversals)", fontsize=7)
         self.spin_text = ga.text(0.02, 0.04, "", transform=ga.transAxes, fontsize=7, color="C3")
@@ -542,7 +552,9 @@ class FrameRenderer:
         """Curved arrow over the body: length proportional to |spin rate|, head in its sense."""
         s = self.spin[k] / self.spin_max
         centre = self.pts[k].mean(0)
-        heading = self.mo.y[self.mo.model.index("phi"), k] if "phi" in self.mo.model.state_names else 0.0
+        a, b = self.seg[0]  # the arc starts over the body's main member (first segment)
+        d = self.pts[k, b, :2] - self.pts[k, a, :2]
+        heading = math.atan2(d[1], d[0]) if np.any(d) else 0.0
         if abs(s) < 1e-3:
             self.arc.set_data_3d([], [], [])
             self.arc_head.set_data_3d([], [], [])
