@@ -375,15 +375,21 @@ def test_knife_edge_rigid_scene_reports_the_comparison():
 
 
 def test_knife_edge_vs_celt_scene_measures_the_spin_dependence():
-    """Scene knife_edge_vs_celt: the knife edge's reversal shortens with spin (paper Eq. tr), the
-    Kane & Levinson celt's lengthens over 1-5 rad/s; the reported exponents are those of the reported times."""
+    """Scene knife_edge_vs_celt: the 1/spin law of the paper's Eq. tr and of Garcia & Hubbard (1988, Eq. 46').
+
+    With initial tilts in proportion to the spin the ratio of initial to largest tilt is the same at every
+    spin, so the amplitude equations give t_R * spin = const exactly (the knife edge's Chap1/Chap2 and
+    the celt's Moffatt-Tokieda equations are invariant under A -> s A, spin -> s spin, t -> t/s): the fitted
+    exponent is -1 to within the finite-amplitude corrections, 0.02 (measured: 1e-3)."""
     from knifeedge.scenes.common import fit_power_law
 
     res = ke.scene("knife_edge_vs_celt")()
     assert set(res.scene.reports) <= set(res.numbers)
-    for body, sign in (("knife_edge", -1), ("celt", 1)):
-        k, _, _ = fit_power_law(res.numbers[f"spins_{body}"], res.numbers[f"first_reversal_{body}"])
-        assert k == pytest.approx(res.numbers[f"exponent_{body}"]) and np.sign(k) == sign
+    for body in ("knife_edge", "celt"):
+        k, se, _ = fit_power_law(res.numbers[f"spins_{body}"], res.numbers[f"first_reversal_{body}"])
+        assert k == pytest.approx(res.numbers[f"exponent_{body}"])
+        assert k == pytest.approx(-1.0, abs=0.02)
+    assert all(v == "supports" for _, v, _ in res.claims), res.summary()
 
 
 # ---------------------------------------------------------------- small-tilt fidelities of the celt

@@ -28,7 +28,7 @@ import math
 import numpy as np
 
 from .base import RunSpec, Scene, SceneResult
-from .common import require_success
+from .common import first_reversal, require_success
 
 PARAMS = {"g": 1.0, "ell": 1.0, "L": 2.0, "D": 0.5, "alpha": math.pi / 4}
 
@@ -143,7 +143,7 @@ def compute(scene: Scene, progress) -> SceneResult:
             t_rigid = min(t_end, 1.5 * t_p) if math.isfinite(t_p) else t_end
             rigid = scene.run.with_(D=D, t_end=t_rigid, **rigid_state(frac * amp, frac * amp, spin))
             r = require_success(rigid.simulate(), scene)
-            t_r = float(r.reversal_times[0]) if len(r.reversal_times) else math.nan
+            t_r = first_reversal(r)
             window = st["period_window"]
             rp = require_success(paper.with_(t_end=window, theta1=amp, theta2=amp).simulate(), scene)
             rr = require_success(rigid.with_(t_end=window, **rigid_state(amp, amp, spin)).simulate(), scene)
