@@ -214,6 +214,10 @@ def test_frames_differ_where_the_body_moves(single_motion):
     h, w, _ = a.shape
     body = (slice(int(0.1 * h), int(0.9 * h)), slice(0, int(0.6 * w)))  # the 3D view
     assert np.count_nonzero(np.any(a[body] != b[body], axis=2)) > 50
+    # the time and the speed (written by pillow) are in the frame's pixels, below the title, and change with it
+    label = (slice(int(0.07 * h), int(0.14 * h)), slice(0, int(0.4 * w)))
+    assert np.count_nonzero(np.any(a[label] < 128, axis=2)) > 20
+    assert np.count_nonzero(np.any(a[label] != b[label], axis=2)) > 5
 
 
 def test_gif_has_the_stated_frames(tmp_path):
@@ -620,3 +624,23 @@ def html_unescape(text: str) -> str:
     import html
 
     return html.unescape(text)
+
+
+def test_a_travelling_body_is_followed_by_the_camera():
+    """The rolling disk travels ~20 radii: its 3D view is drawn relative to the contact point (which stays at the
+    origin), the recent true path is drawn on the table relative to it, and the top view keeps the true path."""
+    mo = an.motion("rolling_disk", frames=12)
+    r = an.FrameRenderer(mo, fps=10, magnify=1.0, size=(6.0, 3.4), dpi=40)
+    assert r.follow
+    k = 7
+    r.render(k)
+    s = dict(zip(mo.model.state_names, mo.y[:, k]))
+    cx, cy, cz = r.contact_mark.get_data_3d()
+    np.testing.assert_allclose([cx[0], cy[0], cz[0]], 0.0, atol=1e-15)
+    tx, ty = r.tv_mark.get_data()
+    np.testing.assert_allclose([tx[0], ty[0]], [s["x"], s["y"]], atol=1e-15)  # the contact is (x, y) on the table
+    lx, ly, _ = r.table_trail.get_data_3d()
+    np.testing.assert_allclose([lx[-1], ly[-1]], 0.0, atol=1e-15)
+    assert np.hypot(lx[0], ly[0]) > 0.1 * float(np.max(np.ptp(r.run_path[:, :2], axis=0))) / 12
+    # the knife edge stays near its place: no camera following
+    assert not an.FrameRenderer(an.motion("numerical", frames=6), fps=10, magnify=1.0, size=(3.0, 2.0), dpi=30).follow

@@ -115,7 +115,7 @@ def test_generic_template_bodies_agree_with_the_unrolled_ones(method):
     np.testing.assert_allclose(a, b, rtol=1e-8, atol=1e-9)
     np.testing.assert_allclose(ev_a, ev_b, rtol=1e-9)
     src = specialize.kernel_source("erk", method, "m", "rhs_q_into", 3, unroll=False)
-    assert "for s in range(1, N_STAGES)" in src and "generic loops" in src
+    assert "for s in range(1, N_STAGES + 1):" in src and "generic loops" in src
 
 
 def test_tsit5_on_the_paper_scene_matches_dop853():

@@ -406,6 +406,15 @@ class FrameRenderer:
         self.outl = np.array([mo.outlines(k, self.u, magnify) for k in range(n)])  # (n, n_outlines, n_u, 3)
         self.path = mo.contact_path()
         self.run_path = mo.contact_path(whole_run=True)
+        # a body that travels far beyond its own size (a rolling disk) is followed by the camera: every frame is
+        # drawn relative to its contact point, its recent path drawn on the table (the top view keeps the truth)
+        extent = float(np.max(np.ptp(np.concatenate([self.pts[0], self.outl[0].reshape(-1, 3)])[:, :2], axis=0)))
+        self.follow = float(np.max(np.ptp(self.run_path[:, :2], axis=0))) > 1.5 * max(extent, 1e-300)
+        self.offset = np.zeros((n, 3))
+        if self.follow:
+            self.offset[:, :2] = self.path[:, :2]
+            self.pts = self.pts - self.offset[:, None, :]
+            self.outl = self.outl - self.offset[:, None, None, :]
         dt = np.gradient(mo.t) if n > 1 else np.ones(1)
         self.time_per_second = dt * fps
         self.spin = np.interp(mo.t, mo.spin_t, mo.spin_y)
@@ -438,9 +447,10 @@ class FrameRenderer:
 
         # the table: the contact path's extent plus half the body's reach (a knife edge's masses hang beside it)
         reach = float(np.max(np.hypot(*(self.pts[0, :, :2] - self.pts[0, self.contact, :2]).T)))
-        path = self.run_path[:, :2]
+        path = self.run_path[:, :2] if not self.follow else np.zeros((1, 2))
         c0 = 0.5 * (path.min(0) + path.max(0))
-        h = min(0.5 * float(np.max(np.ptp(path, axis=0))) + 0.5 * reach, half)
+        # (at most 0.8 of the view's half-width: a larger square's near corners leave the picture)
+        h = half if self.follow else min(0.5 * float(np.max(np.ptp(path, axis=0))) + 0.5 * reach, 0.8 * half)
         table = [[(c0[0] - h, c0[1] - h, 0), (c0[0] + h, c0[1] - h, 0), (c0[0] + h, c0[1] + h, 0),
                   (c0[0] - h, c0[1] + h, 0)]]
         self.table = Poly3DCollection(table, facecolor=(0.55, 0.55, 0.55, 0.55), edgecolor="0.4", lw=0.6)
@@ -453,6 +463,7 @@ class FrameRenderer:
         self.contact_mark = ax.plot([], [], [], "x", color="red", ms=9, mew=2.2)[0]
         self.arc = ax.plot([], [], [], color="C3", lw=2.0)[0]
         self.arc_head = ax.plot([], [], [], color="C3", lw=2.0)[0]
+        self.table_trail = ax.plot([], [], [], color="C3", lw=1.0)[0]  # the recent contact path (camera following)
 
         # top view of the contact path, true scale
         tv = fig.add_axes((0.66, 0.55, 0.31, 0.33))
@@ -484,8 +495,9 @@ class FrameRenderer:
         ga.tick_params(labelsize=6)
         spin_name = gauge_name(mo.model)
         ga.set_xlabel("t", fontsize=7, labelpad=1)
-        ga.set_title(f"spin rate {spin_name} (dotted: reversals)", fontsize=7)
-        self.spin_text = ga.text(0.02, 0.04, "", transform=ga.transAxes, fontsize=7, color="C3")
+        ga.set_title(f"spin rate {spin_name} (dotted: reversals)\n", fontsize=7)
+        self.spin_text = ga.text(0.5, 1.02, "", transform=ga.transAxes, fontsize=7, color="C3", ha="center",
+                                 va="bottom")
 
         fig.text(0.01, 0.975, title or f"{mo.model.name}: the body drawn from its own simulation", fontsize=9,
                  va="top", weight="bold")
@@ -497,10 +509,16 @@ class FrameRenderer:
         self.speed_text = fig.text(0.01, 0.875, "", fontsize=7, va="top")
         # blitting: the moving artists are drawn over a background drawn once (fixed camera and limits)
         # (the table too: what hangs below it is drawn first, then the translucent table, then the rest)
+        if self.follow:
+            fig.text(0.01, 0.078, "camera follows the body: drawn relative to its contact point, its path of the "
+                     "last 8 frames in red on the table", fontsize=6, color="0.3", va="bottom")
         self.body = [*self.seg_lines, *self.outline_lines, self.mass_dots, self.contact_mark]
-        self.overlay = [self.arc, self.arc_head, self.trail, self.tv_mark, self.spin_done, self.spin_dot,
-                        self.spin_text, self.time_text, self.speed_text]
-        self.moving = [self.table, *self.body, *self.overlay]
+        self.overlay = [self.arc, self.arc_head, self.trail, self.tv_mark, self.spin_done, self.spin_dot]
+        # the texts that change every frame are set on matplotlib Text artists (their position, size, colour and
+        # content) but written into the pixels by pillow: matplotlib's text layout costs ~7 ms a text, 3/4 of a frame
+        self.labels = [self.spin_text, self.time_text, self.speed_text]
+        self._label_fonts = [self._pil_font(a) for a in self.labels]
+        self.moving = [self.table, self.table_trail, *self.body, *self.overlay]
         for a in self.moving:
             a.set_animated(True)
         self.canvas.draw()
@@ -523,6 +541,9 @@ class FrameRenderer:
         j = int(np.searchsorted(mo.run_t, mo.t[k], side="right"))
         trail = np.vstack([self.run_path[i:j, :2], self.path[k, :2]])
         self.trail.set_data(trail[:, 0], trail[:, 1])
+        if self.follow:
+            rel = trail - self.offset[k, :2]
+            self.table_trail.set_data_3d(rel[:, 0], rel[:, 1], np.zeros(len(rel)))
         self.tv_mark.set_data([self.path[k, 0]], [self.path[k, 1]])
         w = mo.spin_t <= mo.t[k]
         self.spin_done.set_data(mo.spin_t[w], mo.spin_y[w])
@@ -542,11 +563,34 @@ class FrameRenderer:
         below += [c[:, 2].mean() < 0 for c in self.outl[k]]
         below += [bool(self.mass) and float(p[self.mass, 2].mean()) < 0, False]
         self.table.do_3d_projection()
-        order = [a for a, b in zip(self.body, below) if b] + [self.table] \
+        order = [a for a, b in zip(self.body, below) if b] + [self.table, self.table_trail] \
             + [a for a, b in zip(self.body, below) if not b] + self.overlay
         for a in order:
             a.axes.draw_artist(a) if a.axes is not None else self.fig.draw_artist(a)
-        return np.asarray(self.canvas.buffer_rgba())[:, :, :3].copy()
+        return self._write_labels(np.asarray(self.canvas.buffer_rgba())[:, :, :3].copy())
+
+    def _pil_font(self, text):
+        from matplotlib import font_manager
+        from PIL import ImageFont
+
+        path = font_manager.findfont(text.get_fontproperties())
+        return ImageFont.truetype(path, size=max(1, round(text.get_fontsize() * self.fig.dpi / 72.0)))
+
+    def _write_labels(self, rgb: np.ndarray) -> np.ndarray:
+        """Write the per-frame texts (:attr:`labels`) into the frame's pixels, where matplotlib would put them."""
+        from matplotlib.colors import to_rgb
+        from PIL import Image, ImageDraw
+
+        img = Image.fromarray(rgb)
+        draw = ImageDraw.Draw(img)
+        height = rgb.shape[0]
+        for text, font in zip(self.labels, self._label_fonts):
+            x, y = text.get_transform().transform(text.get_position())
+            anchor = {"left": "l", "center": "m", "right": "r"}[text.get_ha()] + \
+                {"top": "a", "bottom": "d", "baseline": "s", "center": "m", "center_baseline": "m"}[text.get_va()]
+            colour = tuple(int(round(255 * c)) for c in to_rgb(text.get_color()))
+            draw.text((float(x), height - float(y)), text.get_text(), font=font, fill=colour, anchor=anchor)
+        return np.asarray(img)
 
     def _spin_arc(self, k: int) -> None:
         """Curved arrow over the body: length proportional to |spin rate|, head in its sense."""

@@ -24,8 +24,9 @@ _ORDER = ("numerical2", "knife_edge_rigid", "model_fidelity", "tinversion", "kni
           "celt_schoemer", "amplitudes", "numerical")
 #: scenes whose run is also animated, with the animation's settings (modest size and frame count)
 ANIMATIONS = {
-    "numerical": {"frames": 150, "fps": 12.5, "size": (8.0, 4.5), "dpi": 70},
-    "numerical2": {"frames": 180, "fps": 12.5, "size": (8.0, 4.5), "dpi": 70},
+    "numerical": {"frames": 120, "fps": 12.5, "size": (8.0, 4.5), "dpi": 80},
+    "numerical2": {"frames": 150, "fps": 12.5, "size": (8.0, 4.5), "dpi": 80},
+    "celt": {"frames": 100, "fps": 12.5, "size": (8.0, 4.5), "dpi": 80},
 }
 
 
@@ -82,7 +83,8 @@ def warm(model: str, fidelity: str, pose: bool, method: str) -> str:
     except ValueError:
         return f"{model}/{fidelity}: not available"
     y0 = {n: 1e-3 for n in m.state_names}
-    y0[m.spin_name] = 0.1
+    if m.spin_name is not None:
+        y0[m.spin_name] = 0.1
     simulate(m, y0, (0.0, 0.01), {n: 1.0 for n in m.param_names}, method=method)
     return f"{model}/{fidelity}{'+pose' if pose else ''}/{method}"
 

@@ -41,8 +41,6 @@ import warnings
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.integrate import quad
-from scipy.optimize import brentq
 
 from . import _validate
 from .models import Model, ValidityWarning, available, load
@@ -153,6 +151,8 @@ class _Well:
             return u_min, u_min
         u_hi = 0.5 * (self.lnE - self.lwp) + 1.0
         u_lo = self.u0 + (0.5 * (self.lnE - self.lwm) - self.lm0) / self.r - 1.0
+        from scipy.optimize import brentq  # imported on use: scipy.integrate/optimize add ~0.4 s to the start-up
+
         f = lambda u: self.ln_w(u) - self.lnE  # noqa: E731
         tol = 1e-15
         return (brentq(f, u_lo, u_min, xtol=tol * max(1.0, abs(u_lo)), rtol=tol, maxiter=500),
@@ -162,6 +162,8 @@ class _Well:
         """``(1/c_p) int_a^b du / sqrt(E - W(u))``; the flags mark turning points (inverse-sqrt ends)."""
         if b <= a:
             return 0.0
+        from scipy.integrate import quad  # imported on use (start-up time)
+
         wa, wb = (-0.5 if singular_a else 0.0), (-0.5 if singular_b else 0.0)
 
         def smooth(u):

@@ -18,7 +18,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from . import _validate
-from .integrators import ALIASES, COMPILED_METHODS, Status, call_repairing, from_code, kernel
+from .integrators import ALIASES, COMPILED_METHODS, EVENTS_PER_STEP, Status, call_repairing, from_code, kernel
 from .models import Model, ValidityWarning
 
 #: the smallest relative tolerance accepted: below it the error estimate is round-off
@@ -42,9 +42,9 @@ class SimulationResult:
         States in the order of ``state_names``.
     state_names : tuple of str
     reversal_times : ndarray
-        Reversals: zero crossings of the states the model declares as its
-        reversal events (the spin rate of the knife edges), in increasing
-        order, located on the solver's dense output.
+        Reversals: zero crossings of the states or event functions the model
+        declares as its reversal events (the spin rate of the knife edges),
+        in increasing order, located on the solver's dense output.
     success : bool
     status : int
         0 reached the end of ``t_span``; negative values are failures
@@ -62,9 +62,10 @@ class SimulationResult:
     nrejected : int
         Rejected steps (adaptive methods).
     events : dict of str to ndarray
-        Zero crossings of each named state: the model's reversal states and
-        those asked for with ``simulate(..., events=...)``, each located on
-        the solver's dense output (increasing times).
+        Zero crossings of each event (a state or an event function of the
+        model): the model's reversal events and those asked for with
+        ``simulate(..., events=...)``, each located on the solver's dense
+        output (increasing times; several inside one step are all found).
     in_validity_domain : bool
         False when the run left the domain where the model's fidelity holds
         (``model.validity``); a :class:`~knifeedge.models.ValidityWarning`
@@ -147,7 +148,7 @@ ROWS_FIRST = 4096
 
 
 def _reversal_names(model: Model) -> tuple:
-    """The states whose zero crossings are the model's ``reversal_times`` (may be empty)."""
+    """The states or event functions whose zero crossings are the model's ``reversal_times`` (may be empty)."""
     names = getattr(model, "reversal_events", None)
     if names is None:
         mod = model.module
@@ -161,6 +162,13 @@ def _event_names(model: Model, events: tuple) -> tuple:
     """The reversal states, then the requested ``events`` not among them."""
     names = _reversal_names(model)
     return names + tuple(e for e in events if e not in names)
+
+
+def _event_code(model: Model, name: str) -> int:
+    """The kernels' number of event ``name``: a state's index, or ``-1 - j`` for event function ``j``."""
+    if name in model.state_names:
+        return model.index(name)
+    return -1 - tuple(getattr(model, "event_names", ())).index(name)
 
 
 def _split_events(names: tuple, ev_t: np.ndarray, ev_k: np.ndarray) -> dict:
@@ -177,7 +185,7 @@ def _run_compiled(name: str):
         model = r.model
         solve = kernel(model, name)
         names = _event_names(model, r.events)
-        events = np.array([model.index(e) for e in names], dtype=np.int64)
+        events = np.array([_event_code(model, e) for e in names], dtype=np.int64)
         every = r.t_eval is None
         pair = _mode_pairs(model)
         if every:
@@ -202,8 +210,8 @@ def _run_compiled(name: str):
             left = min(r.max_steps - nacc, 2**62)
             chunk = min(CHUNK_STEPS, left)
             cap = min(rows, chunk) if every else max(t_eval.size, 1)
-            buffers = (np.empty(cap), np.empty((cap, n)), np.empty(max(64, 4 * events.size)),
-                       np.empty(max(64, 4 * events.size), dtype=np.int64))
+            room = max(64, 4 * EVENTS_PER_STEP * events.size)
+            buffers = (np.empty(cap), np.empty((cap, n)), np.empty(room), np.empty(room, dtype=np.int64))
             if spec.fixed_step:
                 args = (r.t0, r.t1, y, f, r.p, h, n_steps, int(carry), r.atol, t_eval, every, events, left, pair,
                         chunk, comp, Z)
@@ -237,35 +245,96 @@ def _run_compiled(name: str):
     return run
 
 
+def _suspects(g0: float, g1: float, s0: float, s1: float) -> tuple:
+    """``(flag, extrema)`` of one event over a step, as the kernels' ``integrators.common.screen``.
+
+    ``g0``, ``g1``: its values at the ends; ``s0``, ``s1``: its rates times the step.  ``flag`` 1: the signs
+    differ (a crossing); 2: the cubic Hermite interpolant of the four numbers has an extremum inside the step
+    that crosses zero or comes within ``NEAR`` of the larger end value of it (crossings are sampled for);
+    0: neither.  ``extrema``: those extrema (fractions of the step).
+    """
+    from .integrators.common import NEAR
+
+    flag = 1 if g0 != 0.0 and (g1 == 0.0 or (g0 > 0.0) != (g1 > 0.0)) else 0
+    b = 3.0 * (g1 - g0) - 2.0 * s0 - s1
+    a = s0 + s1 - 2.0 * (g1 - g0)
+    big = max(abs(g0), abs(g1))
+    roots = []
+    if a != 0.0:
+        disc = b * b - 3.0 * a * s0
+        if disc >= 0.0:
+            r = math.sqrt(disc)
+            roots = [(-b - r) / (3.0 * a), (-b + r) / (3.0 * a)]
+    elif b != 0.0:
+        roots = [-s0 / (2.0 * b)]
+    crit = []
+    for x in roots:
+        if 0.0 < x < 1.0:
+            v = g0 + x * (s0 + x * (b + x * a))
+            if v * g0 <= 0.0 or v * g1 <= 0.0 or abs(v) < NEAR * big:
+                crit.append(x)
+    return (2 if crit else flag), crit
+
+
 def _run_scipy(scipy_method: str):
     """SciPy's ``OdeSolver`` stepped here, as ``solve_ivp`` does, so that ``max_steps`` is honoured.
 
-    The output at ``t_eval`` and the zero crossings of the event states are
-    found on the step's dense output exactly as ``solve_ivp`` does
-    (``brentq`` to 4 machine epsilons); a step with a non-finite state ends
-    the run.
+    The output at ``t_eval`` is found on the step's dense output exactly as
+    ``solve_ivp`` does; the zero crossings of the events (states or event
+    functions) as in the compiled kernels: each step is screened with the
+    event's values and rates at its ends, a suspected step is sampled on the
+    dense output (two or more crossings inside one step included), and each
+    bracket is refined by ``brentq`` to 4 machine epsilons.  A step with a
+    non-finite state ends the run.
     """
     def run(r: _Run):
         from scipy import integrate  # imported on use: it adds ~0.3 s to the start-up
         from scipy.optimize import brentq
 
+        from .integrators.common import SAMPLES
+
         solver_class = getattr(integrate, scipy_method)
-        names = _event_names(r.model, r.events)
-        idx = [r.model.index(e) for e in names]
-        rhs, p = r.model.rhs, r.p
+        model = r.model
+        names = _event_names(model, r.events)
+        codes = [_event_code(model, e) for e in names]
+        rhs, p = model.rhs, r.p
+        event_values = getattr(model.module, "event_values", None)
 
         def fun(t, y):
             return rhs(t, y, p)
+
+        def values(y, f, h):
+            """Each event's value and rate times ``h`` at a state ``y`` with derivative ``f``."""
+            g, s = np.empty(len(codes)), np.empty(len(codes))
+            fun_v = fun_w = None
+            if any(c < 0 for c in codes):
+                fun_v = event_values(y, p)
+                fun_w = event_values(y + 1e-7 * h * f, p)
+            for k, c in enumerate(codes):
+                if c >= 0:
+                    g[k], s[k] = y[c], h * f[c]
+                else:
+                    g[k], s[k] = fun_v[-1 - c], (fun_w[-1 - c] - fun_v[-1 - c]) / 1e-7
+            return g, s
+
+        def at(sol, c, t):
+            y = sol(t)
+            return y[c] if c >= 0 else event_values(y, p)[-1 - c]
 
         solver = solver_class(fun, r.t0, r.y0, r.t1, rtol=r.rtol, atol=r.atol, max_step=r.max_step)
         every = r.t_eval is None
         ts, ys = ([r.t0], [r.y0.copy()]) if every else ([], [])
         i_eval = 0
         found = {e: [] for e in names}
-        g = r.y0[idx]
         outcome = Status.SUCCESS
         nsteps = 0
         eps4 = 4 * np.finfo(float).eps
+        def rate(solver):  # the derivative at the solver's current point (RK methods keep it)
+            f = getattr(solver, "f", None)
+            return np.array(f if f is not None else fun(solver.t, solver.y), dtype=float)
+
+        f_old = rate(solver) if codes else None
+        y_prev = r.y0.copy()
         while solver.status == "running":
             if nsteps >= r.max_steps:
                 outcome = Status.MAX_STEPS
@@ -280,12 +349,29 @@ def _run_scipy(scipy_method: str):
                 break
             nsteps += 1
             sol = None
-            g_new = y[idx]
-            for j, (e, k) in enumerate(zip(names, idx)):
-                if (g[j] <= 0 <= g_new[j]) or (g[j] >= 0 >= g_new[j]):
+            if codes:
+                h = t - t_old
+                f_new = rate(solver)
+                ga, sa = values(y_prev, f_old, h)
+                gb, sb = values(y, f_new, h)
+                for k, (e, c) in enumerate(zip(names, codes)):
+                    flag, crit = _suspects(ga[k], gb[k], sa[k], sb[k])
+                    if not flag:
+                        continue
                     sol = sol or solver.dense_output()
-                    found[e].append(brentq(lambda s, k=k: sol(s)[k], t_old, t, xtol=eps4, rtol=eps4))
-            g = g_new
+                    xs = [0.0] + (sorted({m / SAMPLES for m in range(1, SAMPLES)} | set(crit)) if flag == 2 else [])
+                    gs = [ga[k]] + [at(sol, c, t_old + x * h) for x in xs[1:]]
+                    xs.append(1.0)
+                    gs.append(gb[k])
+                    for m in range(1, len(xs)):
+                        fa, fb = gs[m - 1], gs[m]
+                        if fa == 0.0 or not (fb == 0.0 or (fa > 0.0) != (fb > 0.0)):
+                            continue
+                        a, b = t_old + xs[m - 1] * h, (t if m == len(xs) - 1 else t_old + xs[m] * h)
+                        found[e].append(b if fb == 0.0 else
+                                        brentq(lambda s, c=c: at(sol, c, s), a, b, xtol=eps4, rtol=eps4))
+                f_old = f_new
+            y_prev = y.copy()
             if every:
                 ts.append(t)
                 ys.append(y.copy())
@@ -297,7 +383,7 @@ def _run_scipy(scipy_method: str):
                     ts.append(step_t)
                     ys.append(sol(step_t).T)
                     i_eval = i_new
-        n = r.model.n_state
+        n = model.n_state
         if every:
             t_out, y_out = np.array(ts), np.array(ys).T
         elif ts:
@@ -398,10 +484,13 @@ def _check_events(events, model: Model) -> tuple:
     try:
         events = tuple(events)
     except TypeError:
-        raise TypeError(f"`events` must be a state name or a sequence of state names, got {events!r}") from None
+        raise TypeError(f"`events` must be a name or a sequence of names (states or event functions), "
+                        f"got {events!r}") from None
+    functions = tuple(getattr(model, "event_names", ()))
     for e in events:
-        if not isinstance(e, str) or e not in model.state_names:
-            raise ValueError(f"`events` names unknown state {e!r}; this model's states are {model.state_names}")
+        if not isinstance(e, str) or (e not in model.state_names and e not in functions):
+            raise ValueError(f"`events` names unknown state or event function {e!r}; this model's states are "
+                             f"{model.state_names}" + (f" and its event functions {functions}" if functions else ""))
     return tuple(dict.fromkeys(events))
 
 
@@ -497,11 +586,15 @@ def simulate(
         SciPy); ``"mode"`` -- a tilt and its rate share the larger of their
         magnitudes, so a small oscillation mode is controlled relative to
         its amplitude (use with a small ``atol``).  Compiled adaptive methods.
-    events : names of states whose zero crossings to report in
-        ``result.events`` (a name or a sequence of names), besides the
-        model's reversal states, which are always reported.  A crossing is
-        a sign change between the ends of a step, located on the step's
-        dense output.
+    events : names of states or of the model's event functions
+        (``model.event_names``, scalar functions of the state) whose zero
+        crossings to report in ``result.events`` (a name or a sequence of
+        names), besides the model's reversal events, which are always
+        reported.  Crossings are located on each step's dense output, two or
+        more inside one step included: a step whose ends have the same sign
+        is sampled when the cubic through the event's values and rates at
+        its ends dips toward zero inside it (see
+        ``knifeedge/integrators/templates/_blocks.py``).
 
     Returns
     -------

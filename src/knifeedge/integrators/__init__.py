@@ -14,6 +14,10 @@ from . import dop853_tableau, rk_tableaus, tsit5
 from .specialize import cache_dir, call_repairing, is_compiled, load_kernel
 from .status import Status, from_code
 from .tableau import TABLEAUS, ExplicitTableau, register
+from .common import SAMPLES as _SAMPLES
+
+#: most zero crossings of one event a kernel finds in one step (room the event buffers keep per event)
+EVENTS_PER_STEP = _SAMPLES + 2
 
 # the adaptive methods: one registered tableau each (a new method is its file and one line here)
 register(dop853_tableau.DOP853)
@@ -98,5 +102,6 @@ def _announced(solve, label: str):
     return first_call
 
 
-__all__ = ["COMPILED_METHODS", "ALIASES", "CompiledMethod", "ExplicitTableau", "Status", "TABLEAUS", "cache_dir",
+__all__ = ["COMPILED_METHODS", "ALIASES", "EVENTS_PER_STEP", "CompiledMethod", "ExplicitTableau", "Status", "TABLEAUS",
+           "cache_dir",
            "call_repairing", "from_code", "kernel", "register"]

@@ -1,16 +1,13 @@
-"""Compiled helpers shared by the integrator kernels (they never call a right-hand side).
+"""Compiled helpers of the kernels that never call a right-hand side.
 
-Dense output comes in two forms:
-
-* Hairer's DOP853 interpolant (:func:`dense_dop853`): ``F`` has 7 rows and
-  ``y(x) = y_old + x(F0 + (1-x)(F1 + x(F2 + (1-x)(F3 + ...))))``;
-* a power series without constant term (:func:`dense_power`):
-  ``y(x) = y_old + sum_j F[j] x^(j+1)`` (Dormand--Prince 5(4), Tsitouras 5(4)
-  and cubic Hermite).
-
-``x = (t - t_old) / h`` in [0, 1].  Events are the sign changes of state
-components between the ends of an accepted step, located on the
-interpolant by the Illinois variant of regula falsi (always bracketed).
+They are compiled once per machine and shared by every kernel (numba caches
+them beside this module): the screening and location of zero crossings of
+state components (the method is described in ``templates/_blocks.py``) and
+the fixed-step kernel's helpers.  The interpolant of a step is ``F`` (rows
+x n) in one Horner scheme: ``v = (v + F[r, i]) * (1 - x if alt[r] else x)``
+from the last row, then ``y[i] + v`` (Hairer's DOP853 form alternates the
+factors; the power series of Dormand--Prince, Tsitouras and cubic Hermite
+has ``x`` throughout).
 
 Every helper avoids array slicing and broadcasting assignments: numba
 compiles those with their error-message machinery (string formatting),
@@ -20,29 +17,137 @@ import numpy as np
 from numba import njit
 
 _EPS = np.finfo(np.float64).eps
+#: interior samples of a suspected step: SAMPLES - 1 equally spaced points, plus the Hermite extrema
+SAMPLES = 8
+#: a Hermite extremum within this fraction of the larger end value of zero makes the step suspect
+NEAR = 0.5
+#: Illinois iterations (it stops at the resolution of x, a few ulps, long before)
+MAX_ITER = 200
+
+
+@njit(cache=True)
+def no_event_values(s, p):
+    """Stand-in ``event_values`` of a model without event functions (never called: no event is negative)."""
+    return np.empty(0)
 
 
 @njit(cache=True, error_model="numpy")
-def dense_dop853(F, y_old, x, i):
-    """Component ``i`` of Hairer's DOP853 interpolant at ``x`` in [0, 1]."""
-    m = F.shape[0]
-    y = 0.0
-    for j in range(m):
-        y += F[m - 1 - j, i]
-        if j % 2 == 0:
-            y *= x
-        else:
-            y *= 1.0 - x
-    return y_old[i] + y
+def screen(ga, gb, sa, sb, crit, n_crit, flag):
+    """Which events may cross zero inside the step: ``flag[k]`` 1 (the signs at the ends differ), 2 (the
+    cubic Hermite interpolant of values ``ga``, ``gb`` and rates times the step ``sa``, ``sb`` has an
+    extremum inside the step, stored in ``crit[k]``, that crosses zero or comes near it), 0; returns
+    whether any is flagged."""
+    any_flag = False
+    for k in range(ga.size):
+        g0 = ga[k]
+        g1 = gb[k]
+        s0 = sa[k]
+        s1 = sb[k]
+        flag[k] = 0
+        n_crit[k] = 0
+        if g0 != 0.0 and (g1 == 0.0 or (g0 > 0.0) != (g1 > 0.0)):
+            flag[k] = 1
+        # p(x) = g0 + s0 x + b x^2 + a x^3; its extrema: roots of s0 + 2 b x + 3 a x^2 in (0, 1)
+        b = 3.0 * (g1 - g0) - 2.0 * s0 - s1
+        a = s0 + s1 - 2.0 * (g1 - g0)
+        big = max(abs(g0), abs(g1))
+        for m in range(2):
+            x = -1.0
+            if a != 0.0:
+                disc = b * b - 3.0 * a * s0
+                if disc >= 0.0:
+                    root = np.sqrt(disc)
+                    x = (-b - root) / (3.0 * a) if m == 0 else (-b + root) / (3.0 * a)
+            elif m == 0 and b != 0.0:
+                x = -s0 / (2.0 * b)
+            if 0.0 < x < 1.0:
+                v = g0 + x * (s0 + x * (b + x * a))
+                if v * g0 <= 0.0 or v * g1 <= 0.0 or abs(v) < NEAR * big:
+                    crit[k, n_crit[k]] = x
+                    n_crit[k] += 1
+        if n_crit[k] > 0:
+            flag[k] = 2
+        if flag[k] > 0:
+            any_flag = True
+    return any_flag
 
 
 @njit(cache=True, error_model="numpy")
-def dense_power(F, y_old, x, i):
-    """Component ``i`` of the power-series interpolant at ``x`` in [0, 1]."""
-    y = 0.0
-    for j in range(F.shape[0] - 1, -1, -1):
-        y = (y + F[j, i]) * x
-    return y_old[i] + y
+def interpolate(F, y, alt, x, i):
+    """Component ``i`` of the step's interpolant at ``x`` in [0, 1]."""
+    xm = 1.0 - x
+    v = 0.0
+    for r in range(F.shape[0] - 1, -1, -1):
+        v = (v + F[r, i]) * (xm if alt[r] else x)
+    return y[i] + v
+
+
+@njit(cache=True, error_model="numpy")
+def locate(events, F, y, alt, t, h, ga, gb, crit, n_crit, flag, xs, gs, ev_t, ev_k, n_ev):
+    """Zero crossings of the flagged state components (``events[k] >= 0``) inside the step from ``t``
+    (length ``h``, interpolant ``F``, ``alt``), appended to ``ev_t``, ``ev_k`` from ``n_ev``; returns the
+    new count.  ``xs``, ``gs`` (SAMPLES + 3): work arrays."""
+    for k in range(events.size):
+        if flag[k] == 0 or events[k] < 0:
+            continue
+        c = events[k]
+
+
+        # the brackets: xs[0] = 0 < xs[1] < ... < xs[ns - 1] = 1 with the event's values gs
+        xs[0] = 0.0
+        gs[0] = ga[k]
+        ns = 1
+        if flag[k] == 2:
+            for m in range(1, SAMPLES):
+                xs[ns] = m / SAMPLES
+                ns += 1
+            for m in range(n_crit[k]):
+                xs[ns] = crit[k, m]
+                ns += 1
+            for m in range(2, ns):  # insertion sort of the interior points
+                x = xs[m]
+                j = m - 1
+                while j >= 1 and xs[j] > x:
+                    xs[j + 1] = xs[j]
+                    j -= 1
+                xs[j + 1] = x
+            for m in range(1, ns):
+                gs[m] = interpolate(F, y, alt, xs[m], c)
+        xs[ns] = 1.0
+        gs[ns] = gb[k]
+        ns += 1
+        for m in range(1, ns):
+            a, b, fa_, fb_ = xs[m - 1], xs[m], gs[m - 1], gs[m]
+            if b <= a or fa_ == 0.0 or not (fb_ == 0.0 or (fa_ > 0.0) != (fb_ > 0.0)):
+                continue
+            x = b
+            if fb_ != 0.0:
+                # Illinois: regula falsi on the interpolant, the stale end's value halved
+                side = 0
+                for _ in range(MAX_ITER):
+                    x = (a * fb_ - b * fa_) / (fb_ - fa_)
+                    if not (a < x < b):
+                        x = 0.5 * (a + b)
+                    fx = interpolate(F, y, alt, x, c)
+                    if fx == 0.0:
+                        break
+                    if (fx > 0.0) == (fb_ > 0.0):
+                        b, fb_ = x, fx
+                        if side == -1:
+                            fa_ *= 0.5
+                        side = -1
+                    else:
+                        a, fa_ = x, fx
+                        if side == 1:
+                            fb_ *= 0.5
+                        side = 1
+                    if b - a <= 4.0 * _EPS:
+                        break
+            if n_ev < ev_t.size:
+                ev_t[n_ev] = t + x * h
+                ev_k[n_ev] = k
+                n_ev += 1
+    return n_ev
 
 
 @njit(cache=True, error_model="numpy")
@@ -55,47 +160,6 @@ def hermite_coefficients(y_old, y_new, f_old, f_new, h, F):
         F[0, i] = a
         F[1, i] = 3.0 * dy - 2.0 * a - b
         F[2, i] = -2.0 * dy + a + b
-
-
-@njit(cache=True, error_model="numpy")
-def illinois(F, y_old, i, g0, g1, dop853):
-    """``x`` in [0, 1] where component ``i`` of the interpolant crosses zero.
-
-    ``g0`` and ``g1`` are its values at the ends, of opposite signs;
-    ``dop853`` selects the interpolant's form.  Iterates to the resolution
-    of ``x`` (a few ulps), at most 200 times.
-    """
-    a, b, fa, fb = 0.0, 1.0, g0, g1
-    side = 0
-    x = 0.5
-    for _ in range(200):
-        x = (a * fb - b * fa) / (fb - fa)
-        if not (a < x < b):
-            x = 0.5 * (a + b)
-        fx = dense_dop853(F, y_old, x, i) if dop853 else dense_power(F, y_old, x, i)
-        if fx == 0.0:
-            return x
-        if (fx > 0.0) == (fb > 0.0):
-            b, fb = x, fx
-            if side == -1:
-                fa *= 0.5
-            side = -1
-        else:
-            a, fa = x, fx
-            if side == 1:
-                fb *= 0.5
-            side = 1
-        if b - a <= 4.0 * _EPS:
-            break
-    return x
-
-
-@njit(cache=True, error_model="numpy")
-def crossing(g_old, g_new):
-    """True when a step from ``g_old`` to ``g_new`` crosses zero (a zero at the start is not counted)."""
-    if g_old == 0.0:
-        return False
-    return g_new == 0.0 or (g_old > 0.0) != (g_new > 0.0)
 
 
 @njit(cache=True, error_model="numpy")

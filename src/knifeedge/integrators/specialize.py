@@ -4,14 +4,14 @@ A kernel module is the template's text with its ``# knifeedge:rhs`` line
 replaced by an import of the model's right-hand side, its
 ``# knifeedge:variant`` line by the chosen variant and its ``# knifeedge:n``
 line by the state size (a compile-time constant, so LLVM unrolls the loops
-over the state).  In the adaptive template, the bodies of the functions
-marked ``# knifeedge:attempt`` (the stages of a step), ``# knifeedge:error``
-(the error norm) and ``# knifeedge:stages`` (a dense-output stage)
-are replaced by straight-line code with the tableau's coefficients as
-literals.  The error norm and the dense stages sum in the generic loop's
-order; the stages of a step are summed as ``y + (h a_0) K_0 + ...`` so
-that fused multiply-adds shorten the chain of dependent operations (the
-results differ from SciPy's ``y + h (a_0 K_0 + ...)`` by round-off).  It is written once to
+over the state).  In the adaptive template, the blocks between
+``# knifeedge:begin NAME`` and ``# knifeedge:end NAME`` (``attempt``: the
+stages of a step; ``error``: the error norm; ``dense``: the interpolant;
+``power``: the step-size controller's power) are replaced by straight-line
+code with the tableau's coefficients as literals.  The error norm and the
+dense output sum in the generic loop's order; the stages of a step are summed
+as ``y + (h a_0) K_0 + ...`` so that fused multiply-adds shorten the chain of
+dependent operations (the results differ from SciPy's ``y + h (a_0 K_0 + ...)`` by round-off).  It is written once to
 ``<cache>/kernels/`` under a name carrying a hash of everything it depends on
 (template and helper sources, the generated module's source, numba and
 Python versions), imported from there, and its ``@njit(cache=True)``
@@ -43,9 +43,12 @@ TEMPLATES = ("erk", "fixed")
 RHS_MARK = "# knifeedge:rhs"
 VARIANT_MARK = "# knifeedge:variant"
 N_MARK = "# knifeedge:n"
-STAGES_MARK = "# knifeedge:stages"
-ATTEMPT_MARK = "# knifeedge:attempt"
-ERROR_MARK = "# knifeedge:error"
+EVENTS_MARK = "# knifeedge:event_values"
+BLOCK_MARK = "# knifeedge:"
+#: blocks every template takes from ``templates/_blocks.py`` (the bodies of its functions of these names)
+EVENT_BLOCKS = ("alloc", "ends", "output")
+#: functions of ``templates/_blocks.py`` compiled into the kernels of models with event functions
+FUNCTION_DEFS = ("_event_at", "_function_ends", "_locate_functions")
 _LOADED: dict = {}
 
 
@@ -102,11 +105,14 @@ def _private_folder(path: Path) -> None:
         raise PermissionError(f"refused {path}: others may write to it (mode {stat.S_IMODE(st.st_mode):o})")
 
 
-def kernel_source(template: str, variant, rhs_module: str, rhs_name: str, n_state: int, unroll: bool = True) -> str:
+def kernel_source(template: str, variant, rhs_module: str, rhs_name: str, n_state: int, unroll: bool = True,
+                  has_events: bool = False) -> str:
     """Text of the kernel module for a template specialized to ``rhs_module.rhs_name`` on ``n_state`` states.
 
     ``unroll=False`` keeps the template's generic loops over the tableau
-    (same algorithm; the tests compare the two).
+    (same algorithm; the tests compare the two).  ``has_events``: the module
+    defines event functions (``EVENT_NAMES``, ``event_values(s, p)``), which
+    the kernel then locates besides state components.
     """
     if template not in TEMPLATES:
         raise ValueError(f"unknown kernel template {template!r}; known: {TEMPLATES}")
@@ -118,6 +124,10 @@ def kernel_source(template: str, variant, rhs_module: str, rhs_name: str, n_stat
         if line.rstrip().endswith(RHS_MARK):
             line = f"from {rhs_module} import constants as _constants, {rhs_name} as _rhs  {RHS_MARK}"
             seen.add(RHS_MARK)
+        elif line.rstrip().endswith(EVENTS_MARK):
+            line = (f"from {rhs_module} import event_values as _event_values  {EVENTS_MARK}" if has_events else
+                    f"from knifeedge.integrators.common import no_event_values as _event_values  {EVENTS_MARK}")
+            seen.add(EVENTS_MARK)
         elif VARIANT_MARK in line:
             line = (f"TABLEAU = {str(variant)!r}  {VARIANT_MARK}" if template == "erk"
                     else f"VARIANT = {int(variant)}  {VARIANT_MARK}")
@@ -126,14 +136,23 @@ def kernel_source(template: str, variant, rhs_module: str, rhs_name: str, n_stat
             line = f"N = {n_state}  {N_MARK}"
             seen.add(N_MARK)
         out.append(line)
-    if seen != {RHS_MARK, VARIANT_MARK, N_MARK}:
+    if seen != {RHS_MARK, VARIANT_MARK, N_MARK, EVENTS_MARK}:
         raise RuntimeError(f"kernel template {template}.py lacks one of its {RHS_MARK!r}, {VARIANT_MARK!r}, "
-                           f"{N_MARK!r} lines")
+                           f"{N_MARK!r}, {EVENTS_MARK!r} lines")
+    if has_events:
+        out = _replace_block(out, "function_defs", sum((_event_function(f) for f in FUNCTION_DEFS), []))
+        out = _replace_block(out, "functions", lambda block: block)
+    else:
+        out = _replace_block(out, "function_defs", [])
+        out = _replace_block(out, "functions", [])
+    for name in EVENT_BLOCKS:
+        out = _replace_block(out, name, _event_block(name))
     if template == "erk" and unroll:
         tableau = _erk_tableau(variant)
-        out = _replace_body(out, STAGES_MARK, _stage_body(tableau["A"], tableau["n_stages"]))
-        out = _replace_body(out, ATTEMPT_MARK, _attempt_body(tableau["A"], tableau["C"], tableau["n_stages"]))
-        out = _replace_body(out, ERROR_MARK, _error_body(tableau))
+        out = _replace_block(out, "attempt", _attempt_block(tableau["A"], tableau["C"], tableau["n_stages"]))
+        out = _replace_block(out, "error", _error_block(tableau))
+        out = _replace_block(out, "dense", _dense_block(tableau))
+        out = _replace_block(out, "power", _power_block(tableau["error_order"]))
     header = (f"# Specialized kernel: template {template}.py, variant {variant}, rhs {rhs_module}.{rhs_name}, "
               f"{n_state} states{'' if unroll else ', generic loops'}.\n")
     return header + "\n".join(out) + "\n"
@@ -157,31 +176,19 @@ def _erk_tableau(name: str) -> dict:
     if t.hairer:
         A[s + 1:] = t.hairer["A_ext"]
         C[s + 1:] = t.hairer["c_ext"]
-    return {"A": A, "C": C, "E5": t.e, "E3": t.hairer["e3"] if t.hairer else None, "n_stages": s}
+    return {"A": A, "C": C, "E5": t.e, "E3": t.hairer["e3"] if t.hairer else None, "n_stages": s,
+            "D": t.hairer["D"] if t.hairer else None, "P": t.P, "error_order": t.error_order}
 
 
-def _sum(coefficients) -> str:
-    """``c0 * K[0, i] + c1 * K[1, i] + ...`` over the nonzero coefficients, left to right (``0.0`` if none)."""
-    terms = [f"{float(c)!r} * K[{j}, i]" for j, c in enumerate(coefficients) if c != 0.0]
-    return " + ".join(terms) if terms else "0.0"
+def _acc(coefficients, term: str, indent: str = "    ") -> list:
+    """``acc += <term> + <term> + ...`` over the nonzero ``coefficients``, in order (no line if none);
+    in ``term``, ``{c}`` stands for the coefficient (a literal) and ``{j}`` for its stage."""
+    terms = [term.format(c=repr(float(c)), j=j) for j, c in enumerate(coefficients) if c != 0.0]
+    return [f"{indent}acc += " + " + ".join(terms)] if terms else []
 
 
-def _stage_body(A, n_stages: int) -> list:
-    """Body of ``_stage_state(K, s, y, h, out)``: one branch per dense-output stage ``s > n_stages``.
-
-    Once :func:`_attempt_body` has written the step's stages, the dense
-    output is its only caller; a method without extra stages gets an empty body.
-    """
-    body = []
-    for s in range(n_stages + 1, A.shape[0]):
-        body.append(f"    {'if' if not body else 'elif'} s == {s}:")
-        body.append("        for i in range(N):")
-        body.append(f"            out[i] = y[i] + h * ({_sum(A[s, :s])})")
-    return body or ["    pass"]
-
-
-def _attempt_body(A, C, n_stages: int) -> list:
-    """Body of ``_attempt(t, t_new, y, h, q, K, work, y_new)``: every stage of one step, in sequence.
+def _attempt_block(A, C, n_stages: int) -> list:
+    """Every stage of one step, in sequence: ``K[1 .. n_stages]`` and ``y_new`` from ``K[0] = f(t, y)``.
 
     A stage state is ``y + (h a_0) K_0 + ... + (h a_{s-1}) K_{s-1}``, summed
     oldest stage first, so that (with fused multiply-adds) only the last
@@ -194,57 +201,126 @@ def _attempt_body(A, C, n_stages: int) -> list:
         last = s == n_stages
         target = "y_new" if last else "work"
         terms = [f"(h * {float(c)!r}) * K[{j}, i]" for j, c in enumerate(A[s, :s]) if c != 0.0]
-        body.append("    for i in range(N):")
-        body.append(f"        {target}[i] = y[i] + {' + '.join(terms)}")
-        body.append(f"    _rhs({'t_new' if last else f't + {float(C[s])!r} * h'}, {target}, q, K[{s}])")
+        body.append("for i in range(N):")
+        body.append(f"    {target}[i] = y[i] + {' + '.join(terms)}")
+        body.append(f"_rhs({'t_new' if last else f't + {float(C[s])!r} * h'}, {target}, q, K[{s}])")
     return body
 
 
-def _error_body(tableau: dict) -> list:
-    """Body of ``_error_norm(K, h, scale, work5, work3)`` with the estimators' coefficients as literals."""
-    body = []
+def _error_block(tableau: dict) -> list:
+    """``err``: the scaled norm of the embedded estimate, the estimators' coefficients as literals."""
+    body = ["n5 = 0.0", "n3 = 0.0", "for i in range(N):", "    acc = 0.0"]
+    body += _acc(tableau["E5"], "{c} * K[{j}, i]")
+    body += ["    e5 = acc / scale[i]", "    n5 += e5 * e5"]
     if tableau["E3"] is not None:  # DOP853: the 5th- and 3rd-order estimates combined as in Hairer's code
-        body += [
-            "    n5 = 0.0",
-            "    n3 = 0.0",
-            "    for i in range(N):",
-            f"        e5 = ({_sum(tableau['E5'])}) / scale[i]",
-            f"        e3 = ({_sum(tableau['E3'])}) / scale[i]",
-            "        n5 += e5 * e5",
-            "        n3 += e3 * e3",
-            "    if n5 == 0.0 and n3 == 0.0:",
-            "        return 0.0",
-            "    return abs(h) * n5 / np.sqrt((n5 + 0.01 * n3) * N)",
-        ]
+        body.append("    acc = 0.0")
+        body += _acc(tableau["E3"], "{c} * K[{j}, i]")
+        body += ["    e3 = acc / scale[i]", "    n3 += e3 * e3",
+                 "if n5 == 0.0 and n3 == 0.0:",
+                 "    err = 0.0",
+                 "else:",
+                 "    err = abs(h) * n5 / np.sqrt((n5 + 0.01 * n3) * N)"]
     else:  # root mean square of the one estimate
-        body += [
-            "    s2 = 0.0",
-            "    for i in range(N):",
-            f"        e = ({_sum(tableau['E5'])}) / scale[i]",
-            "        s2 += e * e",
-            "    return abs(h) * np.sqrt(s2 / N)",
-        ]
+        body.append("err = abs(h) * np.sqrt(n5 / N)")
     return body
 
 
-def _replace_body(lines: list, mark: str, body: list) -> list:
-    """Replace the body of the function whose ``def`` line ends with ``mark`` (its docstring is kept)."""
-    try:
-        start = next(k for k, line in enumerate(lines) if line.rstrip().endswith(mark))
-    except StopIteration:
-        raise RuntimeError(f"kernel template lacks a function marked {mark!r}") from None
+def _dense_block(tableau: dict) -> list:
+    """``F``, the interpolant of the accepted step (DOP853: its extra stages first, evaluated here)."""
+    A, C, s = tableau["A"], tableau["C"], tableau["n_stages"]
+    body = []
+    if tableau["D"] is not None:
+        for st in range(s + 1, A.shape[0]):
+            body += ["for i in range(N):", "    acc = 0.0"]
+            body += _acc(A[st, :st], "{c} * K[{j}, i]")
+            body += ["    work[i] = y[i] + h * acc", f"_rhs(t + {float(C[st])!r} * h, work, q, K[{st}])"]
+        body += [
+            "for i in range(N):",
+            "    dy = y_new[i] - y[i]",
+            "    F[0, i] = dy",
+            "    F[1, i] = h * K[0, i] - dy",
+            f"    F[2, i] = 2.0 * dy - h * (K[{s}, i] + K[0, i])",
+        ]
+        for r, row in enumerate(tableau["D"]):
+            body.append("    acc = 0.0")
+            body += _acc(row, "{c} * K[{j}, i]")
+            body.append(f"    F[{3 + r}, i] = h * acc")
+        body.append(f"nfev += {A.shape[0] - s - 1}")
+    else:
+        body.append("for i in range(N):")
+        for r, col in enumerate(tableau["P"].T):
+            body.append("    acc = 0.0")
+            body += _acc(col, "{c} * K[{j}, i]")
+            body.append(f"    F[{r}, i] = h * acc")
+    return body
+
+
+def _power_block(error_order: int):
+    """The controller's ``err ** ERROR_EXPONENT``; for DOP853 (-1/8) three square roots, cheaper than pow."""
+    def edit(lines):
+        if error_order != 7:
+            return [line.strip() for line in lines]
+        return [line.strip().replace("err ** ERROR_EXPONENT", "(1.0 / np.sqrt(np.sqrt(np.sqrt(err))))")
+                for line in lines]
+    return edit
+
+
+def _replace_block(lines: list, name: str, body) -> list:
+    """Replace every block between ``# knifeedge:begin name`` and ``# knifeedge:end name`` by ``body``.
+
+    ``body`` is a list of lines (indented relative to the block) or a function of the block's lines
+    (stripped of their indentation) returning them; the markers are dropped.
+    """
+    begin, end = f"{BLOCK_MARK}begin {name}", f"{BLOCK_MARK}end {name}"
+    out, found = [], False
+    k = 0
+    while k < len(lines):
+        line = lines[k]
+        if line.strip() != begin:
+            out.append(line)
+            k += 1
+            continue
+        found = True
+        indent = line[: len(line) - len(line.lstrip())]
+        stop = next((j for j in range(k + 1, len(lines)) if lines[j].strip() == end), None)
+        if stop is None:
+            raise RuntimeError(f"kernel template: {begin!r} without {end!r}")
+        block = [x[len(indent):] for x in lines[k + 1:stop] if not x.strip().startswith("#")]
+        new = body(block) if callable(body) else body
+        out += [indent + x for x in new]
+        k = stop + 1
+    if not found:
+        raise RuntimeError(f"kernel template lacks a block {begin!r}")
+    return out
+
+
+def _event_block(name: str) -> list:
+    """The body of function ``name`` of ``templates/_blocks.py`` (dedented, without its ``return`` line)."""
+    lines = (_HERE / "templates" / "_blocks.py").read_text().splitlines()
+    start = next(k for k, line in enumerate(lines) if line.startswith(f"def {name}("))
+    body = []
+    for line in lines[start + 1:]:
+        if line and not line.startswith(" "):
+            break
+        body.append(line[4:])
+    while body and not body[-1].strip():
+        body.pop()
+    if body and body[-1].startswith("return "):
+        body.pop()
+    return body
+
+
+def _event_function(name: str) -> list:
+    """Function ``name`` of ``templates/_blocks.py``, whole, compiled (decorated) and followed by two blank lines."""
+    lines = (_HERE / "templates" / "_blocks.py").read_text().splitlines()
+    start = next(k for k, line in enumerate(lines) if line.startswith(f"def {name}("))
     end = start + 1
-    while end < len(lines) and (lines[end].startswith(" ") or not lines[end].strip()):
+    while end < len(lines) and (not lines[end] or lines[end].startswith(" ")):
         end += 1
-    while not lines[end - 1].strip():
-        end -= 1
-    doc_end = start + 1
-    if lines[doc_end].strip().startswith('"""'):
-        while not (lines[doc_end].rstrip().endswith('"""') and (doc_end > start + 1
-                                                               or lines[doc_end].strip().count('"""') == 2)):
-            doc_end += 1
-        doc_end += 1
-    return lines[:doc_end] + body + lines[end:]
+    body = lines[start:end]
+    while body and not body[-1].strip():
+        body.pop()
+    return ['@njit(cache=True, error_model="numpy")'] + body + ["", ""]
 
 
 def _key(source: str, rhs_file: str) -> str:
@@ -319,7 +395,8 @@ def load_kernel(template: str, variant, rhs_module: ModuleType, rhs_name: str, n
 
     Raises if the kernel cannot be written or imported: there is no slow fallback.
     """
-    source = kernel_source(template, variant, rhs_module.__name__, rhs_name, n_state, unroll)
+    source = kernel_source(template, variant, rhs_module.__name__, rhs_name, n_state, unroll,
+                           has_events=bool(getattr(rhs_module, "EVENT_NAMES", ())))
     key = _key(source, rhs_module.__file__)
     stem = f"{template}{variant}{'' if unroll else 'g'}_{rhs_module.__name__.rsplit('.', 1)[-1]}_{rhs_name}_{key}"
     if stem in _LOADED:

@@ -19,3 +19,15 @@ def rhs_q_into(t, s, q, ds):
     ds[0] = s[1]
     ds[1] = -q[1] * s[0]
     ds[2] = -s[0]
+
+
+#: the stand-in's event function: q^2 - p[1] (two zeros close together near each extremum of q when
+#: p[1] is just below the squared amplitude)
+EVENT_NAMES = ("q_squared_minus_p1",)
+
+
+@njit(cache=True)
+def event_values(s, p):
+    out = np.empty(1)
+    out[0] = s[0] * s[0] - p[1]
+    return out

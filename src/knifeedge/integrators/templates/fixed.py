@@ -18,7 +18,9 @@ from numba import njit
 
 from knifeedge.integrators import common as _c
 from knifeedge.integrators import rk_tableaus as _tb
+from knifeedge.integrators.common import MAX_ITER, SAMPLES  # noqa: F401 (MAX_ITER: the event functions)
 from knifeedge.integrators.templates._stub import constants as _constants, rhs_q_into as _rhs  # knifeedge:rhs
+from knifeedge.integrators.templates._stub import event_values as _event_values  # knifeedge:event_values
 
 VARIANT = 0  # knifeedge:variant  (0: RK4; s = 1, 2, 3: Gauss--Legendre with s stages)
 N = 3  # knifeedge:n  (the state size, a compile-time constant so that the loops over it unroll)
@@ -48,8 +50,11 @@ def _extrapolation_matrix():
 
 
 EXTRAP = _extrapolation_matrix() if VARIANT > 0 else np.zeros((1, 1))
-MAX_ITER = 100
+MAX_STAGE_ITER = 100
 _EPS = 2.220446049250313e-16
+#: the interpolant of a step: cubic Hermite as a power series (see the adaptive template's ALT)
+DENSE_ROWS = 3
+ALT = np.zeros(DENSE_ROWS, dtype=np.bool_)
 
 
 @njit(cache=True, error_model="numpy")
@@ -86,7 +91,7 @@ def _gauss_increment(t, y, h, q, scale, Z, Znew, work, dy):
     ynorm = 1e-300
     for i in range(n):
         ynorm = max(ynorm, abs(y[i]))
-    for it in range(MAX_ITER):
+    for it in range(MAX_STAGE_ITER):
         for k in range(S):
             for i in range(n):
                 acc = 0.0
@@ -133,41 +138,16 @@ def _solver_scale(y, atol, pair, out):
         out[i] = max(m, atol[i])
 
 
-@njit(cache=True, error_model="numpy")
-def _record(F, y, y_new, t, t_new, t_eval, ie, every, ys, ts, n_out, events, ev_t, ev_k, n_ev):
-    """As the adaptive kernel's: events on the step's cubic Hermite interpolant, then output rows."""
-    h = t_new - t
-    for k in range(events.size):
-        i = events[k]
-        if _c.crossing(y[i], y_new[i]):
-            x = 1.0
-            if y_new[i] != 0.0:
-                x = _c.illinois(F, y, i, y[i], y_new[i], False)
-            ev_t[n_ev] = t + x * h
-            ev_k[n_ev] = k
-            n_ev += 1
-    if not every:
-        while ie < t_eval.size and t_eval[ie] <= t_new:
-            te = t_eval[ie]
-            ts[n_out] = te
-            if te == t_new:
-                for i in range(N):
-                    ys[n_out, i] = y_new[i]
-            else:
-                x = (te - t) / h
-                for i in range(N):
-                    ys[n_out, i] = _c.dense_power(F, y, x, i)
-            n_out += 1
-            ie += 1
-    return ie, n_out, n_ev
+# knifeedge:begin function_defs
+# knifeedge:end function_defs
 
 
 @njit(cache=True, error_model="numpy")
-def solve(t0, t1, y0, f0, p, h, n_steps, first, atol, t_eval, every, events, max_steps, pair, chunk, comp, Z,
+def solve(t0, t1, y0, f0, p, h_fixed, n_steps, first, atol, t_eval, every, events, max_steps, pair, chunk, comp, Z,
           ts, ys, ev_t, ev_k):
-    """Integrate from ``t0`` over steps ``first + 1 .. n_steps`` of size ``h``, at most ``chunk`` of them.
+    """Integrate from ``t0`` over steps ``first + 1 .. n_steps`` of size ``h_fixed``, at most ``chunk`` of them.
 
-    Step ``k`` ends at ``t0 + k h`` (the last at ``t1``).  ``atol`` (n,) is
+    Step ``k`` ends at ``t0 + k h_fixed`` (the last at ``t1``).  ``atol`` (n,) is
     the floor of the scale of the implicit solver's convergence test and
     ``pair`` (n,) the mode partner of each component (-1: none) whose
     magnitude also sets it (Gauss only).  ``y0`` is the state after step
@@ -195,13 +175,17 @@ def solve(t0, t1, y0, f0, p, h, n_steps, first, atol, t_eval, every, events, max
     f_new = np.empty(n)
     K = np.empty((4, n))
     Znew = np.empty((S, n))
-    F = np.empty((3, n))
+    F = np.empty((DENSE_ROWS, n))
+    fa = f_old  # the derivatives at the ends of a step
+    fb = f_new
+    # knifeedge:begin alloc
+    # knifeedge:end alloc
     # counters start as int64, not as the literal 0 (numba would compile the callees for both types)
     n_out = np.int64(0)
     ie = np.int64(0)
     n_ev = np.int64(0)
     nfev = np.int64(0)
-    t = t0 if first == 0 else t0 + first * h
+    t = t0 if first == 0 else t0 + first * h_fixed
     if first == 0:
         _rhs(t, y, q, f_old)
         nfev += 1
@@ -218,16 +202,16 @@ def solve(t0, t1, y0, f0, p, h, n_steps, first, atol, t_eval, every, events, max
         if n_acc >= max_steps:
             status = -2
             break
-        if n_acc >= chunk or (every and n_out == ts.size) or n_ev + events.size > ev_t.size:
+        if n_acc >= chunk or (every and n_out == ts.size) or n_ev + ne * (SAMPLES + 2) > ev_t.size:
             status = 1
             break
         step += 1
-        t_new = t1 if step == n_steps else t0 + step * h
+        t_new = t1 if step == n_steps else t0 + step * h_fixed
         if VARIANT == 0:
-            nfev += _rk4_increment(t, y, h, q, f_old, K, work, dy)
+            nfev += _rk4_increment(t, y, h_fixed, q, f_old, K, work, dy)
         else:
             _solver_scale(y, atol, pair, scale)
-            calls, ok = _gauss_increment(t, y, h, q, scale, Z, Znew, work, dy)
+            calls, ok = _gauss_increment(t, y, h_fixed, q, scale, Z, Znew, work, dy)
             nfev += calls
             if not ok:
                 status = -4
@@ -246,20 +230,27 @@ def solve(t0, t1, y0, f0, p, h, n_steps, first, atol, t_eval, every, events, max
         for i in range(n):
             comp[i] = comp_trial[i]
         n_acc += 1
-        dense = ie < t_eval.size and t_eval[ie] < t_new
-        for k in range(events.size):
-            if _c.crossing(y[events[k]], y_new[events[k]]):
-                dense = True
-        if dense:
-            _c.hermite_coefficients(y, y_new, f_old, f_new, t_new - t, F)
-        if every:  # the common case, inline: a row per step
-            ts[n_out] = t_new
-            for i in range(n):
-                ys[n_out, i] = y_new[i]
-            n_out += 1
-        if dense or (not every and ie < t_eval.size and t_eval[ie] <= t_new):
-            ie, n_out, n_ev = _record(F, y, y_new, t, t_new, t_eval, ie, every, ys, ts, n_out, events, ev_t, ev_k,
-                                      n_ev)
+        h = t_new - t  # the step as taken (the blocks' name)
+        any_flag = False
+        if ne > 0:
+            # knifeedge:begin ends
+            # knifeedge:end ends
+            # knifeedge:begin functions
+            if n_fun > 0:
+                _function_ends(events, y, y_new, fa, fb, h, p, work, ga, gb, sa, sb)
+            # knifeedge:end functions
+            any_flag = _c.screen(ga, gb, sa, sb, crit, n_crit, flag)
+        if any_flag or (ie < t_eval.size and t_eval[ie] < t_new):
+            _c.hermite_coefficients(y, y_new, f_old, f_new, h, F)
+        if any_flag:
+            n_ev = _c.locate(events, F, y, ALT, t, h, ga, gb, crit, n_crit, flag, xs, gs, ev_t, ev_k, n_ev)
+            # knifeedge:begin functions
+            if n_fun > 0:
+                n_ev = _locate_functions(events, F, y, t, h, p, work, ga, gb, crit, n_crit, flag, xs, gs, ev_t, ev_k,
+                                         n_ev)
+            # knifeedge:end functions
+        # knifeedge:begin output
+        # knifeedge:end output
         if VARIANT > 0:
             # start the next stage iteration from this step's collocation polynomial
             for k in range(S):
