@@ -67,5 +67,8 @@ def celt() -> RigidBody:
         presets=PRESETS,
         preset_sources=PRESET_SOURCES,
         source=__name__,
-        default_state={"n0": (0.0087262, 0.0087265, 0.9999238), "omega0": (0.0, 0.0, 5.0)},
+        default_state={"n0": (0.0087262, 0.0087265, 0.9999238), "omega0": (0.0, 0.0, 5.0),
+                       # the small-tilt fidelities' default: tilts 1e-4 rad, spin 0.2 rad/s (Moffatt-Tokieda regime)
+                       "small": {"n0": (1e-4, 1e-4, 1.0), "omega0": (0.0, 0.0, 0.2)}},
+        small=("n_x", "n_y", "omega_x", "omega_y"),  # -> fidelities reduced and amplitude (derivation/rigid_small.py)
     )

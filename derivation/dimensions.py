@@ -20,6 +20,7 @@ TABLE.update({
     "A_theta_dot": (0, -1, 0), "A_phi_dot": (0, -2, 0),
     "theta0": (0, 0, 0), "theta_max": (0, 0, 0), "phi_dot0": (0, -1, 0),
     "t0": (0, 1, 0), "t_R": (0, 1, 0), "omega": (0, -1, 0),
+    "L_two_mode": (2, -2, 1),            # the two-mode Lagrangian (an energy)
 })
 
 

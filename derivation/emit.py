@@ -607,9 +607,11 @@ def _amplitude_defaults(system: AmplitudeSystem) -> dict:
 
 def build(spec: engine.ModelSpec) -> dict:
     """Derive one model at every fidelity of :data:`~derivation.fidelities.FIDELITIES` that applies to it."""
-    from . import rigid  # a rigid body (derivation/rigid.py) has the fidelity "full" only
+    from . import rigid  # a rigid body (derivation/rigid.py): full, and reduced/amplitude when it says so
     if isinstance(spec, rigid.RigidBody):
-        return {(spec.name, "full"): rigid.derive(spec)}
+        from . import rigid_small
+
+        return rigid_small.build(spec)
     out = {}
     for fid in FIDELITIES.values():
         if not fid.applies(spec):

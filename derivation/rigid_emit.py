@@ -80,6 +80,10 @@ def initial_state(n0=(0.0, 0.0, 1.0), omega0=(0.0, 0.0, 0.0), pose=None):
 
 def module_source(system: rigid.RollingSystem, fidelity: str) -> str:
     """Source of the generated module of a derived rigid body."""
+    if fidelity != "full":  # small-tilt fidelities (derivation/rigid_small.py)
+        from . import rigid_small_emit
+
+        return rigid_small_emit.module_source(system, fidelity)
     spec, body = system.spec, system.body
     state = [str(s) for s in system.state]
     pose = [str(q) for q in spec.pose]

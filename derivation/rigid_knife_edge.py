@@ -164,6 +164,37 @@ def verdict(body: RigidBody | None = None, heading=0) -> dict:
     return out
 
 
+@functools.lru_cache(maxsize=4)
+def _limit_lagrangian(heading) -> sp.Expr:
+    return small_tilt_limit(heading=heading)["lagrangian"]
+
+
+def lagrangian_difference(lagrangian: sp.Expr, heading=0) -> sp.Expr:
+    """Rigid body's second-order Lagrangian minus ``lagrangian`` (per unit mass, paper's symbols), constant dropped.
+
+    Zero when ``lagrangian`` is the small-tilt limit of the rigid knife edge of section III.
+    """
+    d = _tidy(_limit_lagrangian(heading) - sp.expand(lagrangian.subs(phi, heading)))
+    return sp.factor(d - d.subs(dict.fromkeys(SMALL, 0)))
+
+
+def _rigid_limit(lhs, rhs, system):
+    """Check ``"rigid_limit"`` of :mod:`derivation.published`: ``rhs`` (a Lagrangian, per mass ``M``) is the
+    second-order limit of the rigid body of Fig. ``sketch_2modes``, at two headings."""
+    from .evidence import Evidence
+    from .published import M
+
+    per_mass = sp.expand(rhs / M)
+    diffs = [lagrangian_difference(per_mass, h) for h in (0, sp.pi / 3)]
+    if all(d == 0 for d in diffs):
+        return Evidence(True, None, "equals the rigid body's Lagrangian to second order in the small quantities")
+    return Evidence(False, None, f"rigid body minus published (per unit mass, second order): {diffs[0]}")
+
+
+#: checks registered in derivation.verify
+CHECKS = {"rigid_limit": _rigid_limit}
+
+
 #: the verdict on the paper's section III, as established by :func:`verdict` (tests/test_rigid.py re-derives it)
 VERDICT = {
     "Const22": ("agrees", "the rigid body's rolling constraint along u_alpha, to second order in the small "

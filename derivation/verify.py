@@ -16,6 +16,7 @@ from .dimensions import check_equation
 from .engine import ReducedSystem
 from .evidence import Evidence
 from .models import MODELS, phi
+from .rigid_knife_edge import CHECKS as RIGID_CHECKS
 from .truncation import eps, small_scaling
 
 __all__ = ["Evidence", "evaluate", "all_evidence", "solution_substitutions", "is_zero", "tilt_order"]
@@ -152,6 +153,7 @@ def _estimate(lhs, rhs, system) -> Evidence:
 _CHECKS = {"constraint": _constraint, "exact": _exact, "order": _order, "amplitude": _amplitude,
            "closed_form": _closed_form, "estimate": _estimate}
 _CHECKS.update(AMPLITUDE_CHECKS)  # invariant, stability, reversal
+_CHECKS.update(RIGID_CHECKS)  # rigid_limit (section III against the rigid body)
 
 
 def evaluate(entry: pub.Published, systems: dict, corrected: bool = False) -> Evidence:

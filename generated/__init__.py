@@ -6,7 +6,9 @@ Produced by derivation/emit.py (make derive); SymPy 1.14.0.
 
 #: (model, fidelity) -> module name inside this package
 MODULES = {
+    ('celt', 'amplitude'): 'celt_amplitude',
     ('celt', 'full'): 'celt_full',
+    ('celt', 'reduced'): 'celt_reduced',
     ('chaplygin_sleigh', 'full'): 'chaplygin_sleigh_full',
     ('rolling_disk', 'full'): 'rolling_disk_full',
     ('rolling_disk_damped', 'full'): 'rolling_disk_damped_full',

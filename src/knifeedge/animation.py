@@ -449,7 +449,8 @@ class FrameRenderer:
         reach = float(np.max(np.hypot(*(self.pts[0, :, :2] - self.pts[0, self.contact, :2]).T)))
         path = self.run_path[:, :2] if not self.follow else np.zeros((1, 2))
         c0 = 0.5 * (path.min(0) + path.max(0))
-        h = half if self.follow else min(0.5 * float(np.max(np.ptp(path, axis=0))) + 0.5 * reach, half)
+        # (at most 0.8 of the view's half-width: a larger square's near corners leave the picture)
+        h = half if self.follow else min(0.5 * float(np.max(np.ptp(path, axis=0))) + 0.5 * reach, 0.8 * half)
         table = [[(c0[0] - h, c0[1] - h, 0), (c0[0] + h, c0[1] - h, 0), (c0[0] + h, c0[1] + h, 0),
                   (c0[0] - h, c0[1] + h, 0)]]
         self.table = Poly3DCollection(table, facecolor=(0.55, 0.55, 0.55, 0.55), edgecolor="0.4", lw=0.6)

@@ -5,7 +5,7 @@ import numpy as np
 
 from . import amplitude_theory as th
 from .base import Scene, SceneResult
-from .common import RATE_LABEL, T_LABEL, envelope, omega, require_success
+from .common import RATE_LABEL, T_LABEL, envelope, first_reversal, omega, require_success
 from .numerical import RUN
 
 
@@ -20,7 +20,7 @@ def compute(scene: Scene, progress) -> SceneResult:
     t_r = th.first_reversal_time(y0["phi_dot"], a_theta0, p["g"], p["ell"], p["L"], p["D"])
     a_theta, a_phi = th.amplitudes(r.t, t_r, a0, p["g"], p["ell"], p["L"], p["D"])
     sim_amp = envelope(r["theta"], r["theta_dot"], w)
-    t_sim = float(r.reversal_times[0]) if len(r.reversal_times) else float("nan")
+    t_sim = first_reversal(r)
     err_theta = float(np.max(np.abs(sim_amp - a_theta)) / a0)
     err_phi = float(np.max(np.abs(r["phi_dot"] - a_phi)) / a0)
     res = SceneResult(scene)

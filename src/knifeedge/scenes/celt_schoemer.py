@@ -10,7 +10,7 @@ import numpy as np
 
 from .base import RunSpec, Scene, SceneResult
 from .celt import energy_balance, episodes, initial_state, max_tilt_deg, preset
-from .common import require_success
+from .common import claim_energy_conserved, require_success
 
 RUN = RunSpec(
     model="celt", fidelity="full",
@@ -39,8 +39,7 @@ def compute(scene: Scene, progress) -> SceneResult:
     res.claim("the spin reverses once", len(reversals) == 1 and w0 * w1 < 0,
               f"{len(reversals)} reversal episode(s) at t = {', '.join(f'{t:.4f}' for t in reversals)} s; "
               f"omega.n {w0:+.4f} -> {w1:+.4f} rad/s")
-    res.claim("(integration check) energy conserved", res.numbers["energy_balance"] < 1e-9,
-              f"{res.numbers['energy_balance']:.1e} relative")
+    claim_energy_conserved(res, "", res.numbers["energy_balance"])
     res.data.update(t=r.t, spin=r["omega_n"], tilt=np.degrees(np.arccos(np.clip(r["n_z"], -1, 1))),
                     reversal_times=r.reversal_times)
     return res

@@ -17,6 +17,17 @@ def require_success(result, scene):
     return result
 
 
+def first_reversal(result) -> float:
+    """Time of the first reversal of a run (``result.reversal_times[0]``), ``nan`` if it has none."""
+    return float(result.reversal_times[0]) if len(result.reversal_times) else math.nan
+
+
+def claim_energy_conserved(res, label: str, drift: float, limit: float = 1e-9) -> None:
+    """The integration check of a conservative run: claim ``drift`` (relative, of the energy or of the
+    energy plus the dissipated work) below ``limit``."""
+    res.claim(f"{label}energy conserved (integration check)", drift < limit, f"{drift:.1e} relative (limit {limit:g})")
+
+
 def envelope(theta: np.ndarray, theta_dot: np.ndarray, omega: float) -> np.ndarray:
     """Oscillation amplitude ``sqrt(theta^2 + (theta_dot/omega)^2)``, shape of ``theta``.
 

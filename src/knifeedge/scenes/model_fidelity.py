@@ -16,7 +16,7 @@ import time
 import numpy as np
 
 from .base import RunSpec, Scene, SceneResult
-from .common import label_log_ticks, require_success
+from .common import first_reversal, label_log_ticks, require_success
 from .numerical import RUN as SINGLE_RUN
 from .numerical2 import RUN as TWO_RUN
 
@@ -72,7 +72,7 @@ def compute(scene: Scene, progress) -> SceneResult:
             if run is None:
                 continue
             r, t = _timed(run)
-            tr = float(r.reversal_times[0]) if len(r.reversal_times) else math.nan
+            tr = first_reversal(r)
             row[fid] = (tr, abs(tr - t_ref) / t_ref, t, r.nfev)
         rows.append(row)
     fids = [f for f in ("full", "reduced", "amplitude") if f in rows[0]]
