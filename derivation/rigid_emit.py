@@ -38,6 +38,20 @@ def input_hash(system: rigid.RollingSystem, fidelity: str) -> str:
     return h.hexdigest()
 
 
+#: lines of a generated ``initial_state`` that check ``n0`` and ``omega0`` and normalize ``n0`` (every rigid
+#: module's, whatever its state)
+VERTICAL_CHECK = '''    n0 = np.array(n0, dtype=float)
+    omega0 = np.array(omega0, dtype=float)
+    if n0.shape != (3,) or not np.isfinite(n0).all():
+        raise ValueError(f"`n0` must be 3 finite numbers (the upward vertical in body axes), got {n0!r}")
+    if omega0.shape != (3,) or not np.isfinite(omega0).all():
+        raise ValueError(f"`omega0` must be 3 finite numbers (angular velocity in body axes), got {omega0!r}")
+    norm = math.sqrt(float(n0 @ n0))
+    if not norm > 0:
+        raise ValueError("`n0` must not be the zero vector")
+    n0 = n0 / norm
+'''
+
 _INITIAL_STATE = '''
 
 def initial_state(n0=(0.0, 0.0, 1.0), omega0=(0.0, 0.0, 0.0), pose=None):
@@ -58,17 +72,7 @@ def initial_state(n0=(0.0, 0.0, 1.0), omega0=(0.0, 0.0, 0.0), pose=None):
     ndarray of shape ({n},) (or ({n_pose},) with ``pose``) in the order of
     ``STATE_NAMES`` (+ ``POSE_NAMES``); ``omega_n = omega0 . n0``.
     """
-    n0 = np.array(n0, dtype=float)
-    omega0 = np.array(omega0, dtype=float)
-    if n0.shape != (3,) or not np.isfinite(n0).all():
-        raise ValueError(f"`n0` must be 3 finite numbers (the upward vertical in body axes), got {{n0!r}}")
-    if omega0.shape != (3,) or not np.isfinite(omega0).all():
-        raise ValueError(f"`omega0` must be 3 finite numbers (angular velocity in body axes), got {{omega0!r}}")
-    norm = math.sqrt(float(n0 @ n0))
-    if not norm > 0:
-        raise ValueError("`n0` must not be the zero vector")
-    n0 = n0 / norm
-    s = np.concatenate([n0, omega0, [float(omega0 @ n0)]])
+{VERTICAL}    s = np.concatenate([n0, omega0, [float(omega0 @ n0)]])
     if pose is None:
         return s
     pose = np.array(pose, dtype=float)
@@ -233,4 +237,4 @@ def multipliers(s, p):
 {nl.join(unpack_p)}
 {nl.join(lam_lines)}
     return out
-{_INITIAL_STATE.format(n=n, n_pose=n + npose)}''' + drawing.module_source(system)
+{_INITIAL_STATE.format(n=n, n_pose=n + npose, VERTICAL=VERTICAL_CHECK)}''' + drawing.module_source(system)

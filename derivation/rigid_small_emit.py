@@ -17,6 +17,7 @@ import sympy as sp
 
 from . import emit, rigid, rigid_small
 from .emit import _cse_block, _rhs_source, _unpack
+from .rigid_emit import VERTICAL_CHECK
 
 _DOC = {
     "reduced": ("small tilts, spin kept: rocking accelerations to first order in the tilts, spin acceleration to "
@@ -33,17 +34,7 @@ def initial_state(n0=(0.0, 0.0, 1.0), omega0=(0.0, 0.0, 0.0)):
     ``n0``: upward vertical in body axes (normalized here; ``n_z`` is not a state of this fidelity);
     ``omega0``: angular velocity in body axes [rad/s].
     """
-    n0 = np.array(n0, dtype=float)
-    omega0 = np.array(omega0, dtype=float)
-    if n0.shape != (3,) or not np.isfinite(n0).all():
-        raise ValueError(f"`n0` must be 3 finite numbers (the upward vertical in body axes), got {n0!r}")
-    if omega0.shape != (3,) or not np.isfinite(omega0).all():
-        raise ValueError(f"`omega0` must be 3 finite numbers (angular velocity in body axes), got {omega0!r}")
-    norm = math.sqrt(float(n0 @ n0))
-    if not norm > 0:
-        raise ValueError("`n0` must not be the zero vector")
-    n0 = n0 / norm
-    return np.array([n0[0], n0[1], omega0[0], omega0[1], omega0[2]])
+''' + VERTICAL_CHECK + '''    return np.array([n0[0], n0[1], omega0[0], omega0[1], omega0[2]])
 '''
 
 _AMPLITUDE_INITIAL = '''
@@ -70,17 +61,7 @@ def initial_state(n0=(0.0, 0.0, 1.0), omega0=(0.0, 0.0, 0.0), p=None):
     if p is None:
         raise ValueError("`p` (the parameters) is needed: the modes depend on them")
     p = _param_vector(p)
-    n0 = np.array(n0, dtype=float)
-    omega0 = np.array(omega0, dtype=float)
-    if n0.shape != (3,) or not np.isfinite(n0).all():
-        raise ValueError(f"`n0` must be 3 finite numbers (the upward vertical in body axes), got {n0!r}")
-    if omega0.shape != (3,) or not np.isfinite(omega0).all():
-        raise ValueError(f"`omega0` must be 3 finite numbers (angular velocity in body axes), got {omega0!r}")
-    norm = math.sqrt(float(n0 @ n0))
-    if not norm > 0:
-        raise ValueError("`n0` must not be the zero vector")
-    n0 = n0 / norm
-    q = n0[:2]
+''' + VERTICAL_CHECK + '''    q = n0[:2]
     q_dot = np.array([n0[1] * omega0[2] - omega0[1], omega0[0] - n0[0] * omega0[2]])
     w2, u, v = modes(p)
     amps = [math.hypot(float(v[k] @ q), float(v[k] @ q_dot) / math.sqrt(w2[k])) for k in range(2)]
@@ -113,7 +94,7 @@ def input_hash(system, fidelity: str) -> str:
     for part in (spec.name, fidelity, sp.__version__, sp.srepr(spec.lagrangian), sp.srepr(sp.Matrix(body.inertia)),
                  sp.srepr(body.sigma), repr(sorted(body.presets.items())), inspect.getsource(rigid),
                  inspect.getsource(rigid_small), inspect.getsource(model_file) if model_file else "",
-                 Path(__file__).read_text(), Path(emit.__file__).read_text(),
+                 Path(__file__).read_text(), Path(emit.__file__).read_text(), VERTICAL_CHECK,
                  repr(sorted(body.param_units.items())), repr(sorted(body.param_domains.items())), body.description):
         h.update(part.encode())
         h.update(b"\0")
