@@ -15,6 +15,7 @@ from .specialize import cache_dir, call_repairing, is_compiled, load_kernel
 from .status import Status, from_code
 from .tableau import TABLEAUS, ExplicitTableau, register
 from .common import SAMPLES as _SAMPLES
+from .compiler import compile_mode, set_compile_mode
 
 #: most zero crossings of one event a kernel finds in one step (room the event buffers keep per event)
 EVENTS_PER_STEP = _SAMPLES + 2
@@ -75,13 +76,33 @@ def kernel(model, method: str):
     rhs_name = "rhs_pose_q_into" if model.pose else "rhs_q_into"
     key = (model.module.__name__, rhs_name, spec.template, spec.variant)
     if key not in _KERNELS:
-        module = load_kernel(spec.template, spec.variant, model.module, rhs_name, model.n_state)
+        module = kernel_module(model, method)
         solve = module.solve
         if not is_compiled(module):
             pose = ", pose" if model.pose else ""
             solve = _announced(solve, f"{spec.name} for {model.name} ({model.fidelity}{pose})")
         _KERNELS[key] = solve
     return _KERNELS[key]
+
+
+def kernel_module(model, method: str):
+    """The kernel module of ``method`` for ``model`` (written and imported, compiled or not: its ``solve``
+    compiles at its first call unless the cache holds it, see :func:`kernel_compiled`)."""
+    spec = COMPILED_METHODS[ALIASES.get(method, method)]
+    rhs_name = "rhs_pose_q_into" if model.pose else "rhs_q_into"
+    return load_kernel(spec.template, spec.variant, model.module, rhs_name, model.n_state)
+
+
+def kernel_compiled(model, method: str) -> bool:
+    """Whether the cache holds the compiled kernel of ``method`` for ``model`` (a later call loads it)."""
+    return is_compiled(kernel_module(model, method))
+
+
+def use_compiled(model, method: str) -> None:
+    """Forget a first-call notice of the kernel of ``method`` for ``model`` (it was compiled elsewhere)."""
+    spec = COMPILED_METHODS[ALIASES.get(method, method)]
+    rhs_name = "rhs_pose_q_into" if model.pose else "rhs_q_into"
+    _KERNELS[(model.module.__name__, rhs_name, spec.template, spec.variant)] = kernel_module(model, method).solve
 
 
 def _announced(solve, label: str):
@@ -104,4 +125,5 @@ def _announced(solve, label: str):
 
 __all__ = ["COMPILED_METHODS", "ALIASES", "EVENTS_PER_STEP", "CompiledMethod", "ExplicitTableau", "Status", "TABLEAUS",
            "cache_dir",
-           "call_repairing", "from_code", "kernel", "register"]
+           "call_repairing", "compile_mode", "from_code", "kernel", "kernel_compiled", "kernel_module", "register",
+           "set_compile_mode", "use_compiled"]
