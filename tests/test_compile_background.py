@@ -42,7 +42,7 @@ def background(monkeypatch):
     """Background mode, with the kernel taken as not compiled and a stand-in compiling process."""
     pending = _Ready(after=3)
     monkeypatch.setattr(SIM, "kernel_compiled", lambda model, method: False)
-    monkeypatch.setattr(compiler, "start", lambda model, module, types: pending)
+    monkeypatch.setattr(compiler, "start", lambda model, method, module, types: pending)
     with compiler.compile_mode_set("background"):
         yield pending
 
@@ -86,7 +86,7 @@ def test_handover_takes_the_steps_of_the_compiled_run(background, method, output
 def test_run_that_ends_first_does_not_wait(monkeypatch, capsys):
     """A run shorter than the compile is SciPy's whole; its result is the compiled run's to round-off."""
     monkeypatch.setattr(SIM, "kernel_compiled", lambda model, method: False)
-    monkeypatch.setattr(compiler, "start", lambda model, module, types: _Ready(after=10**9))
+    monkeypatch.setattr(compiler, "start", lambda model, method, module, types: _Ready(after=10**9))
     m, p, y0 = _two_mode()
     ref = ke.simulate(m, y0, (0.0, 50.0), p, rtol=1e-10, atol=1e-12)
     with compiler.compile_mode_set("background"):

@@ -128,8 +128,24 @@ def _alive(pid: int) -> bool:
     return True
 
 
-def start(model, kernel_module, arg_types: tuple) -> Pending:
-    """Compile ``kernel_module.solve`` for the argument types ``arg_types`` in a separate process.
+def argument_types(kernel_module, args: tuple) -> tuple:
+    """numba's types of what ``kernel_module.solve(*args)`` compiles, found without compiling anything."""
+    if hasattr(kernel_module, "argument_types"):  # the model's parts of the shared adaptive integrator
+        return kernel_module.argument_types(args)
+    return tuple(kernel_module.solve.typeof_pyval(a) for a in args)
+
+
+def compile_types(kernel_module, arg_types: tuple) -> None:
+    """Compile (or load from the cache) ``kernel_module``'s code for :func:`argument_types` ``arg_types``."""
+    if hasattr(kernel_module, "compile_types"):
+        kernel_module.compile_types(arg_types)
+    else:
+        kernel_module.solve.compile(arg_types)
+
+
+def start(model, method: str, kernel_module, arg_types: tuple) -> Pending:
+    """Compile the kernel of ``method`` for ``model`` (``kernel_module``) for the argument types ``arg_types``
+    (:func:`argument_types`) in a separate process.
 
     Returns a :class:`Pending`; if another live process is already compiling
     the same kernel (its lock file names it), none is started.
@@ -146,7 +162,7 @@ def start(model, kernel_module, arg_types: tuple) -> Pending:
         return Pending(kernel_module, path, None, started=False)
     lock.unlink(missing_ok=True)
     job = {
-        "kernel": str(path), "kernel_name": kernel_module.__name__,
+        "kernel": str(path), "method": method,
         "model": model.module.MODEL, "fidelity": model.module.FIDELITY, "pose": bool(model.pose),
         "path": str(model.source_path.parent) if model.source_path is not None else None,
         "types": base64.b64encode(pickle.dumps(tuple(arg_types))).decode(),
@@ -165,19 +181,17 @@ def start(model, kernel_module, arg_types: tuple) -> Pending:
 
 def _main() -> int:
     """The compiling process: read the job from stdin, import the model and the kernel, compile, cache."""
-    import importlib.util
-
     job = json.loads(sys.stdin.read())
     path = Path(job["kernel"])
     try:
         from .. import load
+        from . import kernel_module
 
-        load(job["model"], fidelity=job["fidelity"], pose=job["pose"], path=job["path"])  # the kernel imports it
-        spec = importlib.util.spec_from_file_location(job["kernel_name"], path)
-        module = importlib.util.module_from_spec(spec)
-        sys.modules[job["kernel_name"]] = module
-        spec.loader.exec_module(module)
-        module.solve.compile(pickle.loads(base64.b64decode(job["types"])))
+        model = load(job["model"], fidelity=job["fidelity"], pose=job["pose"], path=job["path"])
+        module = kernel_module(model, job["method"])
+        if Path(module.__file__) != path:
+            raise RuntimeError(f"the kernel of this process is {module.__file__}, not {path}")
+        compile_types(module, pickle.loads(base64.b64decode(job["types"])))
     finally:
         lock = _lock(path)
         try:
