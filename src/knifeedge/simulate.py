@@ -143,8 +143,39 @@ def _mode_pairs(model: Model) -> np.ndarray:
 
 #: accepted steps per call of a compiled kernel: between calls Python answers Ctrl-C; the steps are the same
 CHUNK_STEPS = 50_000
-#: rows of the first call's output buffer when every step is stored; it doubles from call to call
+#: rows of the output buffer of a run that stores every step, until its first pause tells how fast it goes
 ROWS_FIRST = 4096
+#: most rows allocated ahead of the steps that fill them (fixed steps: their count is known beforehand)
+ROWS_AHEAD = 1 << 20
+#: room of the first call's event buffers (at least four steps' worth); it doubles when a call fills it
+EVENTS_FIRST = 64
+
+
+def _grown(buf: np.ndarray, used: int, size: int) -> np.ndarray:
+    """A buffer of ``size`` rows holding the first ``used`` rows of ``buf``."""
+    new = np.empty((size,) + buf.shape[1:], dtype=buf.dtype)
+    new[:used] = buf[:used]
+    return new
+
+
+def _rows_needed(used: int, t0: float, t: float, t1: float, cap: int, most: int) -> int:
+    """Rows for a run that filled ``cap`` rows (``used`` of them) from ``t0`` to ``t``: what its pace so far
+    needs to reach ``t1``, with an eighth to spare, at least half as many again (a run that speeds up grows
+    geometrically), at most ``most``."""
+    pace = (used - 1) / (t - t0) if t > t0 else 0.0
+    guess = used + pace * (t1 - t) * 1.125 + 64
+    return int(min(most, max(cap + cap // 2 + 1, guess if math.isfinite(guess) else 0)))
+
+
+def _transposed(rows: np.ndarray) -> np.ndarray:
+    """``rows.T`` as a C-contiguous array, copied in blocks that stay in the cache."""
+    m, n = rows.shape
+    if m <= 8192:
+        return np.ascontiguousarray(rows.T)
+    out = np.empty((n, m))
+    for a in range(0, m, 8192):
+        out[:, a:a + 8192] = rows[a:a + 8192].T
+    return out
 
 
 def _reversal_names(model: Model) -> tuple:
@@ -188,38 +219,48 @@ def _run_compiled(name: str):
         events = np.array([_event_code(model, e) for e in names], dtype=np.int64)
         every = r.t_eval is None
         pair = _mode_pairs(model)
+        n = model.n_state
+        # one buffer of rows for the whole run; each call of the kernel fills the rows after those stored
+        # (a C-contiguous tail: the kernel's argument types stay those it was compiled for)
         if every:
             t_eval = np.empty(0)
-            ts, ys = [np.array([r.t0])], [r.y0[None, :]]
+            most = min(r.max_steps, 2**62) + 1  # the start and at most one row per accepted step
+            cap = min(ROWS_FIRST, most)
+            used = 1
         else:
             t_eval = np.ascontiguousarray(r.t_eval)
-            at_start = int(np.searchsorted(t_eval, r.t0, side="right"))
-            ts, ys = [t_eval[:at_start]], [np.repeat(r.y0[None, :], at_start, axis=0)]
-            t_eval = t_eval[at_start:]
-        ev_t, ev_k = [], []
+            cap = t_eval.size + 1  # every output time, and a spare row: a tail is never empty
+            used = int(np.searchsorted(t_eval, r.t0, side="right"))  # times at the start: the initial state
         nfev = nacc = nrej = 0
         t, y, f, carry = r.t0, r.y0, r.y0, 0.0
-        n = model.n_state
-        rows = ROWS_FIRST
         if spec.fixed_step:
             n_steps = math.ceil((r.t1 - r.t0) / r.h)
             h = (r.t1 - r.t0) / n_steps
             comp, Z = np.zeros(n), np.empty((4, n))  # 4 >= stages of every fixed method
-            rows = min(n_steps, CHUNK_STEPS)
+            if every:  # the rows are known: n_steps + 1 (up to ROWS_AHEAD of them now)
+                cap = min(n_steps + 1, most, ROWS_AHEAD)
+        ts, ys = np.empty(cap), np.empty((cap, n))
+        if every:
+            ts[0], ys[0] = r.t0, r.y0
+        else:
+            ts[:used], ys[:used] = t_eval[:used], r.y0
+        per_step = EVENTS_PER_STEP * events.size  # most crossings one step records
+        room = max(EVENTS_FIRST, 4 * per_step)
+        ev_t, ev_k = np.empty(room), np.empty(room, dtype=np.int64)
+        n_ev = 0
         while True:
             left = min(r.max_steps - nacc, 2**62)
             chunk = min(CHUNK_STEPS, left)
-            cap = min(rows, chunk) if every else max(t_eval.size, 1)
-            room = max(64, 4 * EVENTS_PER_STEP * events.size)
-            buffers = (np.empty(cap), np.empty((cap, n)), np.empty(room), np.empty(room, dtype=np.int64))
+            tails = (ts[used:], ys[used:], ev_t[n_ev:], ev_k[n_ev:])
+            ahead = t_eval if every else t_eval[used:]
             if spec.fixed_step:
-                args = (r.t0, r.t1, y, f, r.p, h, n_steps, int(carry), r.atol, t_eval, every, events, left, pair,
+                args = (r.t0, r.t1, y, f, r.p, h, n_steps, int(carry), r.atol, ahead, every, events, left, pair,
                         chunk, comp, Z)
             else:
-                args = (t, r.t1, y, f, r.p, r.rtol, r.atol, carry, r.max_step, t_eval, every, events, left, pair,
+                args = (t, r.t1, y, f, r.p, r.rtol, r.atol, carry, r.max_step, ahead, every, events, left, pair,
                         r.error_control == "mode", chunk)
             try:
-                n_out, n_ev, code, nf, na, nr, t, y, f, carry = call_repairing(solve, *args, *buffers)
+                n_out, n_new, code, nf, na, nr, t, y, f, carry = call_repairing(solve, *args, *tails)
             except SystemError as exc:  # Ctrl-C that arrived while numba called back into Python
                 cause = exc.__cause__
                 while cause is not None and not isinstance(cause, KeyboardInterrupt):
@@ -227,19 +268,19 @@ def _run_compiled(name: str):
                 if cause is not None:
                     raise KeyboardInterrupt from None
                 raise
-            ts.append(buffers[0][:n_out])
-            ys.append(buffers[1][:n_out])
-            ev_t.append(buffers[2][:n_ev])
-            ev_k.append(buffers[3][:n_ev])
+            used, n_ev = used + n_out, n_ev + n_new
             nfev, nacc, nrej = nfev + nf, nacc + na, nrej + nr
             if code != 1:
                 break
-            rows = min(2 * rows, CHUNK_STEPS)
-            if not every:
-                t_eval = t_eval[n_out:]
-        t_out = np.concatenate(ts) if len(ts) > 1 else ts[0]
-        y_out = np.ascontiguousarray(np.concatenate(ys).T)
-        events_out = _split_events(names, np.concatenate(ev_t), np.concatenate(ev_k))
+            if every and used == cap:  # paused with the rows full: grow them to what the pace so far needs
+                size = _rows_needed(used, r.t0, t, r.t1, cap, most)
+                ts, ys, cap = _grown(ts, used, size), _grown(ys, used, size), size
+            if n_ev + per_step > ev_t.size:  # paused with the event buffers nearly full: double them
+                ev_t, ev_k = _grown(ev_t, n_ev, 2 * ev_t.size), _grown(ev_k, n_ev, 2 * ev_k.size)
+        # the times are copied when much of their buffer is spare room (a result keeps only what it shows)
+        t_out = ts[:used] if 8 * (cap - used) <= cap else ts[:used].copy()
+        y_out = _transposed(ys[:used])
+        events_out = _split_events(names, ev_t[:n_ev], ev_k[:n_ev])
         return t_out, y_out, events_out, from_code(code), nfev, nacc, nrej
 
     return run
