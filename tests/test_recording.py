@@ -55,14 +55,21 @@ def test_every_step_recorded_ends_on_the_final_state_call(scene, method, kw):
 
 
 def _spy_growth(monkeypatch):
+    """Record each new buffer of rows (``"rows"``) and each growth of the event buffers (``"events"``)."""
     grown = []
-    real = sim._grown
+    rows_ahead, events_grown = sim._rows_ahead, sim._grown
 
-    def spy(buf, used, size):
-        grown.append((buf.ndim, buf.dtype.kind))
-        return real(buf, used, size)
+    def rows(*args):
+        grown.append("rows")
+        return rows_ahead(*args)
 
-    monkeypatch.setattr(sim, "_grown", spy)
+    def events(buf, used, size):
+        grown.append("events")
+        return events_grown(buf, used, size)
+
+    monkeypatch.setattr(sim, "_rows_ahead", rows)
+    monkeypatch.setattr(sim, "_grown", events)
+    monkeypatch.setattr(sim, "_KEPT", sim.threading.local())  # no buffer kept from an earlier run
     return grown
 
 
@@ -74,8 +81,8 @@ def test_growing_buffers_give_the_rows_of_one_large_buffer(monkeypatch, scene, m
     args = (m, y0, (0.0, t1), p)
     kw = dict(kw, method=method, events=m.state_names)
     with monkeypatch.context() as mp:
-        mp.setattr(sim, "ROWS_FIRST", 10**7)
-        mp.setattr(sim, "ROWS_AHEAD", 10**7)
+        mp.setattr(sim, "ROWS_FIRST", 10**6)
+        mp.setattr(sim, "ROWS_AHEAD", 10**6)
         mp.setattr(sim, "EVENTS_FIRST", 10**6)
         mp.setattr(sim, "CHUNK_STEPS", 10**9)
         grown = _spy_growth(mp)
@@ -87,7 +94,7 @@ def test_growing_buffers_give_the_rows_of_one_large_buffer(monkeypatch, scene, m
     monkeypatch.setattr(sim, "EVENTS_FIRST", 1)
     monkeypatch.setattr(sim, "CHUNK_STEPS", 333)
     parts = ke.simulate(*args, **kw)
-    assert (2, "f") in grown and (1, "i") in grown  # both the rows and the event buffers grew
+    assert "rows" in grown and "events" in grown  # new buffers of rows, event buffers grown
     assert one.success and parts.success and one.nsteps > 1000
     assert sum(v.size for v in one.events.values()) > 150
     assert (one.nfev, one.nsteps, one.nrejected) == (parts.nfev, parts.nsteps, parts.nrejected)
@@ -98,14 +105,21 @@ def test_growing_buffers_give_the_rows_of_one_large_buffer(monkeypatch, scene, m
         np.testing.assert_array_equal(one.events[name], parts.events[name])
 
 
-def test_a_result_keeps_its_rows_when_the_next_run_records():
-    """Buffers are not shared between results: a later run leaves an earlier result as it was."""
+@pytest.mark.parametrize("t_eval", [None, "final", "grid"])
+def test_a_result_keeps_its_rows_when_the_next_run_records(t_eval):
+    """A thread keeps a run's buffer of rows for its next run; no result shares it: later runs (longer,
+    shorter, other output) leave an earlier result as it was, and a run into a kept buffer holding stale rows
+    stores what a run into new buffers stores."""
     m, y0, p, t1 = _scene("two")
-    first = ke.simulate(m, y0, (0.0, t1), p)
+    grid = {None: None, "final": [t1], "grid": np.linspace(0.0, t1, 7)}[t_eval]
+    first = ke.simulate(m, y0, (0.0, t1), p, t_eval=grid)
     kept = first.t.copy(), first.y.copy(), {k: v.copy() for k, v in first.events.items()}
-    ke.simulate(m, 2 * y0, (0.0, t1), p)
-    ke.simulate(m, y0, (0.0, t1 / 3), p, events=m.state_names)
-    np.testing.assert_array_equal(first.t, kept[0])
-    np.testing.assert_array_equal(first.y, kept[1])
-    for name, times in kept[2].items():
-        np.testing.assert_array_equal(first.events[name], times)
+    ke.simulate(m, 2 * y0, (0.0, 3 * t1), p)
+    ke.simulate(m, 3 * y0, (0.0, t1 / 3), p, events=m.state_names)
+    ke.simulate(m, 4 * y0, (0.0, t1), p, t_eval=grid)
+    again = ke.simulate(m, y0, (0.0, t1), p, t_eval=grid)
+    for r in (first, again):
+        np.testing.assert_array_equal(r.t, kept[0])
+        np.testing.assert_array_equal(r.y, kept[1])
+        for name, times in kept[2].items():
+            np.testing.assert_array_equal(r.events[name], times)

@@ -12,6 +12,7 @@ argument); a failed integration is reported in ``success``/``status``/
 from __future__ import annotations
 
 import math
+import threading
 import warnings
 from dataclasses import dataclass, field
 
@@ -149,6 +150,32 @@ ROWS_FIRST = 4096
 ROWS_AHEAD = 1 << 20
 #: room of the first call's event buffers (at least four steps' worth); it doubles when a call fills it
 EVENTS_FIRST = 64
+#: a run's buffer of rows up to this size (bytes) is kept for the next run of the same thread: memory the
+#: system need not hand out (and fault in, page by page) again
+ROWS_KEPT_BYTES = 1 << 22
+_KEPT = threading.local()
+
+
+def _rows_buffer(n: int, cap: int) -> tuple:
+    """Buffers ``(times (c,), rows (c, n))`` with ``c >= cap``: the thread's kept ones if they are large enough
+    (taken: a run interrupted by an exception does not give them back), else new ones."""
+    kept = getattr(_KEPT, "rows", None)
+    if kept is not None and kept[1].shape[1] == n and kept[0].size >= cap:
+        _KEPT.rows = None
+        return kept
+    return np.empty(cap), np.empty((cap, n))
+
+
+def _keep_rows(ts: np.ndarray, ys: np.ndarray) -> bool:
+    """Keep the buffers for the thread's next run if they are small enough and larger than those it keeps;
+    whether they were kept."""
+    if ts.nbytes + ys.nbytes > ROWS_KEPT_BYTES:
+        return False
+    kept = getattr(_KEPT, "rows", None)
+    if kept is not None and kept[0].size > ts.size:
+        return False
+    _KEPT.rows = (ts, ys)
+    return True
 
 
 def _grown(buf: np.ndarray, used: int, size: int) -> np.ndarray:
@@ -158,24 +185,33 @@ def _grown(buf: np.ndarray, used: int, size: int) -> np.ndarray:
     return new
 
 
-def _rows_needed(used: int, t0: float, t: float, t1: float, cap: int, most: int) -> int:
-    """Rows for a run that filled ``cap`` rows (``used`` of them) from ``t0`` to ``t``: what its pace so far
-    needs to reach ``t1``, with an eighth to spare, at least half as many again (a run that speeds up grows
-    geometrically), at most ``most``."""
-    pace = (used - 1) / (t - t0) if t > t0 else 0.0
-    guess = used + pace * (t1 - t) * 1.125 + 64
-    return int(min(most, max(cap + cap // 2 + 1, guess if math.isfinite(guess) else 0)))
+def _rows_ahead(stored: int, t0: float, t: float, t1: float, most: int) -> int:
+    """Rows of the next buffer of a run that stored ``stored`` rows from ``t0`` to ``t``: what its pace so far
+    needs to reach ``t1`` with a quarter to spare, at least half the rows stored (a run that speeds up still
+    needs few buffers), at most ``most - stored`` (and at least one)."""
+    pace = (stored - 1) / (t - t0) if t > t0 else 0.0
+    guess = pace * (t1 - t) * 1.25 + 64
+    size = max(stored // 2 + 1, int(guess) if math.isfinite(guess) else 0)
+    return max(1, min(most - stored, size))
 
 
-def _transposed(rows: np.ndarray) -> np.ndarray:
-    """``rows.T`` as a C-contiguous array, copied in blocks that stay in the cache."""
-    m, n = rows.shape
-    if m <= 8192:
-        return np.ascontiguousarray(rows.T)
-    out = np.empty((n, m))
-    for a in range(0, m, 8192):
-        out[:, a:a + 8192] = rows[a:a + 8192].T
-    return out
+def _assembled(parts: list, n: int) -> tuple:
+    """``(times (m,), states (n, m) C-contiguous)`` from buffers ``(times (k,), rows (k, n))`` in order: the
+    rows transposed in blocks that stay in the cache, straight into the result."""
+    if len(parts) == 1:
+        t_out, rows = parts[0]
+        if rows.shape[0] <= 8192:
+            return t_out, rows.T.copy()  # a copy even when rows.T is contiguous (one row): buffers are reused
+    else:
+        t_out = np.concatenate([ts for ts, _ in parts])
+    y_out = np.empty((n, t_out.size))
+    a = 0
+    for _, rows in parts:
+        for b in range(0, rows.shape[0], 8192):
+            block = rows[b:b + 8192]
+            y_out[:, a:a + block.shape[0]] = block.T
+            a += block.shape[0]
+    return t_out, y_out
 
 
 def _reversal_names(model: Model) -> tuple:
@@ -220,8 +256,9 @@ def _run_compiled(name: str):
         every = r.t_eval is None
         pair = _mode_pairs(model)
         n = model.n_state
-        # one buffer of rows for the whole run; each call of the kernel fills the rows after those stored
-        # (a C-contiguous tail: the kernel's argument types stay those it was compiled for)
+        # each call of the kernel fills the rows of a buffer after those stored (a C-contiguous tail: the
+        # kernel's argument types stay those it was compiled for); a full buffer is followed by one sized from
+        # the pace of the run so far (nothing copied), and all are transposed into the result at the end
         if every:
             t_eval = np.empty(0)
             most = min(r.max_steps, 2**62) + 1  # the start and at most one row per accepted step
@@ -239,7 +276,8 @@ def _run_compiled(name: str):
             comp, Z = np.zeros(n), np.empty((4, n))  # 4 >= stages of every fixed method
             if every:  # the rows are known: n_steps + 1 (up to ROWS_AHEAD of them now)
                 cap = min(n_steps + 1, most, ROWS_AHEAD)
-        ts, ys = np.empty(cap), np.empty((cap, n))
+        ts, ys = _rows_buffer(n, cap)
+        full, stored = [], 0  # the full buffers, their rows
         if every:
             ts[0], ys[0] = r.t0, r.y0
         else:
@@ -272,14 +310,20 @@ def _run_compiled(name: str):
             nfev, nacc, nrej = nfev + nf, nacc + na, nrej + nr
             if code != 1:
                 break
-            if every and used == cap:  # paused with the rows full: grow them to what the pace so far needs
-                size = _rows_needed(used, r.t0, t, r.t1, cap, most)
-                ts, ys, cap = _grown(ts, used, size), _grown(ys, used, size), size
+            if every and used == ts.size:  # paused with the rows full: the next buffer
+                full.append((ts, ys))
+                stored += used
+                size = _rows_ahead(stored, r.t0, t, r.t1, most)
+                ts, ys, used = np.empty(size), np.empty((size, n)), 0
             if n_ev + per_step > ev_t.size:  # paused with the event buffers nearly full: double them
                 ev_t, ev_k = _grown(ev_t, n_ev, 2 * ev_t.size), _grown(ev_k, n_ev, 2 * ev_k.size)
-        # the times are copied when much of their buffer is spare room (a result keeps only what it shows)
-        t_out = ts[:used] if 8 * (cap - used) <= cap else ts[:used].copy()
-        y_out = _transposed(ys[:used])
+        t_out, y_out = _assembled(full + [(ts[:used], ys[:used])], n)
+        # the largest buffer small enough is kept for the next run; the times are copied if it is theirs, or
+        # if much of it is spare (a result keeps only what it shows)
+        biggest = max(full + [(ts, ys)], key=lambda b: b[0].size)
+        kept = _keep_rows(*biggest)
+        if t_out.base is ts and ((kept and biggest[0] is ts) or 8 * (ts.size - used) > ts.size):
+            t_out = t_out.copy()
         events_out = _split_events(names, ev_t[:n_ev], ev_k[:n_ev])
         return t_out, y_out, events_out, from_code(code), nfev, nacc, nrej
 
