@@ -363,7 +363,8 @@ class _Run:
         return self.inputs["run_id"]
 
 
-_HOLE = "@knifeedge-sweep-value-{}@"
+_HOLE_MARK = "@knifeedge-sweep-value-"
+_HOLE = _HOLE_MARK + "{}@"
 
 
 class _Base:
@@ -394,7 +395,7 @@ class _Base:
         marked = _with_values(self.spec, {n: _HOLE.format(i) for i, n in enumerate(self.names)})
         self.key_format = _template(json.dumps(_key(marked), sort_keys=True), len(self.names))
         self.text_format = _template(json.dumps(marked), len(self.names))
-        if self.key_format is None or self.text_format is None or _HOLE.format("") in json.dumps(self.spec):
+        if self.key_format is None or self.text_format is None or _HOLE_MARK in json.dumps(self.spec):
             self.key_format = self.text_format = None
         else:
             made = self.make(dict(self.values))
