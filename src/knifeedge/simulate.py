@@ -188,11 +188,12 @@ def _grown(buf: np.ndarray, used: int, size: int) -> np.ndarray:
 def _rows_ahead(stored: int, t0: float, t: float, t1: float, most: int) -> int:
     """Rows of the next buffer of a run that stored ``stored`` rows from ``t0`` to ``t``: what its pace so far
     needs to reach ``t1`` with a quarter to spare, at least half the rows stored (a run that speeds up still
-    needs few buffers), at most ``most - stored`` (and at least one)."""
+    needs few buffers), at most ``most - stored`` and the larger of ``ROWS_AHEAD`` and ``stored`` (a run that
+    slows down allocates no more than twice what it stores), and at least one."""
     pace = (stored - 1) / (t - t0) if t > t0 else 0.0
     guess = pace * (t1 - t) * 1.25 + 64
-    size = max(stored // 2 + 1, int(guess) if math.isfinite(guess) else 0)
-    return max(1, min(most - stored, size))
+    size = max(stored // 2 + 1, int(min(guess, 2.0**62)) if math.isfinite(guess) else 0)
+    return max(1, min(most - stored, max(ROWS_AHEAD, stored), size))
 
 
 def _assembled(parts: list, n: int) -> tuple:
