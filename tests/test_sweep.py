@@ -520,6 +520,27 @@ def test_dask_local_cluster_gives_the_serial_table(serial_table):
     _same(t, serial_table)
 
 
+def test_a_task_is_opaque_to_dask_and_has_a_key_of_its_own():
+    """Dask hashes a task's arguments for its key: a task's runs are not walked, and a task sent again (a retry)
+    never shares the key, so the future, of the task it replaces."""
+    tokenize = pytest.importorskip("dask.base").tokenize
+    from knifeedge.workers import _Task
+
+    class Unhashable(dict):
+        def __dask_tokenize__(self):
+            raise AssertionError("a run was walked")
+
+    runs = [Unhashable(phi_dot=0.1)]
+    assert tokenize(_Task(runs)) != tokenize(_Task(runs))
+    task = _Task(runs)
+    assert list(task) == runs and len(task) == 1
+    import pickle
+
+    plain = _Task([{"phi_dot": 0.1}])
+    again = pickle.loads(pickle.dumps(plain))
+    assert list(again) == [{"phi_dot": 0.1}] and tokenize(again) == tokenize(plain)
+
+
 def test_ctrl_c_on_the_command_line_keeps_finished_runs(tmp_path):
     """A real SIGINT to `knifeedge sweep` on local workers: finished rows stay, the rerun computes only the rest."""
     out = tmp_path / "runs.csv"

@@ -49,9 +49,10 @@ __all__ = ["sweep", "SweepTable", "run_one", "run_batch", "RESULT_COLUMNS", "STA
 MISSING = "missing"
 #: attempts of a run whose worker keeps dying before it is left without a result
 MAX_ATTEMPTS = 3
-#: wall time a task of several runs aims at (a few per worker in flight; see ``chunksize``)
+#: wall time a task of several runs aims at (a few per worker in flight; see ``chunksize``); an executor's tasks
+#: (a Dask cluster's) aim at ``ExecutorPool.task_seconds``, longer: each costs its scheduler milliseconds
 TASK_SECONDS = 0.25
-#: most runs in one task (a task whose worker dies is retried run by run)
+#: most runs in one task (a task whose worker dies is retried run by run); ``ExecutorPool.max_chunk`` for an executor
 MAX_CHUNK = 256
 
 
@@ -82,8 +83,8 @@ def run_one(spec: Mapping) -> dict:
     return out
 
 
-def run_batch(specs: Sequence[Mapping]) -> list:
-    """:func:`run_one` on each of ``specs`` (one task of a sweep)."""
+def run_batch(specs: Iterable[Mapping]) -> list:
+    """:func:`run_one` on each of ``specs`` (one task of a sweep: a list, or the opaque task an executor gets)."""
     return [run_one(s) for s in specs]
 
 
@@ -613,7 +614,7 @@ def sweep(
     resume : if False, runs stored before this call are recomputed (and replaced).
     progress : True (a tqdm bar on stderr), False, or ``callback(done, total, row)``.
     chunksize : runs per task sent to a worker; default: sized from the
-        runs' duration so that a task takes about 0.25 s (up to 256 runs).
+        runs' duration so that a task takes about 0.25 s (up to 256 runs; on an Executor 1 s, up to 1024 runs).
 
     Returns
     -------
@@ -706,14 +707,14 @@ class _Sweep:
         n = n or getattr(ex, "_max_workers", None) or os.cpu_count() or 1
         return ExecutorPool(ex, run_batch, 2 * n), n
 
-    def _chunk(self, remaining: int, n_workers: int) -> int:
+    def _chunk(self, remaining: int, n_workers: int, pool) -> int:
         if self.chunksize is not None:
             return self.chunksize
         if len(self.times) < 2:
             return 1
         per_run = max(statistics.median(self.times), 1e-5)
-        k = int(TASK_SECONDS / per_run)
-        k = min(k, MAX_CHUNK, max(1, remaining // (4 * n_workers)))  # keep the tail balanced
+        k = int(getattr(pool, "task_seconds", TASK_SECONDS) / per_run)
+        k = min(k, getattr(pool, "max_chunk", MAX_CHUNK), max(1, remaining // (4 * n_workers)))  # a balanced tail
         return max(1, k)
 
     # -- the loop -----------------------------------------------------------------
@@ -747,7 +748,7 @@ class _Sweep:
             while todo or inflight or others:
                 # hand out work while the pool has room
                 while todo and pool.free():
-                    k = 1 if todo[0] in attempts else self._chunk(len(todo), n_workers)
+                    k = 1 if todo[0] in attempts else self._chunk(len(todo), n_workers, pool)
                     ids = [todo.popleft() for _ in range(min(k, len(todo)))]
                     ids = self._claim(ids, others)
                     if ids:
