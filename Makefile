@@ -24,6 +24,7 @@ demo:
 ## bench: speed and accuracy benchmarks (not part of the tests)
 bench:
 	$(PYTHON) -m benchmarks
+	$(PYTHON) -m benchmarks.recording
 	$(PYTHON) -m benchmarks.rigid_pydy
 
 ## figures: every figure of the paper

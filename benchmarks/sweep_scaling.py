@@ -1,7 +1,7 @@
 """Scale-out of ``ke.sweep``: wall time on 1 and 2 local workers and a Dask LocalCluster, and the share of it
 spent outside integration (scheduling, serialization, writing rows).
 
-    python -m benchmarks.sweep_scaling [--runs 10000] [--out benchmarks/results/sweep_scaling.json]
+    python -m benchmarks.sweep_scaling [--runs 10000] [--repeats 3] [--out benchmarks/results/sweep_scaling.json]
 
 The sweep: first-reversal runs of the two-mode ``full`` model (the ``tinversion`` scene's run: ``ell/L = 1/2``,
 ``D/ell = 1/2``, ``alpha = pi/4``, tilts 1e-3, DOP853 at rtol 1e-10), ``phi_dot`` from 0.05 to 0.4, each run's
@@ -16,7 +16,11 @@ Two measures of the time spent outside integration, for each configuration with 
 * ``overhead_cpu = 1 - cpu_integration / cpu_total``: ``cpu_integration`` is the CPU time of the same runs
   integrated one after another in this process (``run_one``, measured first); ``cpu_total`` the CPU time the
   sweep used -- its own process (scheduling, the store, unpickling rows) plus its workers (start-up included).
-  CPU time does not count waiting for a core, so this is the figure that other load on the machine leaves alone.
+  CPU time does not count waiting for a core, so this is the figure that other load on the machine leaves alone
+  (mostly: a core shared with other work also runs slower).
+
+Each repeat measures ``cpu_integration`` again, then every configuration; the rows are the medians over the
+repeats (``repeats`` holds every measurement), with the 1-minute load average of the machine before and after.
 """
 from __future__ import annotations
 
@@ -99,37 +103,72 @@ def _measure(name: str, n_workers: int, points: list, cpu_integration: float, ex
     }
 
 
+_MEDIAN_KEYS = ("wall_s", "busy_s", "overhead_wall", "cpu_integration_s", "cpu_parent_s", "cpu_workers_s",
+                "overhead_cpu", "start_to_first_row_s", "runs_per_s", "mean_run_ms")
+
+
+def _median_row(rows: list) -> dict:
+    out = dict(rows[0])
+    for k in _MEDIAN_KEYS:
+        out[k] = float(np.median([r[k] for r in rows]))
+    out["load_avg_1min"] = [min(r["load_avg_1min_before"] for r in rows), max(r["load_avg_1min_after"] for r in rows)]
+    for k in ("load_avg_1min_before", "load_avg_1min_after"):
+        out.pop(k)
+    out["repeats"] = len(rows)
+    return out
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(prog="python -m benchmarks.sweep_scaling", description=__doc__.splitlines()[0])
     ap.add_argument("--runs", type=int, default=10_000)
+    ap.add_argument("--repeats", type=int, default=3)
     ap.add_argument("--out", type=Path, default=Path(__file__).resolve().parent / "results" / "sweep_scaling.json")
     ap.add_argument("--skip-dask", action="store_true")
     args = ap.parse_args(argv)
     points = _points(args.runs)
     # warm the compiled-kernel cache once (a first use compiles; that is not the sweep's cost)
     ke.sweep(RUN.with_(fidelity="full"), points[:1], executor="serial", progress=False)
-    cpu_integration = _integration_cpu(points)
-    print(f"integration alone: {cpu_integration:.1f} CPU s for {len(points)} runs", flush=True)
     results = {"machine": platform.platform(), "cpus": os.cpu_count(), "python": platform.python_version(),
-               "cpu_integration_s": cpu_integration,
-               "sweep": f"two_mode full, DOP853 rtol 1e-10, phi_dot 0.05..0.4, {args.runs} runs", "rows": []}
-    configs = [("local, 1 worker", 1, None), ("local, 2 workers", 2, None)]
-    for name, w, ex in configs:
-        r = _measure(name, w, points, cpu_integration, ex)
-        results["rows"].append(r)
-        print(json.dumps(r), flush=True)
+               "sweep": f"two_mode full, DOP853 rtol 1e-10, phi_dot 0.05..0.4, {args.runs} runs",
+               "load_avg_1min_start": os.getloadavg()[0], "rows": [], "repeats": []}
+    configs = [("local, 1 worker", 1), ("local, 2 workers", 2)]
     if not args.skip_dask:
-        from distributed import Client, LocalCluster
+        configs.append(("dask LocalCluster, 2 workers", 2))
+    integration = []
+    for rep in range(args.repeats):
+        cpu_integration = _integration_cpu(points)
+        integration.append(cpu_integration)
+        print(f"repeat {rep + 1}/{args.repeats}: integration alone {cpu_integration:.2f} CPU s for "
+              f"{len(points)} runs (load {os.getloadavg()[0]:.2f})", flush=True)
+        for name, w in configs:
+            if name.startswith("dask"):
+                # started afresh each time, after the local sweeps: while its threads run in this process, local
+                # workers are new interpreters rather than forks of it
+                from distributed import Client, LocalCluster
 
-        with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster, \
-                Client(cluster) as client:
-            client.run(lambda: __import__("knifeedge"))  # import in the workers before the clock starts
-            r = _measure("dask LocalCluster, 2 workers", 2, points, cpu_integration, client.get_executor())
-        results["rows"].append(r)
-        print(json.dumps(r), flush=True)
+                with LocalCluster(n_workers=w, threads_per_worker=1, processes=True, dashboard_address=None) \
+                        as cluster, Client(cluster) as client:
+                    client.run(lambda: __import__("knifeedge"))  # import in the workers before the clock starts
+                    r = _measure(name, w, points, cpu_integration, client.get_executor())
+            else:
+                r = _measure(name, w, points, cpu_integration)
+            results["repeats"].append(r)
+            print(json.dumps(r), flush=True)
+    results["cpu_integration_s"] = float(np.median(integration))
+    results["cpu_integration_all_s"] = integration
+    for name, _ in configs:
+        results["rows"].append(_median_row([r for r in results["repeats"] if r["config"] == name]))
     one, two = results["rows"][0], results["rows"][1]
     results["speedup_2_vs_1"] = one["wall_s"] / two["wall_s"]
-    print(f"speed-up of 2 local workers over 1: {results['speedup_2_vs_1']:.2f}x")
+    results["speedup_2_vs_1_all"] = [a["wall_s"] / b["wall_s"] for a, b in
+                                     zip(results["repeats"][0::len(configs)], results["repeats"][1::len(configs)])]
+    results["load_avg_1min_end"] = os.getloadavg()[0]
+    for r in results["rows"]:
+        print(f"{r['config']:30s} wall {r['wall_s']:6.2f} s  overhead: wall {100 * r['overhead_wall']:5.1f} %, "
+              f"CPU {100 * r['overhead_cpu']:5.1f} %  (sweep process {r['cpu_parent_s']:.2f} CPU s, workers "
+              f"{r['cpu_workers_s']:.2f}; median of {r['repeats']})")
+    print(f"speed-up of 2 local workers over 1: {results['speedup_2_vs_1']:.2f}x "
+          f"(each repeat: {', '.join(f'{x:.2f}' for x in results['speedup_2_vs_1_all'])})")
     args.out.parent.mkdir(parents=True, exist_ok=True)
     args.out.write_text(json.dumps(results, indent=1) + "\n")
     print(f"written to {args.out}")

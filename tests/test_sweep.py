@@ -147,6 +147,94 @@ def test_bad_grid_is_rejected_before_any_work(tmp_path):
     assert not out.exists()
 
 
+def test_grid_values_are_checked_once_each_yet_every_bad_one_is_caught():
+    """The grid is checked by value, not run by run: a bad value anywhere, of any kind, still stops the sweep."""
+    for grid, exc, text in [({"phi_dot": [0.1, 0.2, math.nan]}, ValueError, "`phi_dot`"),
+                            ({"t_end": [50.0, 60.0, -1.0]}, ValueError, "`t_end` must exceed"),
+                            ({"D": [1.0, True]}, TypeError, "`D`"),  # equal to 1.0, still refused
+                            ({"D": [1.0, 2.0], "phi_dot": [0.1, -0.0]}, None, None),
+                            ({"rtol": [1e-8, 1e-8, 1.0], "phi_dot": [0.1, 0.2]}, ValueError, "`rtol`"),
+                            ([{"phi_dot": 0.1}, {"phi_dot": 0.2, "L": 0.0}], ValueError, "`L`")]:
+        if exc is None:
+            assert len(ke.sweep("numerical", grid, executor="serial", progress=False, t_span=(0.0, 1.0))) == 4
+            continue
+        with pytest.raises(exc, match=text):
+            ke.sweep("numerical", grid, progress=False)
+
+
+def _definition_run_id(spec) -> str:
+    """The run id of every version so far: sha1 of the run's sorted JSON, without its output sampling (and
+    without max_steps or path when unset)."""
+    import hashlib
+
+    d = spec.to_dict()
+    del d["n_eval"]
+    for k in ("max_steps", "path"):
+        if d[k] is None:
+            del d[k]
+    return hashlib.sha1(json.dumps(d, sort_keys=True).encode()).hexdigest()[:16]
+
+
+@pytest.mark.parametrize("grid", [
+    {"phi_dot": list(np.linspace(0.05, 0.4, 7)), "t_end": [100.0, 250.5]},
+    {"D": [0.5, 1, np.float64(2.0)], "theta": [1e-3, -0.0, 0.0], "rtol": [1e-8, 1e-9]},
+    [{"t_end": 100.0}, {"method": "DP54", "t_end": 50}, {}, {"max_steps": 4000.0, "phi_dot": 1 / 3}],
+])
+def test_run_ids_and_stored_specs_are_those_of_earlier_versions(grid):
+    """Runs are made from the grid without a RunSpec each: their ids (the key of every store, so of resuming)
+    and their JSON are still those that RunSpec gives."""
+    from knifeedge.sweep import _expand, _grid_points
+
+    base = ke.scene("numerical").run
+    points = _grid_points(grid)
+    runs = _expand(base, points)
+    assert len(runs) == len(points)
+    for run, point in zip(runs, points):
+        spec = base.with_(**point)
+        assert run.inputs["run_id"] == _definition_run_id(spec)
+        assert run.spec == spec.to_dict() and run.text == json.dumps(spec.to_dict())
+        assert ke.RunSpec.from_dict(json.loads(run.text)) == spec
+        expected = {"model": spec.model, "fidelity": spec.fidelity, "method": spec.method, "rtol": spec.rtol,
+                    "atol": spec.atol, "t0": spec.t_span[0], "t1": spec.t_span[1], **spec.params, **spec.y0}
+        for k, v in expected.items():
+            assert run.inputs[k] == v and type(run.inputs[k]) is type(v), k
+        assert math.copysign(1.0, run.inputs["theta"]) == math.copysign(1.0, spec.y0["theta"])
+
+
+def test_row_checksums_are_those_of_earlier_versions():
+    """The checksum of a row (kept in every store and export) is unchanged for any value a row may hold."""
+    import hashlib
+
+    from knifeedge.store import checksum
+
+    def definition(row, columns):
+        parts = []
+        for c in sorted(columns):
+            v = row.get(c)
+            if isinstance(v, float) and v != v:
+                v = None
+            elif isinstance(v, (list, tuple)):
+                v = [float(x) for x in v]
+            parts.append(f"{c}={v!r}")
+        return hashlib.blake2b("\x1f".join(parts).encode(), digest_size=8).hexdigest()
+
+    row = {"run_id": "49caebe209174298", "model": "two_mode", "method": "DOP853", "rtol": 1e-10, "t0": 0.0,
+           "phi_dot": 0.2, "status": "ok", "message": "", "nfev": 90260, "first_reversal": 1340.3245325684602,
+           "mean_interval": math.nan, "reversal_times": [1340.3245325684602, 2746.5327819182367], "seconds": 0.48}
+    variants = [row, {**row, "phi_dot": 0.3}, {**row, "reversal_times": [], "message": "x'y\"=nan", "nfev": None},
+                {**row, "reversal_times": (1, 2.5), "status": "failed", "t0": -0.0, "rtol": 1e300, "x": True},
+                {**row, "reversal_times": [math.nan], "rtol": np.float64("nan"), "t0": np.float64(2.0)},
+                {**row, "weird{0}": "a}{", "seconds": math.inf}]
+    for _ in range(2):  # the second time, every value has been seen before
+        for r in variants:
+            for cols in (tuple(r), list(r), r, tuple(r)[:5], ("absent", "run_id"), ()):
+                assert checksum(r, cols) == definition(r, cols), (r, cols)
+    times = [1.0, 2.0]
+    before = checksum({**row, "reversal_times": times}, tuple(row))
+    times.append(3.0)  # a list changed in place is written anew
+    assert checksum({**row, "reversal_times": times}, tuple(row)) != before
+
+
 def test_sweeping_a_model_needs_params_state_and_span():
     m = ke.load("single_mode", "reduced")
     with pytest.raises(ValueError, match="`params`"):
@@ -430,6 +518,27 @@ def test_dask_local_cluster_gives_the_serial_table(serial_table):
                                   dashboard_address=None) as cluster, distributed.Client(cluster) as client:
         t = ke.sweep(_spec(), GRID, executor=client.get_executor(), progress=False)
     _same(t, serial_table)
+
+
+def test_a_task_is_opaque_to_dask_and_has_a_key_of_its_own():
+    """Dask hashes a task's arguments for its key: a task's runs are not walked, and a task sent again (a retry)
+    never shares the key, so the future, of the task it replaces."""
+    tokenize = pytest.importorskip("dask.base").tokenize
+    from knifeedge.workers import _Task
+
+    class Unhashable(dict):
+        def __dask_tokenize__(self):
+            raise AssertionError("a run was walked")
+
+    runs = [Unhashable(phi_dot=0.1)]
+    assert tokenize(_Task(runs)) != tokenize(_Task(runs))
+    task = _Task(runs)
+    assert list(task) == runs and len(task) == 1
+    import pickle
+
+    plain = _Task([{"phi_dot": 0.1}])
+    again = pickle.loads(pickle.dumps(plain))
+    assert list(again) == [{"phi_dot": 0.1}] and tokenize(again) == tokenize(plain)
 
 
 def test_ctrl_c_on_the_command_line_keeps_finished_runs(tmp_path):

@@ -12,6 +12,7 @@ argument); a failed integration is reported in ``success``/``status``/
 from __future__ import annotations
 
 import math
+import threading
 import warnings
 from dataclasses import dataclass, field
 
@@ -144,8 +145,75 @@ def _mode_pairs(model: Model) -> np.ndarray:
 
 #: accepted steps per call of a compiled kernel: between calls Python answers Ctrl-C; the steps are the same
 CHUNK_STEPS = 50_000
-#: rows of the first call's output buffer when every step is stored; it doubles from call to call
+#: rows of the output buffer of a run that stores every step, until its first pause tells how fast it goes
 ROWS_FIRST = 4096
+#: most rows allocated ahead of the steps that fill them (fixed steps: their count is known beforehand)
+ROWS_AHEAD = 1 << 20
+#: room of the first call's event buffers (at least four steps' worth); it doubles when a call fills it
+EVENTS_FIRST = 64
+#: a run's buffer of rows up to this size (bytes) is kept for the next run of the same thread: memory the
+#: system need not hand out (and fault in, page by page) again
+ROWS_KEPT_BYTES = 1 << 22
+_KEPT = threading.local()
+
+
+def _rows_buffer(n: int, cap: int) -> tuple:
+    """Buffers ``(times (c,), rows (c, n))`` with ``c >= cap``: the thread's kept ones if they are large enough
+    (taken: a run interrupted by an exception does not give them back), else new ones."""
+    kept = getattr(_KEPT, "rows", None)
+    if kept is not None and kept[1].shape[1] == n and kept[0].size >= cap:
+        _KEPT.rows = None
+        return kept
+    return np.empty(cap), np.empty((cap, n))
+
+
+def _keep_rows(ts: np.ndarray, ys: np.ndarray) -> bool:
+    """Keep the buffers for the thread's next run if they are small enough and larger than those it keeps;
+    whether they were kept."""
+    if ts.nbytes + ys.nbytes > ROWS_KEPT_BYTES:
+        return False
+    kept = getattr(_KEPT, "rows", None)
+    if kept is not None and kept[0].size > ts.size:
+        return False
+    _KEPT.rows = (ts, ys)
+    return True
+
+
+def _grown(buf: np.ndarray, used: int, size: int) -> np.ndarray:
+    """A buffer of ``size`` rows holding the first ``used`` rows of ``buf``."""
+    new = np.empty((size,) + buf.shape[1:], dtype=buf.dtype)
+    new[:used] = buf[:used]
+    return new
+
+
+def _rows_ahead(stored: int, t0: float, t: float, t1: float, most: int) -> int:
+    """Rows of the next buffer of a run that stored ``stored`` rows from ``t0`` to ``t``: what its pace so far
+    needs to reach ``t1`` with a quarter to spare, at least half the rows stored (a run that speeds up still
+    needs few buffers), at most ``most - stored`` and the larger of ``ROWS_AHEAD`` and ``stored`` (a run that
+    slows down allocates no more than twice what it stores), and at least one."""
+    pace = (stored - 1) / (t - t0) if t > t0 else 0.0
+    guess = pace * (t1 - t) * 1.25 + 64
+    size = max(stored // 2 + 1, int(min(guess, 2.0**62)) if math.isfinite(guess) else 0)
+    return max(1, min(most - stored, max(ROWS_AHEAD, stored), size))
+
+
+def _assembled(parts: list, n: int) -> tuple:
+    """``(times (m,), states (n, m) C-contiguous)`` from buffers ``(times (k,), rows (k, n))`` in order: the
+    rows transposed in blocks that stay in the cache, straight into the result."""
+    if len(parts) == 1:
+        t_out, rows = parts[0]
+        if rows.shape[0] <= 8192:
+            return t_out, rows.T.copy()  # a copy even when rows.T is contiguous (one row): buffers are reused
+    else:
+        t_out = np.concatenate([ts for ts, _ in parts])
+    y_out = np.empty((n, t_out.size))
+    a = 0
+    for _, rows in parts:
+        for b in range(0, rows.shape[0], 8192):
+            block = rows[b:b + 8192]
+            y_out[:, a:a + block.shape[0]] = block.T
+            a += block.shape[0]
+    return t_out, y_out
 
 
 def _reversal_names(model: Model) -> tuple:
@@ -189,59 +257,75 @@ def _run_compiled(name: str):
         events = np.array([_event_code(model, e) for e in names], dtype=np.int64)
         every = r.t_eval is None
         pair = _mode_pairs(model)
+        n = model.n_state
+        # each call of the kernel fills the rows of a buffer after those stored (a C-contiguous tail: the
+        # kernel's argument types stay those it was compiled for); a full buffer is followed by one sized from
+        # the pace of the run so far (nothing copied), and all are transposed into the result at the end
         if every:
             t_eval = np.empty(0)
-            ts, ys = [np.array([r.t0])], [r.y0[None, :]]
+            most = min(r.max_steps, 2**62) + 1  # the start and at most one row per accepted step
+            cap = min(ROWS_FIRST, most)
+            used = 1
         else:
             t_eval = np.ascontiguousarray(r.t_eval)
-            at_start = int(np.searchsorted(t_eval, r.t0, side="right"))
-            ts, ys = [t_eval[:at_start]], [np.repeat(r.y0[None, :], at_start, axis=0)]
-            t_eval = t_eval[at_start:]
-        ev_t, ev_k = [], []
+            cap = t_eval.size + 1  # every output time, and a spare row: a tail is never empty
+            used = int(np.searchsorted(t_eval, r.t0, side="right"))  # times at the start: the initial state
         nfev = nacc = nrej = 0
         t, y, f, carry = r.t0, r.y0, r.y0, 0.0
-        n = model.n_state
+        if spec.fixed_step:
+            n_steps = math.ceil((r.t1 - r.t0) / r.h)
+            h = (r.t1 - r.t0) / n_steps
+            comp, Z = np.zeros(n), np.empty((4, n))  # 4 >= stages of every fixed method
+            if every:  # the rows are known: n_steps + 1 (up to ROWS_AHEAD of them now)
+                cap = min(n_steps + 1, most, ROWS_AHEAD)
+        ts, ys = _rows_buffer(n, cap)
+        full, stored = [], 0  # the full buffers, their rows
+        if every:
+            ts[0], ys[0] = r.t0, r.y0
+        else:
+            ts[:used], ys[:used] = t_eval[:used], r.y0
+        per_step = EVENTS_PER_STEP * events.size  # most crossings one step records
+        room = max(EVENTS_FIRST, 4 * per_step)
+        ev_t, ev_k = np.empty(room), np.empty(room, dtype=np.int64)
+        n_ev = 0
         twin = SCIPY_TWINS.get(spec.name)
         if (twin and not spec.fixed_step and r.error_control == "component" and compile_mode() == "background"
                 and not kernel_compiled(model, name)):
             ph = _while_compiling(r, spec, twin, names, events, pair)
             if ph.done:
-                ts, ys = (np.array(ph.ts), np.array(ph.ys)) if every else _joined(ph.ts, ph.ys, n)
+                pt, py = (np.array(ph.ts), np.array(ph.ys).reshape(-1, n)) if every else _joined(ph.ts, ph.ys, n)
                 found = {e: np.array(v, dtype=float) for e, v in ph.found.items()}
-                return ts, np.ascontiguousarray(ys.T), found, ph.outcome, ph.nfev, ph.nsteps, 0
+                return pt, np.ascontiguousarray(py.T), found, ph.outcome, ph.nfev, ph.nsteps, 0
             solve = kernel(model, name)
-            if every:
-                ts, ys = [np.array(ph.ts)], [np.array(ph.ys)]
+            if every:  # the phase's rows (the start included) come first; the buffer takes the kernel's
+                full.append((np.array(ph.ts), np.array(ph.ys)))
+                stored, used = len(ph.ts), 0
             else:
-                ts, ys = list(_joined(ph.ts, ph.ys, n))
-                ts, ys = [ts], [ys]
-                t_eval = np.ascontiguousarray(r.t_eval[ts[0].size:])
-            for k, e in enumerate(names):
-                ev_t.append(np.array(ph.found[e], dtype=float))
-                ev_k.append(np.full(len(ph.found[e]), k, dtype=np.int64))
-            sv = ph.solver
+                pt, py = _joined(ph.ts, ph.ys, n)
+                ts[:pt.size], ys[:pt.size] = pt, py
+                used = pt.size
+            pe_t = np.array([x for e in names for x in ph.found[e]], dtype=float)
+            pe_k = np.array([k for k, e in enumerate(names) for _ in ph.found[e]], dtype=np.int64)
+            if pe_t.size + per_step > ev_t.size:
+                ev_t, ev_k = np.empty(2 * (pe_t.size + per_step)), np.empty(2 * (pe_t.size + per_step), dtype=np.int64)
+            n_ev = pe_t.size
+            ev_t[:n_ev], ev_k[:n_ev] = pe_t, pe_k
             nfev, nacc = ph.nfev, ph.nsteps
+            sv = ph.solver
             t, y, f, carry = float(sv.t), np.array(sv.y, dtype=float), np.array(sv.f, dtype=float), float(sv.h_abs)
-        rows = ROWS_FIRST
-        if spec.fixed_step:
-            n_steps = math.ceil((r.t1 - r.t0) / r.h)
-            h = (r.t1 - r.t0) / n_steps
-            comp, Z = np.zeros(n), np.empty((4, n))  # 4 >= stages of every fixed method
-            rows = min(n_steps, CHUNK_STEPS)
         while True:
             left = min(r.max_steps - nacc, 2**62)
             chunk = min(CHUNK_STEPS, left)
-            cap = min(rows, chunk) if every else max(t_eval.size, 1)
-            room = max(64, 4 * EVENTS_PER_STEP * events.size)
-            buffers = (np.empty(cap), np.empty((cap, n)), np.empty(room), np.empty(room, dtype=np.int64))
+            tails = (ts[used:], ys[used:], ev_t[n_ev:], ev_k[n_ev:])
+            ahead = t_eval if every else t_eval[used:]
             if spec.fixed_step:
-                args = (r.t0, r.t1, y, f, r.p, h, n_steps, int(carry), r.atol, t_eval, every, events, left, pair,
+                args = (r.t0, r.t1, y, f, r.p, h, n_steps, int(carry), r.atol, ahead, every, events, left, pair,
                         chunk, comp, Z)
             else:
-                args = (t, r.t1, y, f, r.p, r.rtol, r.atol, carry, r.max_step, t_eval, every, events, left, pair,
+                args = (t, r.t1, y, f, r.p, r.rtol, r.atol, carry, r.max_step, ahead, every, events, left, pair,
                         r.error_control == "mode", chunk)
             try:
-                n_out, n_ev, code, nf, na, nr, t, y, f, carry = call_repairing(solve, *args, *buffers)
+                n_out, n_new, code, nf, na, nr, t, y, f, carry = call_repairing(solve, *args, *tails)
             except SystemError as exc:  # Ctrl-C that arrived while numba called back into Python
                 cause = exc.__cause__
                 while cause is not None and not isinstance(cause, KeyboardInterrupt):
@@ -249,19 +333,25 @@ def _run_compiled(name: str):
                 if cause is not None:
                     raise KeyboardInterrupt from None
                 raise
-            ts.append(buffers[0][:n_out])
-            ys.append(buffers[1][:n_out])
-            ev_t.append(buffers[2][:n_ev])
-            ev_k.append(buffers[3][:n_ev])
+            used, n_ev = used + n_out, n_ev + n_new
             nfev, nacc, nrej = nfev + nf, nacc + na, nrej + nr
             if code != 1:
                 break
-            rows = min(2 * rows, CHUNK_STEPS)
-            if not every:
-                t_eval = t_eval[n_out:]
-        t_out = np.concatenate(ts) if len(ts) > 1 else ts[0]
-        y_out = np.ascontiguousarray(np.concatenate(ys).T)
-        events_out = _split_events(names, np.concatenate(ev_t), np.concatenate(ev_k))
+            if every and used == ts.size:  # paused with the rows full: the next buffer
+                full.append((ts, ys))
+                stored += used
+                size = _rows_ahead(stored, r.t0, t, r.t1, most)
+                ts, ys, used = np.empty(size), np.empty((size, n)), 0
+            if n_ev + per_step > ev_t.size:  # paused with the event buffers nearly full: double them
+                ev_t, ev_k = _grown(ev_t, n_ev, 2 * ev_t.size), _grown(ev_k, n_ev, 2 * ev_k.size)
+        t_out, y_out = _assembled(full + [(ts[:used], ys[:used])], n)
+        # the largest buffer small enough is kept for the next run; the times are copied if it is theirs, or
+        # if much of it is spare (a result keeps only what it shows)
+        biggest = max(full + [(ts, ys)], key=lambda b: b[0].size)
+        kept = _keep_rows(*biggest)
+        if t_out.base is ts and ((kept and biggest[0] is ts) or 8 * (ts.size - used) > ts.size):
+            t_out = t_out.copy()
+        events_out = _split_events(names, ev_t[:n_ev], ev_k[:n_ev])
         return t_out, y_out, events_out, from_code(code), nfev, nacc, nrej
 
     return run

@@ -42,6 +42,7 @@ import tempfile
 import time
 import uuid
 from collections.abc import Iterable, Mapping, Sequence
+from operator import add, itemgetter
 from pathlib import Path
 
 #: outcome columns, after the input columns
@@ -62,8 +63,52 @@ _RESERVED = frozenset(INPUT_COLUMNS + RESULT_COLUMNS + ("spec", "finished_at", "
 # -- rows -----------------------------------------------------------------------
 def checksum(row: Mapping, columns: Iterable[str]) -> str:
     """Hash of a row's values in ``columns`` (floats by their exact ``repr``; NaN and a missing value alike)."""
+    names = columns if type(columns) is tuple else tuple(columns)
+    prepared = _PREPARED.get(names)
+    if prepared is None:
+        if len(_PREPARED) > 256:
+            _PREPARED.clear()
+        order = sorted(names)
+        get = itemgetter(*order) if len(order) > 1 else (lambda r: (r[order[0]],)) if order else (lambda r: ())
+        prepared = _PREPARED[names] = (order, tuple(f"{c}=" for c in order), get, [(None, "None")] * len(order))
+    order, heads, get, last = prepared
+    try:
+        values = get(row)
+    except KeyError:  # a missing value: the general rule
+        return _checksum(row, order)
+    texts = []
+    for i, v in enumerate(values):
+        seen = last[i]
+        if seen[0] is v:  # the same object as in the previous row (an input column of a sweep): the same text
+            texts.append(seen[1])
+            continue
+        kind = type(v)
+        if kind is float:
+            text = "None" if v != v else float.__repr__(v)
+        elif kind is str or kind is int:
+            text = repr(v)
+        elif kind is list and all(type(x) is float for x in v):
+            texts.append(repr(v))  # a list may change in place: not remembered
+            continue
+        else:
+            return _checksum(row, order)
+        last[i] = (v, text)
+        texts.append(text)
+    return hashlib.blake2b("\x1f".join(map(add, heads, texts)).encode(), digest_size=8).hexdigest()
+
+
+#: column names -> (sorted names, "name=" of each, getter of the values in that order, last value and text of each)
+_PREPARED: dict = {}
+
+
+def _checksum(row: Mapping, order: Sequence[str]) -> str:
+    """The definition of :func:`checksum` (``order``: the column names, sorted), for any value.
+
+    ``None`` and a missing value are written ``None``, a NaN float too; a list or tuple as a list of floats;
+    anything else by its ``repr``.
+    """
     parts = []
-    for c in sorted(columns):
+    for c in order:
         v = row.get(c)
         if isinstance(v, float) and v != v:
             v = None
@@ -287,9 +332,10 @@ class ResultStore:
                     if h is not None and h[0] != self.owner and self._live(h, now):
                         busy[rid] = f"pid {h[2]} on {h[1]}"
                         continue
-                    self.db.execute("INSERT OR REPLACE INTO claims VALUES (?, ?, ?, ?, ?, ?)",
-                                    (rid, self.owner, self.host, self.pid, self.started, now + self.lease))
                     claimed.append(rid)
+            self.db.executemany("INSERT OR REPLACE INTO claims VALUES (?, ?, ?, ?, ?, ?)",
+                                [(rid, self.owner, self.host, self.pid, self.started, now + self.lease)
+                                 for rid in claimed])
         self._mine.update(claimed)
         return claimed, done, busy, damaged
 
@@ -339,17 +385,19 @@ class ResultStore:
             missing = sorted(set(names) - set(self.columns))
             if missing:
                 raise StoreError(f"{self.path}: the results table has no column(s) {missing}")
-            sql = self._sql.get(names)
-            if sql is None:
+            prepared = self._sql.get(names)
+            if prepared is None:
                 cols = names + ("finished_at", "spec", "checksum")
-                sql = self._sql[names] = (f"INSERT OR REPLACE INTO runs ({','.join(_q(n) for n in cols)}) "
-                                          f"VALUES ({','.join('?' * len(cols))})")
-            rt = names.index("reversal_times")
+                prepared = self._sql[names] = (
+                    f"INSERT OR REPLACE INTO runs ({','.join(_q(n) for n in cols)}) "
+                    f"VALUES ({','.join('?' * len(cols))})", itemgetter(*names), names.index("reversal_times"))
+            sql, get, rt = prepared
             values = []
             for row in group:
-                v = [row[n] for n in names]
-                v[rt] = json.dumps([float(t) for t in v[rt]])
-                values.append(v + [finished_at, specs.get(row["run_id"]), checksum(row, names)])
+                v = list(get(row))
+                v[rt] = _times_json(v[rt])
+                v += (finished_at, specs.get(row["run_id"]), checksum(row, names))
+                values.append(v)
             self.db.executemany(sql, values)
 
     def import_rows(self, rows: Sequence[Mapping]) -> int:
@@ -375,6 +423,13 @@ class ResultStore:
                 self.release()
         finally:
             self.db.close()
+
+
+def _times_json(times) -> str:
+    """``json.dumps`` of a list of times as floats (written directly when they are finite floats)."""
+    if all(type(t) is float and t - t == 0.0 for t in times):
+        return "[" + ", ".join(map(float.__repr__, times)) + "]"
+    return json.dumps([float(t) for t in times])
 
 
 def _q(name: str) -> str:

@@ -24,6 +24,7 @@ import itertools
 import json
 import math
 import os
+import re
 import statistics
 import sys
 import time
@@ -35,6 +36,7 @@ from typing import Any
 
 import numpy as np
 
+from . import _validate
 from .runspec import RUN_SETTINGS, RunSpec
 from .simulate import METHODS, check_inputs
 from .store import (INPUT_COLUMNS, INT_COLUMNS, RESULT_COLUMNS, STATUSES, STORE_SUFFIXES, TEXT_COLUMNS, TEXT_SUFFIXES,
@@ -47,8 +49,11 @@ __all__ = ["sweep", "SweepTable", "run_one", "run_batch", "RESULT_COLUMNS", "STA
 MISSING = "missing"
 #: attempts of a run whose worker keeps dying before it is left without a result
 MAX_ATTEMPTS = 3
-#: wall time a task of several runs aims at (a few per worker in flight; see ``chunksize``)
+#: wall time a task of several runs aims at (a few per worker in flight; see ``chunksize``); an executor's tasks
+#: (a Dask cluster's) aim at ``ExecutorPool.task_seconds``, longer: each costs its scheduler milliseconds
 TASK_SECONDS = 0.25
+#: most runs in one task (a task whose worker dies is retried run by run); ``ExecutorPool.max_chunk`` for an executor
+MAX_CHUNK = 256
 
 
 # -- one run ------------------------------------------------------------------
@@ -78,8 +83,8 @@ def run_one(spec: Mapping) -> dict:
     return out
 
 
-def run_batch(specs: Sequence[Mapping]) -> list:
-    """:func:`run_one` on each of ``specs`` (one task of a sweep)."""
+def run_batch(specs: Iterable[Mapping]) -> list:
+    """:func:`run_one` on each of ``specs`` (one task of a sweep: a list, or the opaque task an executor gets)."""
     return [run_one(s) for s in specs]
 
 
@@ -291,46 +296,179 @@ def _base_run(target, params, y0, t_span, method, rtol, atol) -> RunSpec:
 
 
 def _expand(run: RunSpec, points: list) -> list:
-    """Validated RunSpecs, one per grid point, before any work."""
+    """The grid's runs, each checked as :func:`simulate` checks it, before any work.
+
+    Returns one :class:`_Run` per grid point (its ``spec`` as a plain dict,
+    its ``inputs`` columns with the ``run_id``, its JSON text).
+
+    Each check of :func:`~knifeedge.simulate.check_inputs` concerns one
+    argument (a parameter's sign, a state's finiteness, the order of the
+    span, a tolerance's range), so the grid is checked by value rather than
+    run by run: every distinct combination of run settings (``method``,
+    ``rtol``, ``atol``, ``max_steps``) as a whole run, every distinct
+    parameter vector by ``Model.check_params``, every initial value and
+    ``t_end`` by the rule of ``RunSpec`` and ``Model.state`` (a finite real
+    number; ``t_end`` after the start).
+    """
     accepted = set(run.params) | set(run.y0) | set(RUN_SETTINGS)
-    specs = []
+    varying = set(run.params) | set(run.y0) | {"t_end"}  # per run; the other names are run settings
+    kinds: dict = {}  # names of a point -> (its run settings, its values that vary run by run)
+    grid_varying: list = []  # names of the grid that vary run by run, in order of first use
     for pt in points:
+        names = tuple(pt)
+        if names in kinds:
+            continue
         bad = [k for k in pt if k not in accepted or k in ("fidelity", "pose", "n_eval", "path")]
         if bad:
             raise ValueError(
                 f"`grid` name(s) {bad} are not parameters {tuple(run.params)}, initial states {tuple(run.y0)} "
                 "or one of method, rtol, atol, t_end, max_steps"
             )
-        spec = run.with_(**pt)
-        if not isinstance(spec.method, str) or spec.method not in METHODS:
-            raise ValueError(f"unknown `method` {spec.method!r} in `grid`; accepted: {', '.join(sorted(METHODS))}")
-        if not spec.t_span[1] > spec.t_span[0]:
-            raise ValueError(f"`t_end` must exceed the start time {spec.t_span[0]:g}, got {spec.t_span[1]!r}")
-        extra = {} if spec.max_steps is None else {"max_steps": spec.max_steps}
-        # every argument of the run checked as simulate checks it, before any work
-        check_inputs(spec.load(), dict(spec.y0), spec.t_span, dict(spec.params), spec.method, spec.rtol, spec.atol,
-                     **extra)
-        specs.append(spec)
-    return specs
+        kinds[names] = (tuple(k for k in pt if k not in varying), tuple(k for k in pt if k in varying))
+        grid_varying.extend(k for k in pt if k in varying and k not in grid_varying)
+    model = run.load()
+    bases: dict = {}  # the run settings of a point (typed) -> its _Base
+    params_ok: set = set()
+    out = []
+    for pt in points:
+        settings, names = kinds[tuple(pt)]
+        key = tuple((k, type(pt[k]), repr(pt[k])) for k in settings) if settings else ()
+        base = bases.get(key)
+        if base is None:
+            base = bases[key] = _Base(run.with_(**{k: pt[k] for k in settings}), model, grid_varying)
+        values = dict(base.values)
+        for k in names:
+            values[k] = _validate.finite(pt[k], f"`{k}`")  # the rule of RunSpec and Model.state
+        if base.params_varying:
+            p = tuple(values.get(k, v) for k, v in base.run.params.items())
+            if p not in params_ok:
+                model.check_params(dict(zip(base.run.params, p)))
+                params_ok.add(p)
+        if "t_end" in names and not values["t_end"] > base.run.t_span[0]:
+            raise ValueError(f"`t_end` must exceed the start time {base.run.t_span[0]:g}, got {pt['t_end']!r}")
+        out.append(base.make(values))
+    return out
+
+
+class _Run:
+    """One run of a sweep: ``spec`` (``RunSpec.to_dict`` form), ``inputs`` (its input columns, ``run_id``
+    first) and ``text`` (``spec`` as JSON, for the store)."""
+
+    __slots__ = ("spec", "inputs", "text")
+
+    def __init__(self, spec: dict, inputs: dict, text: str):
+        self.spec, self.inputs, self.text = spec, inputs, text
+
+    @property
+    def run_id(self) -> str:
+        return self.inputs["run_id"]
+
+
+_HOLE_MARK = "@knifeedge-sweep-value-"
+_HOLE = _HOLE_MARK + "{}@"
+
+
+class _Base:
+    """A run checked whole, and the runs that differ from it only in the values of parameters, initial states
+    and ``t_end``: their spec, input columns, run id and JSON text, written as :func:`_inputs` and
+    ``json.dumps`` write them, by filling the values into the base run's JSON (a float is written by its
+    ``repr`` either way)."""
+
+    def __init__(self, run: RunSpec, model, names: Sequence[str]):
+        if not isinstance(run.method, str) or run.method not in METHODS:
+            raise ValueError(f"unknown `method` {run.method!r} in `grid`; accepted: {', '.join(sorted(METHODS))}")
+        if not run.t_span[1] > run.t_span[0]:
+            raise ValueError(f"`t_end` must exceed the start time {run.t_span[0]:g}, got {run.t_span[1]!r}")
+        extra = {} if run.max_steps is None else {"max_steps": run.max_steps}
+        check_inputs(model, dict(run.y0), run.t_span, dict(run.params), run.method, run.rtol, run.atol, **extra)
+        self.run = run
+        self.names = [n for n in names if n in run.params or n in run.y0 or n == "t_end"]
+        self.params_varying = any(n in run.params for n in self.names)
+        self.values = {n: (run.t_span[1] if n == "t_end" else run.params[n] if n in run.params else run.y0[n])
+                       for n in self.names}
+        self.spec = run.to_dict()
+        self.inputs = _inputs(run)
+        self.y0_varying = any(n in run.y0 for n in self.names)
+        self.key_format = self.text_format = None
+        if not self.names:
+            self.text = json.dumps(self.spec)
+            return
+        marked = _with_values(self.spec, {n: _HOLE.format(i) for i, n in enumerate(self.names)})
+        self.key_format = _template(json.dumps(_key(marked), sort_keys=True), len(self.names))
+        self.text_format = _template(json.dumps(marked), len(self.names))
+        if self.key_format is None or self.text_format is None or _HOLE_MARK in json.dumps(self.spec):
+            self.key_format = self.text_format = None
+        else:
+            made = self.make(dict(self.values))
+            if made.inputs != self.inputs or made.text != json.dumps(self.spec):  # as _inputs and json write them
+                self.key_format = self.text_format = None
+
+    def make(self, values: dict) -> _Run:
+        """The run whose parameters, initial values and ``t_end`` are ``values`` (one for each of ``names``)."""
+        spec = dict(self.spec)
+        if self.params_varying:
+            spec["params"] = {**self.spec["params"], **{n: values[n] for n in self.names if n in self.spec["params"]}}
+        if self.y0_varying:
+            spec["y0"] = {**self.spec["y0"], **{n: values[n] for n in self.names if n in self.spec["y0"]}}
+        inputs = dict(self.inputs)
+        if "t_end" in values:
+            spec["t_span"] = [self.spec["t_span"][0], values["t_end"]]
+            inputs["t1"] = values["t_end"]
+        inputs.update((n, v) for n, v in values.items() if n != "t_end")
+        if not self.names:
+            return _Run(spec, inputs, self.text)
+        if self.key_format is None:  # the slow way, for a base whose JSON the template cannot hold
+            inputs["run_id"] = _inputs(RunSpec.from_dict(spec))["run_id"]
+            return _Run(spec, inputs, json.dumps(spec))
+        v = [values[n] for n in self.names]
+        inputs["run_id"] = hashlib.sha1(self.key_format.format(*v).encode()).hexdigest()[:16]
+        return _Run(spec, inputs, self.text_format.format(*v))
+
+
+def _with_values(spec: dict, values: Mapping) -> dict:
+    """``spec`` (a plain-dict run) with some parameters, initial values and ``t_end`` replaced."""
+    d = dict(spec)
+    params = {k: v for k, v in values.items() if k in spec["params"]}
+    y0 = {k: v for k, v in values.items() if k in spec["y0"]}
+    if params:
+        d["params"] = {**spec["params"], **params}
+    if y0:
+        d["y0"] = {**spec["y0"], **y0}
+    if "t_end" in values:
+        d["t_span"] = [spec["t_span"][0], values["t_end"]]
+    return d
+
+
+def _template(text: str, n: int) -> str | None:
+    """``text`` (JSON with the strings of ``_HOLE`` in the places of ``n`` floats) as a ``str.format`` of the
+    floats (``{i!r}`` writes a float as ``json.dumps`` does); None unless each hole is there once."""
+    pieces = re.split(r'"@knifeedge-sweep-value-(\d+)@"', text)
+    if sorted(int(i) for i in pieces[1::2]) != list(range(n)):
+        return None
+    out = [pieces[0].replace("{", "{{").replace("}", "}}")]
+    for i, piece in zip(pieces[1::2], pieces[2::2]):
+        out.append(f"{{{int(i)}!r}}")
+        out.append(piece.replace("{", "{{").replace("}", "}}"))
+    return "".join(out)
 
 
 def _columns(run: RunSpec) -> tuple:
     return INPUT_COLUMNS + (*run.params, *run.y0) + RESULT_COLUMNS
 
 
-def _key(spec: RunSpec) -> dict:
+def _key(spec: RunSpec | Mapping) -> dict:
     """The inputs that identify a run (its output sampling does not).
 
     For a model from a user's folder, the hash of its module's text is part
     of the key: after ``knifeedge derive`` rewrites the model, its runs are new runs.
     """
-    d = spec.to_dict()
-    d.pop("n_eval")
+    d = dict(spec.to_dict() if isinstance(spec, RunSpec) else spec)
+    d.pop("n_eval", None)
     for k in ("max_steps", "path"):  # absent when unset: run ids of earlier versions stay valid
         if d.get(k) is None:
             d.pop(k, None)
-    if spec.path is not None:
-        d["module_sha256"] = _module_hash(spec.path, spec.model, spec.fidelity)
+    if d.get("path") is not None:
+        d["module_sha256"] = _module_hash(d["path"], d["model"], d["fidelity"])
     return d
 
 
@@ -347,6 +485,7 @@ def _module_hash(folder: str, model: str, fidelity: str) -> str:
 
 
 def _inputs(spec: RunSpec) -> dict:
+    """The input columns of a run, ``run_id`` first: the definition that :class:`_Base` follows faster."""
     key = json.dumps(_key(spec), sort_keys=True)
     run_id = hashlib.sha1(key.encode()).hexdigest()[:16]
     return {"run_id": run_id, "model": spec.model, "fidelity": spec.fidelity, "method": spec.method,
@@ -475,7 +614,7 @@ def sweep(
     resume : if False, runs stored before this call are recomputed (and replaced).
     progress : True (a tqdm bar on stderr), False, or ``callback(done, total, row)``.
     chunksize : runs per task sent to a worker; default: sized from the
-        runs' duration so that a task takes about 0.25 s (up to 64 runs).
+        runs' duration so that a task takes about 0.25 s (up to 256 runs; on an Executor 1 s, up to 1024 runs).
 
     Returns
     -------
@@ -509,30 +648,29 @@ def sweep(
     if not isinstance(resume, bool):
         raise TypeError(f"`resume` must be True or False, got {resume!r}")
     run = _base_run(scene_or_model, params, y0, t_span, method, rtol, atol)
-    specs = _expand(run, _grid_points(grid))
+    runs = _expand(run, _grid_points(grid))
     columns = _columns(run)
-    inputs = [_inputs(s) for s in specs]
     store, export = _open_store(out, (*run.params, *run.y0))
     try:
-        return _Sweep(specs, inputs, columns, store, export, executor, max_workers, resume, progress,
-                      chunksize).run()
+        return _Sweep(runs, columns, store, export, executor, max_workers, resume, progress, chunksize).run()
     finally:
         if store is not None:
             store.close()
 
 
 class _Sweep:
-    def __init__(self, specs, inputs, columns, store, export, executor, max_workers, resume, progress, chunksize):
-        self.inputs, self.columns, self.store, self.export = inputs, columns, store, export
+    def __init__(self, runs, columns, store, export, executor, max_workers, resume, progress, chunksize):
+        self.inputs = [r.inputs for r in runs]
+        self.columns, self.store, self.export = columns, store, export
         self.executor, self.max_workers, self.chunksize = executor, max_workers, chunksize
         self.since = None if resume else time.time()
         self.progress = progress
         self.by_id: dict = {}  # run_id -> index of its first grid point
-        self.spec_of: dict = {}  # run_id -> the run as a plain dict
-        for i, (s, inp) in enumerate(zip(specs, inputs)):
-            if inp["run_id"] not in self.by_id:
-                self.by_id[inp["run_id"]] = i
-                self.spec_of[inp["run_id"]] = s.to_dict()
+        self.spec_of: dict = {}  # run_id -> its _Run
+        for i, r in enumerate(runs):
+            if r.run_id not in self.by_id:
+                self.by_id[r.run_id] = i
+                self.spec_of[r.run_id] = r
         self.results: dict = {}  # run_id -> row
         self.missing: dict = {}  # run_id -> reason
         self.damaged: list = []
@@ -569,14 +707,14 @@ class _Sweep:
         n = n or getattr(ex, "_max_workers", None) or os.cpu_count() or 1
         return ExecutorPool(ex, run_batch, 2 * n), n
 
-    def _chunk(self, remaining: int, n_workers: int) -> int:
+    def _chunk(self, remaining: int, n_workers: int, pool) -> int:
         if self.chunksize is not None:
             return self.chunksize
         if len(self.times) < 2:
             return 1
         per_run = max(statistics.median(self.times), 1e-5)
-        k = int(TASK_SECONDS / per_run)
-        k = min(k, 64, max(1, remaining // (4 * n_workers)))  # keep the tail balanced
+        k = int(getattr(pool, "task_seconds", TASK_SECONDS) / per_run)
+        k = min(k, getattr(pool, "max_chunk", MAX_CHUNK), max(1, remaining // (4 * n_workers)))  # a balanced tail
         return max(1, k)
 
     # -- the loop -----------------------------------------------------------------
@@ -610,13 +748,13 @@ class _Sweep:
             while todo or inflight or others:
                 # hand out work while the pool has room
                 while todo and pool.free():
-                    k = 1 if todo[0] in attempts else self._chunk(len(todo), n_workers)
+                    k = 1 if todo[0] in attempts else self._chunk(len(todo), n_workers, pool)
                     ids = [todo.popleft() for _ in range(min(k, len(todo)))]
                     ids = self._claim(ids, others)
                     if ids:
                         t = next(task_ids)
                         inflight[t] = ids
-                        pool.submit(t, [self.spec_of[r] for r in ids])
+                        pool.submit(t, [self.spec_of[r].spec for r in ids])
                 # collect finished tasks
                 for t, out in pool.wait(0.5 if (inflight or not others) else 1.0):
                     ids = inflight.pop(t)
@@ -626,7 +764,7 @@ class _Sweep:
                     rows = [self._row(rid, o) for rid, o in zip(ids, out)]
                     self.times.extend(o["seconds"] for o in out)
                     if self.store is not None:
-                        self.store.write(rows, {r: json.dumps(self.spec_of[r]) for r in ids})
+                        self.store.write(rows, {r: self.spec_of[r].text for r in ids})
                     self._record(rows, computed=True)
                 broken = getattr(pool, "broken", None)
                 if broken and not inflight and todo:  # an executor that takes no more work

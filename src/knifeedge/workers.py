@@ -37,6 +37,7 @@ import subprocess
 import sys
 import threading
 import time
+import uuid
 from collections.abc import Callable
 
 _HEADER = struct.Struct("<Q")
@@ -331,6 +332,11 @@ class LocalPool:
 class ExecutorPool:
     """Tasks on a ``concurrent.futures.Executor`` (a process pool, ``distributed.Client.get_executor()``, ...)."""
 
+    #: wall time a task aims at, and most runs in one: a task costs a Dask scheduler, client and worker a few
+    #: milliseconds of CPU between them, so tasks are longer than on local workers
+    task_seconds = 1.0
+    max_chunk = 1024
+
     def __init__(self, executor: cf.Executor, fn: Callable, slots: int):
         self.executor, self.fn, self.slots_ = executor, fn, max(1, int(slots))
         self.futures: dict = {}
@@ -345,7 +351,7 @@ class ExecutorPool:
 
     def submit(self, task_id, runs: list) -> None:
         try:
-            self.futures[self.executor.submit(self.fn, runs)] = task_id
+            self.futures[self.executor.submit(self.fn, _Task(runs))] = task_id
         except Exception as exc:  # a broken or shut-down executor takes no more work  # noqa: BLE001
             self.broken = f"{type(exc).__name__}: {exc}"
             self.futures[_failed(exc)] = task_id
@@ -373,6 +379,33 @@ class ExecutorPool:
         for fut in self.futures:
             fut.cancel()
         self.futures.clear()
+
+
+class _Task:
+    """The runs of one task (iterable, sized), opaque to an executor: a Dask client hashes the arguments of each
+    task (``tokenize``) and walks them for futures, which cost more than the sweep's own bookkeeping when they
+    were a list of dicts.  A task has a token of its own, so that two tasks never share a key."""
+
+    __slots__ = ("runs", "token")
+
+    def __init__(self, runs: list):
+        self.runs = runs
+        self.token = uuid.uuid4().hex
+
+    def __iter__(self):
+        return iter(self.runs)
+
+    def __len__(self) -> int:
+        return len(self.runs)
+
+    def __dask_tokenize__(self):
+        return self.token
+
+    def __getstate__(self):
+        return self.runs, self.token
+
+    def __setstate__(self, state):
+        self.runs, self.token = state
 
 
 def _failed(exc: BaseException) -> cf.Future:

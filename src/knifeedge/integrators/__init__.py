@@ -106,8 +106,13 @@ def use_compiled(model, method: str) -> None:
 
 
 def _announced(solve, label: str):
-    """``solve`` that says on stderr, at its first call, that it compiles now and once."""
+    """``solve`` that says on stderr, at its first call, that it compiles now and once (later calls of the
+    same wrapper, e.g. the continued calls of the run that compiled it, go straight to ``solve``)."""
+    done = []
+
     def first_call(*args):
+        if done:
+            return solve(*args)
         print(f"knifeedge: compiling {label}; once, it is then cached in {cache_dir()} ...",
               file=sys.stderr, end="", flush=True)
         t = time.perf_counter()
@@ -115,6 +120,7 @@ def _announced(solve, label: str):
             out = call_repairing(solve, *args)
         finally:
             print(f" {time.perf_counter() - t:.1f} s", file=sys.stderr, flush=True)
+        done.append(True)
         for k, v in _KERNELS.items():
             if v is first_call:
                 _KERNELS[k] = solve
