@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import argparse
 import ast
+import contextlib
 import math
 import operator
 import os
@@ -583,14 +584,24 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+#: commands of one run, whose first run does not wait for a kernel to compile (see
+#: ``knifeedge.integrators.set_compile_mode``; ``KNIFEEDGE_COMPILE=wait`` makes them wait): the commands of many
+#: runs compile each kernel once, first, in parallel processes
+BACKGROUND_COMPILE = ("demo", "simulate", "scene")
+
+
 def main(argv=None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
     if not getattr(args, "func", None):
         parser.print_help()
         return 2
+    from .integrators.compiler import compile_mode_set
+
+    background = args.command in BACKGROUND_COMPILE and not os.environ.get("KNIFEEDGE_COMPILE")
     try:
-        return int(args.func(args) or 0)
+        with compile_mode_set("background") if background else contextlib.nullcontext():
+            return int(args.func(args) or 0)
     except (ValueError, TypeError, KeyError, OSError) as exc:
         msg = exc.args[0] if isinstance(exc, KeyError) and exc.args else exc
         print(f"knifeedge {args.command}: error: {msg}", file=sys.stderr)

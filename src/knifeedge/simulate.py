@@ -19,7 +19,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from . import _validate
-from .integrators import ALIASES, COMPILED_METHODS, EVENTS_PER_STEP, Status, call_repairing, from_code, kernel
+from .integrators import (ALIASES, COMPILED_METHODS, EVENTS_PER_STEP, Status, call_repairing, compile_mode,
+                          from_code, kernel, kernel_compiled)
 from .models import Model, ValidityWarning
 
 #: the smallest relative tolerance accepted: below it the error estimate is round-off
@@ -287,6 +288,31 @@ def _run_compiled(name: str):
         room = max(EVENTS_FIRST, 4 * per_step)
         ev_t, ev_k = np.empty(room), np.empty(room, dtype=np.int64)
         n_ev = 0
+        twin = SCIPY_TWINS.get(spec.name)
+        if (twin and not spec.fixed_step and r.error_control == "component" and compile_mode() == "background"
+                and not kernel_compiled(model, name)):
+            ph = _while_compiling(r, spec, twin, names, events, pair)
+            if ph.done:
+                pt, py = (np.array(ph.ts), np.array(ph.ys).reshape(-1, n)) if every else _joined(ph.ts, ph.ys, n)
+                found = {e: np.array(v, dtype=float) for e, v in ph.found.items()}
+                return pt, np.ascontiguousarray(py.T), found, ph.outcome, ph.nfev, ph.nsteps, 0
+            solve = kernel(model, name)
+            if every:  # the phase's rows (the start included) come first; the buffer takes the kernel's
+                full.append((np.array(ph.ts), np.array(ph.ys)))
+                stored, used = len(ph.ts), 0
+            else:
+                pt, py = _joined(ph.ts, ph.ys, n)
+                ts[:pt.size], ys[:pt.size] = pt, py
+                used = pt.size
+            pe_t = np.array([x for e in names for x in ph.found[e]], dtype=float)
+            pe_k = np.array([k for k, e in enumerate(names) for _ in ph.found[e]], dtype=np.int64)
+            if pe_t.size + per_step > ev_t.size:
+                ev_t, ev_k = np.empty(2 * (pe_t.size + per_step)), np.empty(2 * (pe_t.size + per_step), dtype=np.int64)
+            n_ev = pe_t.size
+            ev_t[:n_ev], ev_k[:n_ev] = pe_t, pe_k
+            nfev, nacc = ph.nfev, ph.nsteps
+            sv = ph.solver
+            t, y, f, carry = float(sv.t), np.array(sv.y, dtype=float), np.array(sv.f, dtype=float), float(sv.h_abs)
         while True:
             left = min(r.max_steps - nacc, 2**62)
             chunk = min(CHUNK_STEPS, left)
@@ -331,6 +357,72 @@ def _run_compiled(name: str):
     return run
 
 
+#: the SciPy solver with the tableau, initial step, error norm and step-size control of a compiled method
+SCIPY_TWINS = {"DOP853": "DOP853", "DP54": "RK45"}
+
+
+def _joined(ts: list, ys: list, n: int) -> tuple:
+    """Output rows of a SciPy phase at ``t_eval`` as arrays of shapes (k,) and (k, n)."""
+    if not ts:
+        return np.empty(0), np.empty((0, n))
+    return np.concatenate(ts), np.concatenate(ys)
+
+
+def _python_functions(model: Model, p: np.ndarray) -> tuple:
+    """``fun(t, y)`` and ``event_values(y)`` of ``model`` at ``p`` as plain Python (nothing to compile)."""
+    mod = model.module
+    rhs = (mod.rhs_pose_q_into if model.pose else mod.rhs_q_into).py_func
+    q = mod.constants.py_func(p).tolist()
+    n = model.n_state
+
+    def fun(t, y):
+        out = [0.0] * n
+        rhs(t, y.tolist(), q, out)
+        return np.array(out)
+
+    ev = getattr(mod, "event_values", None)
+    ev = ev.py_func if ev is not None else None
+    return fun, (lambda y: ev(y, p)) if ev is not None else None
+
+
+def _while_compiling(r: _Run, spec, twin: str, names: tuple, events: np.ndarray, pair: np.ndarray) -> "_Phase":
+    """Step ``r`` with SciPy's ``twin`` of ``spec`` while another process compiles its kernel.
+
+    The phase ends when the run does, or after the step during which the
+    compiled kernel became ready (or its compiling process failed: the
+    kernel then compiles here, at its first call).
+    """
+    import sys
+    import time
+
+    from .integrators import compiler, kernel_module, use_compiled
+    from .integrators.specialize import cache_dir
+
+    model = r.model
+    module = kernel_module(model, spec.name)
+    n = model.n_state
+    probe = (r.t0, r.t1, r.y0, r.y0, r.p, r.rtol, r.atol, 0.0, r.max_step, np.empty(0), True, events, 1, pair,
+             False, 1, np.empty(1), np.empty((1, n)), np.empty(1), np.empty(1, dtype=np.int64))
+    pending = compiler.start(model, spec.name, module, compiler.argument_types(module, probe))
+    label = f"{spec.name} for {model.name} ({model.fidelity}{', pose' if model.pose else ''})"
+    print(f"knifeedge: compiling {label} in a background process (once: it is then cached in {cache_dir()}); "
+          f"meanwhile SciPy's {twin} (same steps) with a Python right-hand side runs", file=sys.stderr, flush=True)
+    fun, event_values = _python_functions(model, r.p)
+    t_start = time.perf_counter()
+    ph = _scipy_phase(r, twin, fun, event_values, stop=lambda: pending.ready() or pending.failed())
+    if ph.done:
+        print(f"knifeedge: run done in {time.perf_counter() - t_start:.1f} s before the compiled {label} was "
+              f"ready; the compiling goes on in the background", file=sys.stderr, flush=True)
+    elif pending.ready():
+        use_compiled(model, spec.name)
+        print(f"knifeedge: compiled {label} ready after {time.perf_counter() - t_start:.1f} s; "
+              f"the run continues in it at t = {ph.solver.t:.6g}", file=sys.stderr, flush=True)
+    else:
+        print(f"knifeedge: the background compiling of {label} failed; compiling it here. Its output:\n"
+              f"{pending.log()}", file=sys.stderr, flush=True)
+    return ph
+
+
 def _suspects(g0: float, g1: float, s0: float, s1: float) -> tuple:
     """``(flag, extrema)`` of one event over a step, as the kernels' ``integrators.common.screen``.
 
@@ -362,6 +454,124 @@ def _suspects(g0: float, g1: float, s0: float, s1: float) -> tuple:
     return (2 if crit else flag), crit
 
 
+class _Phase:
+    """What :func:`_scipy_phase` did: its output rows, crossings and counters, and the solver it stopped."""
+
+    def __init__(self, ts, ys, found, outcome, nfev, nsteps, solver, done):
+        self.ts, self.ys, self.found, self.outcome = ts, ys, found, outcome
+        self.nfev, self.nsteps, self.solver, self.done = nfev, nsteps, solver, done
+
+
+def _scipy_phase(r: _Run, scipy_method: str, fun, event_values, stop=None) -> _Phase:
+    """Step SciPy's solver ``scipy_method`` from the start of ``r`` to its end, or until ``stop()`` is true.
+
+    ``fun(t, y)``: the right-hand side; ``event_values(y)``: the model's
+    event functions.  ``stop`` is asked about every 0.05 s of stepping; when
+    it says yes the phase ends after a whole step, with ``done`` false.
+    """
+    import time
+
+    from scipy import integrate  # imported on use: it adds ~0.3 s to the start-up
+    from scipy.optimize import brentq
+
+    from .integrators.common import SAMPLES
+
+    solver_class = getattr(integrate, scipy_method)
+    model = r.model
+    names = _event_names(model, r.events)
+    codes = [_event_code(model, e) for e in names]
+
+    def values(y, f, h):
+        """Each event's value and rate times ``h`` at a state ``y`` with derivative ``f``."""
+        g, s = np.empty(len(codes)), np.empty(len(codes))
+        fun_v = fun_w = None
+        if any(c < 0 for c in codes):
+            fun_v = event_values(y)
+            fun_w = event_values(y + 1e-7 * h * f)
+        for k, c in enumerate(codes):
+            if c >= 0:
+                g[k], s[k] = y[c], h * f[c]
+            else:
+                g[k], s[k] = fun_v[-1 - c], (fun_w[-1 - c] - fun_v[-1 - c]) / 1e-7
+        return g, s
+
+    def at(sol, c, t):
+        y = sol(t)
+        return y[c] if c >= 0 else event_values(y)[-1 - c]
+
+    solver = solver_class(fun, r.t0, r.y0, r.t1, rtol=r.rtol, atol=r.atol, max_step=r.max_step)
+    every = r.t_eval is None
+    ts, ys = ([r.t0], [r.y0.copy()]) if every else ([], [])
+    i_eval = 0
+    found = {e: [] for e in names}
+    outcome = Status.SUCCESS
+    nsteps = 0
+    eps4 = 4 * np.finfo(float).eps
+
+    def rate(solver):  # the derivative at the solver's current point (RK methods keep it)
+        f = getattr(solver, "f", None)
+        return np.array(f if f is not None else fun(solver.t, solver.y), dtype=float)
+
+    f_old = rate(solver) if codes else None
+    y_prev = r.y0.copy()
+    next_ask = time.perf_counter() + 0.05
+    done = True
+    while solver.status == "running":
+        if nsteps >= r.max_steps:
+            outcome = Status.MAX_STEPS
+            break
+        if stop is not None and time.perf_counter() > next_ask:
+            if stop():
+                done = False
+                break
+            next_ask = time.perf_counter() + 0.05
+        solver.step()
+        if solver.status == "failed":
+            outcome = Status.STEP_SIZE_UNDERFLOW
+            break
+        t_old, t, y = solver.t_old, solver.t, solver.y
+        if not np.isfinite(y).all():
+            outcome = Status.NON_FINITE
+            break
+        nsteps += 1
+        sol = None
+        if codes:
+            h = t - t_old
+            f_new = rate(solver)
+            ga, sa = values(y_prev, f_old, h)
+            gb, sb = values(y, f_new, h)
+            for k, (e, c) in enumerate(zip(names, codes)):
+                flag, crit = _suspects(ga[k], gb[k], sa[k], sb[k])
+                if not flag:
+                    continue
+                sol = sol or solver.dense_output()
+                xs = [0.0] + (sorted({m / SAMPLES for m in range(1, SAMPLES)} | set(crit)) if flag == 2 else [])
+                gs = [ga[k]] + [at(sol, c, t_old + x * h) for x in xs[1:]]
+                xs.append(1.0)
+                gs.append(gb[k])
+                for m in range(1, len(xs)):
+                    fa, fb = gs[m - 1], gs[m]
+                    if fa == 0.0 or not (fb == 0.0 or (fa > 0.0) != (fb > 0.0)):
+                        continue
+                    a, b = t_old + xs[m - 1] * h, (t if m == len(xs) - 1 else t_old + xs[m] * h)
+                    found[e].append(b if fb == 0.0 else
+                                    brentq(lambda s, c=c: at(sol, c, s), a, b, xtol=eps4, rtol=eps4))
+            f_old = f_new
+        y_prev = y.copy()
+        if every:
+            ts.append(t)
+            ys.append(y.copy())
+        else:
+            i_new = int(np.searchsorted(r.t_eval, t, side="right"))
+            if i_new > i_eval:
+                sol = sol or solver.dense_output()
+                step_t = r.t_eval[i_eval:i_new]
+                ts.append(step_t)
+                ys.append(sol(step_t).T)
+                i_eval = i_new
+    return _Phase(ts, ys, found, outcome, solver.nfev, nsteps, solver, done)
+
+
 def _run_scipy(scipy_method: str):
     """SciPy's ``OdeSolver`` stepped here, as ``solve_ivp`` does, so that ``max_steps`` is honoured.
 
@@ -374,110 +584,19 @@ def _run_scipy(scipy_method: str):
     non-finite state ends the run.
     """
     def run(r: _Run):
-        from scipy import integrate  # imported on use: it adds ~0.3 s to the start-up
-        from scipy.optimize import brentq
-
-        from .integrators.common import SAMPLES
-
-        solver_class = getattr(integrate, scipy_method)
-        model = r.model
-        names = _event_names(model, r.events)
-        codes = [_event_code(model, e) for e in names]
-        rhs, p = model.rhs, r.p
-        event_values = getattr(model.module, "event_values", None)
-
-        def fun(t, y):
-            return rhs(t, y, p)
-
-        def values(y, f, h):
-            """Each event's value and rate times ``h`` at a state ``y`` with derivative ``f``."""
-            g, s = np.empty(len(codes)), np.empty(len(codes))
-            fun_v = fun_w = None
-            if any(c < 0 for c in codes):
-                fun_v = event_values(y, p)
-                fun_w = event_values(y + 1e-7 * h * f, p)
-            for k, c in enumerate(codes):
-                if c >= 0:
-                    g[k], s[k] = y[c], h * f[c]
-                else:
-                    g[k], s[k] = fun_v[-1 - c], (fun_w[-1 - c] - fun_v[-1 - c]) / 1e-7
-            return g, s
-
-        def at(sol, c, t):
-            y = sol(t)
-            return y[c] if c >= 0 else event_values(y, p)[-1 - c]
-
-        solver = solver_class(fun, r.t0, r.y0, r.t1, rtol=r.rtol, atol=r.atol, max_step=r.max_step)
-        every = r.t_eval is None
-        ts, ys = ([r.t0], [r.y0.copy()]) if every else ([], [])
-        i_eval = 0
-        found = {e: [] for e in names}
-        outcome = Status.SUCCESS
-        nsteps = 0
-        eps4 = 4 * np.finfo(float).eps
-        def rate(solver):  # the derivative at the solver's current point (RK methods keep it)
-            f = getattr(solver, "f", None)
-            return np.array(f if f is not None else fun(solver.t, solver.y), dtype=float)
-
-        f_old = rate(solver) if codes else None
-        y_prev = r.y0.copy()
-        while solver.status == "running":
-            if nsteps >= r.max_steps:
-                outcome = Status.MAX_STEPS
-                break
-            solver.step()
-            if solver.status == "failed":
-                outcome = Status.STEP_SIZE_UNDERFLOW
-                break
-            t_old, t, y = solver.t_old, solver.t, solver.y
-            if not np.isfinite(y).all():
-                outcome = Status.NON_FINITE
-                break
-            nsteps += 1
-            sol = None
-            if codes:
-                h = t - t_old
-                f_new = rate(solver)
-                ga, sa = values(y_prev, f_old, h)
-                gb, sb = values(y, f_new, h)
-                for k, (e, c) in enumerate(zip(names, codes)):
-                    flag, crit = _suspects(ga[k], gb[k], sa[k], sb[k])
-                    if not flag:
-                        continue
-                    sol = sol or solver.dense_output()
-                    xs = [0.0] + (sorted({m / SAMPLES for m in range(1, SAMPLES)} | set(crit)) if flag == 2 else [])
-                    gs = [ga[k]] + [at(sol, c, t_old + x * h) for x in xs[1:]]
-                    xs.append(1.0)
-                    gs.append(gb[k])
-                    for m in range(1, len(xs)):
-                        fa, fb = gs[m - 1], gs[m]
-                        if fa == 0.0 or not (fb == 0.0 or (fa > 0.0) != (fb > 0.0)):
-                            continue
-                        a, b = t_old + xs[m - 1] * h, (t if m == len(xs) - 1 else t_old + xs[m] * h)
-                        found[e].append(b if fb == 0.0 else
-                                        brentq(lambda s, c=c: at(sol, c, s), a, b, xtol=eps4, rtol=eps4))
-                f_old = f_new
-            y_prev = y.copy()
-            if every:
-                ts.append(t)
-                ys.append(y.copy())
-            else:
-                i_new = int(np.searchsorted(r.t_eval, t, side="right"))
-                if i_new > i_eval:
-                    sol = sol or solver.dense_output()
-                    step_t = r.t_eval[i_eval:i_new]
-                    ts.append(step_t)
-                    ys.append(sol(step_t).T)
-                    i_eval = i_new
-        n = model.n_state
-        if every:
+        model, p = r.model, r.p
+        rhs = model.rhs
+        module_events = getattr(model.module, "event_values", None)
+        ph = _scipy_phase(r, scipy_method, lambda t, y: rhs(t, y, p), lambda y: module_events(y, p))
+        ts, ys, n = ph.ts, ph.ys, model.n_state
+        if r.t_eval is None:
             t_out, y_out = np.array(ts), np.array(ys).T
         elif ts:
             t_out, y_out = np.concatenate(ts), np.concatenate(ys).T
         else:
             t_out, y_out = np.empty(0), np.empty((n, 0))
-        events = {e: np.array(v, dtype=float) for e, v in found.items()}
-        return t_out, y_out.reshape(n, -1), events, outcome, solver.nfev, nsteps, 0
+        events = {e: np.array(v, dtype=float) for e, v in ph.found.items()}
+        return t_out, y_out.reshape(n, -1), events, ph.outcome, ph.nfev, ph.nsteps, 0
 
     return run
 

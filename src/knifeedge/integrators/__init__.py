@@ -15,6 +15,7 @@ from .specialize import cache_dir, call_repairing, is_compiled, load_kernel
 from .status import Status, from_code
 from .tableau import TABLEAUS, ExplicitTableau, register
 from .common import SAMPLES as _SAMPLES
+from .compiler import compile_mode, set_compile_mode
 
 #: most zero crossings of one event a kernel finds in one step (room the event buffers keep per event)
 EVENTS_PER_STEP = _SAMPLES + 2
@@ -75,7 +76,7 @@ def kernel(model, method: str):
     rhs_name = "rhs_pose_q_into" if model.pose else "rhs_q_into"
     key = (model.module.__name__, rhs_name, spec.template, spec.variant)
     if key not in _KERNELS:
-        module = load_kernel(spec.template, spec.variant, model.module, rhs_name, model.n_state)
+        module = kernel_module(model, method)
         solve = module.solve
         if not is_compiled(module):
             pose = ", pose" if model.pose else ""
@@ -84,9 +85,34 @@ def kernel(model, method: str):
     return _KERNELS[key]
 
 
+def kernel_module(model, method: str):
+    """The kernel module of ``method`` for ``model`` (written and imported, compiled or not: its ``solve``
+    compiles at its first call unless the cache holds it, see :func:`kernel_compiled`)."""
+    spec = COMPILED_METHODS[ALIASES.get(method, method)]
+    rhs_name = "rhs_pose_q_into" if model.pose else "rhs_q_into"
+    return load_kernel(spec.template, spec.variant, model.module, rhs_name, model.n_state)
+
+
+def kernel_compiled(model, method: str) -> bool:
+    """Whether the cache holds the compiled kernel of ``method`` for ``model`` (a later call loads it)."""
+    return is_compiled(kernel_module(model, method))
+
+
+def use_compiled(model, method: str) -> None:
+    """Forget a first-call notice of the kernel of ``method`` for ``model`` (it was compiled elsewhere)."""
+    spec = COMPILED_METHODS[ALIASES.get(method, method)]
+    rhs_name = "rhs_pose_q_into" if model.pose else "rhs_q_into"
+    _KERNELS[(model.module.__name__, rhs_name, spec.template, spec.variant)] = kernel_module(model, method).solve
+
+
 def _announced(solve, label: str):
-    """``solve`` that says on stderr, at its first call, that it compiles now and once."""
+    """``solve`` that says on stderr, at its first call, that it compiles now and once (later calls of the
+    same wrapper, e.g. the continued calls of the run that compiled it, go straight to ``solve``)."""
+    done = []
+
     def first_call(*args):
+        if done:
+            return solve(*args)
         print(f"knifeedge: compiling {label}; once, it is then cached in {cache_dir()} ...",
               file=sys.stderr, end="", flush=True)
         t = time.perf_counter()
@@ -94,6 +120,7 @@ def _announced(solve, label: str):
             out = call_repairing(solve, *args)
         finally:
             print(f" {time.perf_counter() - t:.1f} s", file=sys.stderr, flush=True)
+        done.append(True)
         for k, v in _KERNELS.items():
             if v is first_call:
                 _KERNELS[k] = solve
@@ -104,4 +131,5 @@ def _announced(solve, label: str):
 
 __all__ = ["COMPILED_METHODS", "ALIASES", "EVENTS_PER_STEP", "CompiledMethod", "ExplicitTableau", "Status", "TABLEAUS",
            "cache_dir",
-           "call_repairing", "from_code", "kernel", "register"]
+           "call_repairing", "compile_mode", "from_code", "kernel", "kernel_compiled", "kernel_module", "register",
+           "set_compile_mode", "use_compiled"]

@@ -40,7 +40,11 @@ import numba
 
 _HERE = Path(__file__).resolve().parent
 TEMPLATES = ("erk", "fixed")
+#: the file of each template's per-model module (``erk``: the model's parts of the shared integrator ``erk.py``)
+MODEL_FILES = {"erk": "erk_parts", "fixed": "fixed"}
 RHS_MARK = "# knifeedge:rhs"
+DRIVER_MARK = "# knifeedge:driver"
+NV_MARK = "# knifeedge:nv"
 VARIANT_MARK = "# knifeedge:variant"
 N_MARK = "# knifeedge:n"
 EVENTS_MARK = "# knifeedge:event_values"
@@ -106,22 +110,31 @@ def _private_folder(path: Path) -> None:
 
 
 def kernel_source(template: str, variant, rhs_module: str, rhs_name: str, n_state: int, unroll: bool = True,
-                  has_events: bool = False) -> str:
+                  has_events: bool = False, driver: str = "knifeedge.integrators.templates.erk",
+                  n_events: int = 0) -> str:
     """Text of the kernel module for a template specialized to ``rhs_module.rhs_name`` on ``n_state`` states.
 
     ``unroll=False`` keeps the template's generic loops over the tableau
     (same algorithm; the tests compare the two).  ``has_events``: the module
-    defines event functions (``EVENT_NAMES``, ``event_values(s, p)``), which
-    the kernel then locates besides state components.
+    defines ``n_events`` event functions (``EVENT_NAMES``, ``event_values(s,
+    p)``), which the kernel then locates besides state components.  For
+    ``erk`` the module holds the model's parts of the integrator, the module
+    ``driver`` (see :func:`driver_source`).
     """
     if template not in TEMPLATES:
         raise ValueError(f"unknown kernel template {template!r}; known: {TEMPLATES}")
     if isinstance(n_state, bool) or not isinstance(n_state, int) or n_state < 1:
         raise ValueError(f"`n_state` must be a positive integer, got {n_state!r}")
-    lines = (_HERE / "templates" / f"{template}.py").read_text().splitlines()
+    lines = (_HERE / "templates" / f"{MODEL_FILES[template]}.py").read_text().splitlines()
     out, seen = [], set()
     for line in lines:
-        if line.rstrip().endswith(RHS_MARK):
+        if template == "erk" and line.rstrip().endswith(DRIVER_MARK):
+            line = f"import {driver} as _driver  {DRIVER_MARK}"
+            seen.add(DRIVER_MARK)
+        elif template == "erk" and line.startswith("NV =") and NV_MARK in line:
+            line = f"NV = {int(n_events) if has_events else 0}  {NV_MARK}"
+            seen.add(NV_MARK)
+        elif line.rstrip().endswith(RHS_MARK):
             line = f"from {rhs_module} import constants as _constants, {rhs_name} as _rhs  {RHS_MARK}"
             seen.add(RHS_MARK)
         elif line.rstrip().endswith(EVENTS_MARK):
@@ -136,9 +149,23 @@ def kernel_source(template: str, variant, rhs_module: str, rhs_name: str, n_stat
             line = f"N = {n_state}  {N_MARK}"
             seen.add(N_MARK)
         out.append(line)
-    if seen != {RHS_MARK, VARIANT_MARK, N_MARK, EVENTS_MARK}:
+    if seen != {RHS_MARK, VARIANT_MARK, N_MARK, EVENTS_MARK} | ({DRIVER_MARK, NV_MARK} if template == "erk" else set()):
         raise RuntimeError(f"kernel template {template}.py lacks one of its {RHS_MARK!r}, {VARIANT_MARK!r}, "
                            f"{N_MARK!r}, {EVENTS_MARK!r} lines")
+    if template == "fixed":
+        out = _event_blocks(out, has_events)
+    elif unroll:
+        tableau = _erk_tableau(variant)
+        out = _replace_block(out, "attempt", _attempt_block(tableau["A"], tableau["C"], tableau["n_stages"]))
+        out = _replace_block(out, "error", _error_block(tableau))
+        out = _replace_block(out, "dense", _dense_block(tableau))
+    header = (f"# Specialized kernel: template {template}.py, variant {variant}, rhs {rhs_module}.{rhs_name}, "
+              f"{n_state} states{'' if unroll else ', generic loops'}.\n")
+    return header + "\n".join(out) + "\n"
+
+
+def _event_blocks(out: list, has_events: bool) -> list:
+    """The template's event blocks and functions filled in (``has_events``: with the event functions')."""
     if has_events:
         out = _replace_block(out, "function_defs", sum((_event_function(f) for f in FUNCTION_DEFS), []))
         out = _replace_block(out, "functions", lambda block: block)
@@ -147,15 +174,25 @@ def kernel_source(template: str, variant, rhs_module: str, rhs_name: str, n_stat
         out = _replace_block(out, "functions", [])
     for name in EVENT_BLOCKS:
         out = _replace_block(out, name, _event_block(name))
-    if template == "erk" and unroll:
-        tableau = _erk_tableau(variant)
-        out = _replace_block(out, "attempt", _attempt_block(tableau["A"], tableau["C"], tableau["n_stages"]))
-        out = _replace_block(out, "error", _error_block(tableau))
-        out = _replace_block(out, "dense", _dense_block(tableau))
-        out = _replace_block(out, "power", _power_block(tableau["error_order"]))
-    header = (f"# Specialized kernel: template {template}.py, variant {variant}, rhs {rhs_module}.{rhs_name}, "
-              f"{n_state} states{'' if unroll else ', generic loops'}.\n")
-    return header + "\n".join(out) + "\n"
+    return out
+
+
+def driver_source(variant: str) -> str:
+    """Text of the adaptive integrator ``templates/erk.py`` for the registered method ``variant``: the part
+    that serves every model (its step-size control, output and event location; it finds the event
+    functions' code through the model's parts)."""
+    lines = (_HERE / "templates" / "erk.py").read_text().splitlines()
+    out, seen = [], False
+    for line in lines:
+        if VARIANT_MARK in line:
+            line = f"TABLEAU = {str(variant)!r}  {VARIANT_MARK}"
+            seen = True
+        out.append(line)
+    if not seen:
+        raise RuntimeError(f"kernel template erk.py lacks its {VARIANT_MARK!r} line")
+    out = _event_blocks(out, True)
+    out = _replace_block(out, "power", _power_block(_erk_tableau(variant)["error_order"]))
+    return f"# The adaptive integrator: template erk.py, variant {variant}, every model.\n" + "\n".join(out) + "\n"
 
 
 def _erk_tableau(name: str) -> dict:
@@ -245,7 +282,6 @@ def _dense_block(tableau: dict) -> list:
             body.append("    acc = 0.0")
             body += _acc(row, "{c} * K[{j}, i]")
             body.append(f"    F[{3 + r}, i] = h * acc")
-        body.append(f"nfev += {A.shape[0] - s - 1}")
     else:
         body.append("for i in range(N):")
         for r, col in enumerate(tableau["P"].T):
@@ -323,18 +359,34 @@ def _event_function(name: str) -> list:
     return ['@njit(cache=True, error_model="numpy")'] + body + ["", ""]
 
 
-def _key(source: str, rhs_file: str) -> str:
+def _key(source: str, rhs_file: str | None) -> str:
     h = hashlib.sha256(source.encode())
     for dep in sorted(_HERE.glob("**/*.py")):  # every source of the integrators (templates, helpers, tableaus)
         h.update(dep.relative_to(_HERE).as_posix().encode())
         h.update(dep.read_bytes())
-    h.update(Path(rhs_file).read_bytes())
+    if rhs_file is not None:
+        h.update(Path(rhs_file).read_bytes())
     h.update(f"numba {numba.__version__} python {sys.version}".encode())
     return h.hexdigest()[:20]
 
 
+def cached(fn) -> bool:
+    """Whether numba's cache holds compiled code of ``fn`` (a Python function or an ``njit`` dispatcher; an
+    ``njit`` and a ``cfunc`` of one function are cached alike, under its name and first line)."""
+    from numba.core.caching import FunctionCache
+
+    fn = getattr(fn, "py_func", fn)
+    try:
+        return Path(FunctionCache(fn)._cache_file._index_path).is_file()
+    except Exception:  # noqa: BLE001 - another numba layout: not known to be cached
+        return False
+
+
 def is_compiled(module: ModuleType) -> bool:
-    """Whether numba's cache (beside the kernel module, or under ``NUMBA_CACHE_DIR``) holds its ``solve``."""
+    """Whether numba's cache (beside the kernel module, or under ``NUMBA_CACHE_DIR``) holds its ``solve``
+    (for the adaptive methods: the model's parts and the shared integrator)."""
+    if hasattr(module, "is_compiled"):
+        return module.is_compiled()
     try:
         return Path(module.solve._cache._cache_file._index_path).is_file()
     except AttributeError:  # another numba layout: look beside the module
@@ -393,12 +445,27 @@ def load_kernel(template: str, variant, rhs_module: ModuleType, rhs_name: str, n
                 unroll: bool = True) -> ModuleType:
     """Import (writing it first if needed) the kernel module for a model's right-hand side.
 
-    Raises if the kernel cannot be written or imported: there is no slow fallback.
+    For ``erk`` the adaptive integrator shared by every model (one module per
+    method) is imported first; the kernel module holds the model's parts and
+    a ``solve`` that runs the integrator with them.  Raises if a module
+    cannot be written or imported: there is no slow fallback.
     """
+    names = tuple(getattr(rhs_module, "EVENT_NAMES", ()))
+    driver = "knifeedge.integrators.templates.erk"
+    if template == "erk":
+        dsource = driver_source(variant)
+        dstem = f"erk{variant}_driver_{_key(dsource, None)}"
+        driver = f"knifeedge_driver_{dstem}"
+        _import(dstem, dsource, driver)
     source = kernel_source(template, variant, rhs_module.__name__, rhs_name, n_state, unroll,
-                           has_events=bool(getattr(rhs_module, "EVENT_NAMES", ())))
+                           has_events=bool(names), driver=driver, n_events=len(names))
     key = _key(source, rhs_module.__file__)
     stem = f"{template}{variant}{'' if unroll else 'g'}_{rhs_module.__name__.rsplit('.', 1)[-1]}_{rhs_name}_{key}"
+    return _import(stem, source, f"knifeedge_kernels.{stem}")
+
+
+def _import(stem: str, source: str, name: str) -> ModuleType:
+    """The module ``name`` of ``source``, written to ``<cache>/kernels/<stem>.py`` (once) and imported."""
     if stem in _LOADED:
         return _LOADED[stem]
     folder = cache_dir() / "kernels"
@@ -407,7 +474,6 @@ def load_kernel(template: str, variant, rhs_module: ModuleType, rhs_name: str, n
         tmp = folder / f".{stem}.{os.getpid()}.tmp"
         tmp.write_text(source)
         os.replace(tmp, path)
-    name = f"knifeedge_kernels.{stem}"
     spec = importlib.util.spec_from_file_location(name, path)
     module = importlib.util.module_from_spec(spec)
     sys.modules[name] = module

@@ -129,3 +129,40 @@ def get(name: str) -> ExplicitTableau:
         return TABLEAUS[name]
     except KeyError:
         raise ValueError(f"unknown explicit method {name!r}; registered: {', '.join(sorted(TABLEAUS))}") from None
+
+
+def erk_arrays(name: str) -> tuple:
+    """The tables the adaptive integrator and a model's parts use for the registered method ``name``.
+
+    Returns ``(A, C, E5, E3, DD, P, HAIRER, N_STAGES, N_EXT, DENSE_ROWS, ALT, ERROR_ORDER)``:
+    ``A`` and ``C`` over every stage (the method's, then the weights as the row of the stage at ``t + h``,
+    first same as last, then the extra stages of DOP853's interpolant); ``E5`` the error estimator
+    (and ``E3`` DOP853's second one, else zeros); ``DD`` DOP853's interpolant rows or ``P`` the power
+    series of the others (the unused one is a 1 x 1 zero); ``ALT`` the factors of the Horner scheme of
+    the interpolant ``v = (v + F[r, i]) * (1 - x if ALT[r] else x)`` (Hairer's form alternates them, the
+    power series has ``x`` throughout); ``DENSE_ROWS`` the rows of ``F``.
+    """
+    t = get(name)
+    hairer = t.hairer is not None
+    s = t.stages
+    n_ext = s + 1 + (t.hairer["c_ext"].size if hairer else 0)
+    A = np.zeros((n_ext, n_ext))
+    A[:s, :s] = t.A
+    A[s, :s] = t.b
+    C = np.ones(n_ext)
+    C[:s] = t.c
+    E5 = t.e.copy()
+    if hairer:
+        A[s + 1:] = t.hairer["A_ext"]
+        C[s + 1:] = t.hairer["c_ext"]
+        E3 = t.hairer["e3"].copy()
+        DD = t.hairer["D"].copy()
+        P = np.zeros((1, 1))
+        dense_rows = 3 + DD.shape[0]
+    else:
+        E3 = np.zeros(n_ext)
+        DD = np.zeros((1, 1))
+        P = t.P.copy()
+        dense_rows = P.shape[1]
+    ALT = np.array([hairer and r % 2 == 1 for r in range(dense_rows)])
+    return A, C, E5, E3, DD, P, hairer, s, n_ext, dense_rows, ALT, t.error_order

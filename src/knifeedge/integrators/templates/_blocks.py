@@ -6,7 +6,7 @@ template at the lines ``# knifeedge:begin NAME`` / ``# knifeedge:end NAME``
 (a block of the kernel is cheaper to compile than a call to a helper of
 its own); ``_event_at``, ``_function_ends`` and ``_locate_functions`` are
 copied whole, compiled, into the kernels of models that have event
-functions.  The blocks use the template's names: ``y``, ``y_new`` (the
+functions, which call them through the template's ``_values(s, p, ev)``.  The blocks use the template's names: ``y``, ``y_new`` (the
 step's ends), ``fa``, ``fb`` (their derivatives), ``t``, ``h``, ``p``,
 ``F``, ``DENSE_ROWS``, ``ALT`` (the step's interpolant), ``events``.
 
@@ -88,28 +88,28 @@ def suspect(ne, ga, gb, sa, sb, NEAR):
                 suspect = True
 
 
-def _event_at(F, y, x, j, p, work):
+def _event_at(F, y, x, j, p, ev, work):
     """Event function ``j`` of the state interpolated at ``x`` in [0, 1] (into ``work``)."""
     xm = 1.0 - x
-    for i in range(N):
+    for i in range(y.size):
         v = 0.0
         for r in range(DENSE_ROWS - 1, -1, -1):
             v = (v + F[r, i]) * (xm if ALT[r] else x)
         work[i] = y[i] + v
-    return _event_values(work, p)[j]
+    return _values(work, p, ev)[j]
 
 
-def _function_ends(events, y, y_new, fa, fb, h, p, work, ga, gb, sa, sb):
+def _function_ends(events, y, y_new, fa, fb, h, p, ev, work, ga, gb, sa, sb):
     """Values and rates (times ``h``) of the event functions at the ends of a step."""
     dt = 1e-7 * h
-    va = _event_values(y, p)
-    vb = _event_values(y_new, p)
-    for i in range(N):
+    va = _values(y, p, ev)
+    vb = _values(y_new, p, ev)
+    for i in range(y.size):
         work[i] = y[i] + dt * fa[i]
-    wa = _event_values(work, p)
-    for i in range(N):
+    wa = _values(work, p, ev)
+    for i in range(y.size):
         work[i] = y_new[i] + dt * fb[i]
-    wb = _event_values(work, p)
+    wb = _values(work, p, ev)
     for k in range(events.size):
         j = -1 - events[k]
         if j >= 0:
@@ -119,7 +119,7 @@ def _function_ends(events, y, y_new, fa, fb, h, p, work, ga, gb, sa, sb):
             sb[k] = (wb[j] - vb[j]) / 1e-7
 
 
-def _locate_functions(events, F, y, t, h, p, work, ga, gb, crit, n_crit, flag, xs, gs, ev_t, ev_k, n_ev):
+def _locate_functions(events, F, y, t, h, p, ev, work, ga, gb, crit, n_crit, flag, xs, gs, ev_t, ev_k, n_ev):
     """As :func:`knifeedge.integrators.common.locate`, for the event functions (``events[k] < 0``)."""
     for k in range(events.size):
         if flag[k] == 0 or events[k] >= 0:
@@ -144,7 +144,7 @@ def _locate_functions(events, F, y, t, h, p, work, ga, gb, crit, n_crit, flag, x
                     j -= 1
                 xs[j + 1] = x
             for m in range(1, ns):
-                gs[m] = _event_at(F, y, xs[m], c, p, work)
+                gs[m] = _event_at(F, y, xs[m], c, p, ev, work)
         xs[ns] = 1.0
         gs[ns] = gb[k]
         ns += 1
@@ -160,7 +160,7 @@ def _locate_functions(events, F, y, t, h, p, work, ga, gb, crit, n_crit, flag, x
                     x = (a * fb_ - b * fa_) / (fb_ - fa_)
                     if not (a < x < b):
                         x = 0.5 * (a + b)
-                    fx = _event_at(F, y, x, c, p, work)
+                    fx = _event_at(F, y, x, c, p, ev, work)
                     if fx == 0.0:
                         break
                     if (fx > 0.0) == (fb_ > 0.0):

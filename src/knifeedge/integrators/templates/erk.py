@@ -1,4 +1,4 @@
-"""Adaptive embedded explicit Runge--Kutta kernel for any registered tableau (DOP853, DP54, Tsit5, ...).
+"""Adaptive embedded explicit Runge--Kutta integrator for any registered tableau (DOP853, DP54, Tsit5, ...).
 
 The algorithm is the one of SciPy's ``solve_ivp`` (``DOP853`` and ``RK45``):
 same tableaus (for those two), initial step (Hairer, Norsett & Wanner I, Sect. II.4), error
@@ -10,13 +10,20 @@ Error control: ``scale_i = atol_i + rtol * max(|y_i|, |y_new_i|)``.  With
 and its partner ``pair[i]`` (a tilt and its rate), i.e. each oscillation
 mode is measured on its own amplitude rather than through its zero crossings.
 
-The whole kernel is one compiled function, :func:`solve`: numba's cost of
-compiling a function (typing, lowering, LLVM) has a large fixed part per
-function and grows when numba inlines one function into another, so the
-helpers of a step are blocks of ``solve``, not functions.  The blocks between
-``# knifeedge:begin NAME`` and ``# knifeedge:end NAME`` hold generic loops over
-the tableau; :mod:`..specialize` replaces them by straight-line code with the
-tableau's coefficients as literals.
+This module is the part of the integrator that does not depend on the
+model: the step-size control, the output and the location of zero crossings.
+It is compiled once per method and machine and serves every model.  The
+model's parts -- its right-hand side, the stages of a step with the error
+norm, the interpolant's extra stages, its event functions (``erk_parts.py``,
+specialized to the model with the state size as a constant and the tableau's
+coefficients as literals) -- are passed as machine addresses in ``fns`` and
+called through them (:mod:`knifeedge.integrators.fnptr`): one indirect call
+per step, per initial step and per interpolant.
+
+The whole integrator is one compiled function, :func:`solve`: numba's cost
+of compiling a function has a large fixed part per function and grows when
+numba inlines one function into another, so the helpers of a step are blocks
+of ``solve``, not functions.
 """
 import numpy as np
 from numba import njit
@@ -24,65 +31,45 @@ from numba import njit
 from knifeedge.integrators import common as _c
 from knifeedge.integrators import tableau as _tableau
 from knifeedge.integrators.common import MAX_ITER, NEAR, SAMPLES  # noqa: F401 (used by the blocks)
-from knifeedge.integrators.templates._stub import constants as _constants, rhs_q_into as _rhs  # knifeedge:rhs
-from knifeedge.integrators.templates._stub import event_values as _event_values  # knifeedge:event_values
+from knifeedge.integrators.fnptr import call_f8, call_void
 
 TABLEAU = "DOP853"  # knifeedge:variant  (a registered ExplicitTableau, see knifeedge.integrators.tableau)
-N = 3  # knifeedge:n  (the state size, a compile-time constant so that the loops over it unroll)
 
-_T = _tableau.get(TABLEAU)
-#: Hairer's DOP853: a second error estimator and an interpolant with extra stages
-HAIRER = _T.hairer is not None
-N_STAGES = _T.stages
-N_EXT = N_STAGES + 1 + (_T.hairer["c_ext"].size if HAIRER else 0)
-# A and C over every stage: the method's, then the weights (the stage at t + h, first same as last), then
-# the extra stages of the dense output
-A = np.zeros((N_EXT, N_EXT))
-A[:N_STAGES, :N_STAGES] = _T.A
-A[N_STAGES, :N_STAGES] = _T.b
-C = np.ones(N_EXT)
-C[:N_STAGES] = _T.c
-E5 = _T.e.copy()
-ERROR_ORDER = _T.error_order
-if HAIRER:
-    A[N_STAGES + 1:] = _T.hairer["A_ext"]
-    C[N_STAGES + 1:] = _T.hairer["c_ext"]
-    E3 = _T.hairer["e3"].copy()
-    DD = _T.hairer["D"].copy()
-    P = np.zeros((1, 1))
-    DENSE_ROWS = 3 + DD.shape[0]
-else:
-    E3 = np.zeros(N_EXT)
-    DD = np.zeros((1, 1))
-    P = _T.P.copy()
-    DENSE_ROWS = P.shape[1]
-#: the interpolant, both forms as one Horner scheme over the rows of ``F`` (from the last):
-#: ``v = (v + F[r, i]) * (1 - x if ALT[r] else x)``, then ``y_old[i] + v``.  Hairer's DOP853 form
-#: ``x(F0 + (1-x)(F1 + x(F2 + ...)))`` alternates the factors; the power series
-#: ``sum_r F[r] x^(r+1)`` (Dormand--Prince 5(4), Tsitouras 5(4)) has ``x`` throughout.
-ALT = np.array([HAIRER and r % 2 == 1 for r in range(DENSE_ROWS)])
+#: the tables of the method (see ``tableau.erk_arrays``): only their sizes and the controller are used here
+(A, C, E5, E3, DD, P, HAIRER, N_STAGES, N_EXT, DENSE_ROWS, ALT, ERROR_ORDER) = _tableau.erk_arrays(TABLEAU)
 ERROR_EXPONENT = -1.0 / (ERROR_ORDER + 1)
 SAFETY = 0.9
 MIN_FACTOR = 0.2
 MAX_FACTOR = 10.0
+#: right-hand-side evaluations of the interpolant beyond those of the step (DOP853: 3)
+DENSE_NFEV = N_EXT - N_STAGES - 1
 
 _EPS = np.finfo(np.float64).eps
+
+
+@njit(cache=True, error_model="numpy")
+def _values(s, p, ev):
+    """The model's event functions at ``s`` (``ev``: the address of its ``events`` part and their number)."""
+    out = np.empty(ev[1])
+    call_void(ev[0], (s, p, np.int64(p.size), out))
+    return out
 
 
 # knifeedge:begin function_defs
 # knifeedge:end function_defs
 
 
-# "contract": fused multiply-adds in the stage sums (see specialize._attempt_body)
-@njit(cache=True, error_model="numpy", fastmath={"contract"})
-def solve(t0, t1, y0, f0, p, rtol, atol, h_init, max_step, t_eval, every, events, max_steps, pair, mode_scaled,
-          chunk, ts, ys, ev_t, ev_k):
+@njit(cache=True, error_model="numpy")
+def solve(fns, t0, t1, y0, f0, q, p, rtol, atol, h_init, max_step, t_eval, every, events, max_steps, pair,
+          mode_scaled, chunk, ts, ys, ev_t, ev_k):
     """Integrate from ``t0`` toward ``t1 > t0``: at most ``chunk`` accepted steps, as many as the buffers hold.
 
     Parameters
     ----------
+    fns : (5,) int64: the addresses of the model's parts ``rhs``, ``attempt``, ``dense``, ``events`` (see
+        ``erk_parts.py``) and the number of its event functions.
     y0 : (n,) initial state; f0 : (n,) its derivative when continuing (``h_init > 0``), else ignored.
-    p : parameters of the right-hand side.
+    q : ``constants(p)`` of the right-hand side; p : the parameters (of the event functions).
     rtol : float; atol : (n,) absolute tolerances.
     h_init : next step when continuing a run, or 0 to start one (the first step is then chosen).
     max_step : largest step.
@@ -108,9 +95,11 @@ def solve(t0, t1, y0, f0, p, rtol, atol, h_init, max_step, t_eval, every, events
     -------
     n_out, n_ev, status, nfev, accepted, rejected, t, y, f, h_next
     """
-    if y0.size != N:
-        raise ValueError("the initial state does not have the size this kernel was specialized to")
-    q = _constants(p)
+    N = y0.size
+    rhs, attempt, dense = fns[0], fns[1], fns[2]
+    ev = fns[3:5]
+    ms = np.int64(1 if mode_scaled else 0)
+    nq = np.int64(q.size)
     K = np.empty((N_EXT, N))
     y = np.empty(N)
     for i in range(N):
@@ -135,7 +124,7 @@ def solve(t0, t1, y0, f0, p, rtol, atol, h_init, max_step, t_eval, every, events
             K[0, i] = f0[i]
     else:
         # the first step: Hairer, Norsett & Wanner I, Sect. II.4 (as SciPy's select_initial_step)
-        _rhs(t0, y, q, K[0])
+        call_void(rhs, (t0, y, q, nq, K[0]))
         d0 = 0.0
         d1 = 0.0
         for i in range(N):
@@ -150,7 +139,7 @@ def solve(t0, t1, y0, f0, p, rtol, atol, h_init, max_step, t_eval, every, events
         if h0 > 0.0:  # else the derivative overflows the scale: start at the smallest step
             for i in range(N):
                 y_new[i] = y[i] + h0 * K[0, i]
-            _rhs(t0 + h0, y_new, q, K[1])
+            call_void(rhs, (t0 + h0, y_new, q, nq, K[1]))
             d2 = 0.0
             for i in range(N):
                 sc = atol[i] + abs(y[i]) * rtol
@@ -188,47 +177,9 @@ def solve(t0, t1, y0, f0, p, rtol, atol, h_init, max_step, t_eval, every, events
                 t_new = t1
             h = t_new - t
             h_abs = abs(h)
-            # knifeedge:begin attempt
-            # stages 1 .. N_STAGES from K[0] = f(t, y) (first same as last), then y_new and K[N_STAGES]
-            for s in range(1, N_STAGES + 1):
-                for i in range(N):
-                    acc = 0.0
-                    for j in range(s):
-                        acc += A[s, j] * K[j, i]
-                    if s < N_STAGES:
-                        work[i] = y[i] + h * acc
-                    else:
-                        y_new[i] = y[i] + h * acc
-                if s < N_STAGES:
-                    _rhs(t + C[s] * h, work, q, K[s])
-                else:
-                    _rhs(t_new, y_new, q, K[s])
-            # knifeedge:end attempt
+            # the stages, y_new, K[N_STAGES] and the scaled error norm: the model's part
+            err = call_f8(attempt, (t, h, t_new, rtol, ms, y, q, nq, K, y_new, work, scale, atol, pair))
             nfev += N_STAGES
-            for i in range(N):
-                m = max(abs(y[i]), abs(y_new[i]))
-                if mode_scaled and pair[i] >= 0:
-                    m = max(m, abs(y[pair[i]]), abs(y_new[pair[i]]))
-                scale[i] = atol[i] + rtol * m
-            # knifeedge:begin error
-            # the scaled norm of the embedded estimate (DOP853: its 5th- and 3rd-order ones combined as Hairer's)
-            n5 = 0.0
-            n3 = 0.0
-            for i in range(N):
-                e5 = 0.0
-                e3 = 0.0
-                for j in range(N_STAGES + 1):
-                    e5 += E5[j] * K[j, i]
-                    e3 += E3[j] * K[j, i]
-                n5 += (e5 / scale[i]) * (e5 / scale[i])
-                n3 += (e3 / scale[i]) * (e3 / scale[i])
-            if not HAIRER:
-                err = abs(h) * np.sqrt(n5 / N)
-            elif n5 == 0.0 and n3 == 0.0:
-                err = 0.0
-            else:
-                err = abs(h) * n5 / np.sqrt((n5 + 0.01 * n3) * N)
-            # knifeedge:end error
             if err < 1.0:
                 if err == 0.0:
                     factor = MAX_FACTOR
@@ -257,7 +208,7 @@ def solve(t0, t1, y0, f0, p, rtol, atol, h_init, max_step, t_eval, every, events
             # knifeedge:end ends
             # knifeedge:begin functions
             if n_fun > 0:
-                _function_ends(events, y, y_new, fa, fb, h, p, work, ga, gb, sa, sb)
+                _function_ends(events, y, y_new, fa, fb, h, p, ev, work, ga, gb, sa, sb)
             # knifeedge:end functions
             # knifeedge:begin suspect
             # knifeedge:end suspect
@@ -265,40 +216,14 @@ def solve(t0, t1, y0, f0, p, rtol, atol, h_init, max_step, t_eval, every, events
                 any_flag = _c.screen(ga, gb, sa, sb, crit, n_crit, flag)
         if any_flag or (ie < t_eval.size and t_eval[ie] < t_new):
             # the interpolant of the step: F (DENSE_ROWS x N)
-            # knifeedge:begin dense
-            if HAIRER:
-                for s in range(N_STAGES + 1, N_EXT):
-                    for i in range(N):
-                        acc = 0.0
-                        for j in range(s):
-                            acc += A[s, j] * K[j, i]
-                        work[i] = y[i] + h * acc
-                    _rhs(t + C[s] * h, work, q, K[s])
-                for i in range(N):
-                    dy = y_new[i] - y[i]
-                    F[0, i] = dy
-                    F[1, i] = h * K[0, i] - dy
-                    F[2, i] = 2.0 * dy - h * (K[N_STAGES, i] + K[0, i])
-                    for r in range(DENSE_ROWS - 3):
-                        acc = 0.0
-                        for j in range(N_EXT):
-                            acc += DD[r, j] * K[j, i]
-                        F[3 + r, i] = h * acc
-                nfev += N_EXT - N_STAGES - 1
-            else:
-                for i in range(N):
-                    for r in range(DENSE_ROWS):
-                        acc = 0.0
-                        for j in range(N_EXT):
-                            acc += K[j, i] * P[j, r]
-                        F[r, i] = h * acc
-            # knifeedge:end dense
+            call_void(dense, (t, h, y, y_new, q, nq, K, F, work))
+            nfev += DENSE_NFEV
         if any_flag:
             n_ev = _c.locate(events, F, y, ALT, t, h, ga, gb, crit, n_crit, flag, xs, gs, ev_t, ev_k, n_ev)
             # knifeedge:begin functions
             if n_fun > 0:
-                n_ev = _locate_functions(events, F, y, t, h, p, work, ga, gb, crit, n_crit, flag, xs, gs, ev_t, ev_k,
-                                         n_ev)
+                n_ev = _locate_functions(events, F, y, t, h, p, ev, work, ga, gb, crit, n_crit, flag, xs, gs, ev_t,
+                                         ev_k, n_ev)
             # knifeedge:end functions
         # knifeedge:begin output
         # knifeedge:end output

@@ -138,6 +138,16 @@ def _solver_scale(y, atol, pair, out):
         out[i] = max(m, atol[i])
 
 
+#: the event functions are the model's own ``_event_values`` (the adaptive integrator's ``ev`` is unused here)
+NO_EV = np.zeros(2, dtype=np.int64)
+
+
+@njit(cache=True, error_model="numpy")
+def _values(s, p, ev):
+    """The model's event functions at ``s``."""
+    return _event_values(s, p)
+
+
 # knifeedge:begin function_defs
 # knifeedge:end function_defs
 
@@ -237,7 +247,7 @@ def solve(t0, t1, y0, f0, p, h_fixed, n_steps, first, atol, t_eval, every, event
             # knifeedge:end ends
             # knifeedge:begin functions
             if n_fun > 0:
-                _function_ends(events, y, y_new, fa, fb, h, p, work, ga, gb, sa, sb)
+                _function_ends(events, y, y_new, fa, fb, h, p, NO_EV, work, ga, gb, sa, sb)
             # knifeedge:end functions
             # knifeedge:begin suspect
             # knifeedge:end suspect
@@ -249,8 +259,8 @@ def solve(t0, t1, y0, f0, p, h_fixed, n_steps, first, atol, t_eval, every, event
             n_ev = _c.locate(events, F, y, ALT, t, h, ga, gb, crit, n_crit, flag, xs, gs, ev_t, ev_k, n_ev)
             # knifeedge:begin functions
             if n_fun > 0:
-                n_ev = _locate_functions(events, F, y, t, h, p, work, ga, gb, crit, n_crit, flag, xs, gs, ev_t, ev_k,
-                                         n_ev)
+                n_ev = _locate_functions(events, F, y, t, h, p, NO_EV, work, ga, gb, crit, n_crit, flag, xs, gs,
+                                         ev_t, ev_k, n_ev)
             # knifeedge:end functions
         # knifeedge:begin output
         # knifeedge:end output

@@ -1,0 +1,203 @@
+"""Compiling a kernel in a background process while a first run goes on without it.
+
+A kernel (one method specialized to one model) compiles in seconds, once per
+machine: later processes load its machine code from the cache.  In the
+``"background"`` compile mode a run that finds its kernel not yet compiled
+does not wait for it: it starts a separate process that compiles the kernel
+into the cache (:func:`start`), and meanwhile the run is stepped by SciPy's
+solver of the same tableau and step-size control with the model's
+right-hand side as plain Python (see ``simulate._run_compiled``).  When the
+compiled kernel is ready the run continues in it from the solver's state
+(time, state, derivative and next step), so the steps are those of one
+compiled run up to round-off; a run that ends first never waits.  The
+background process outlives the run that started it if it must, and a
+second run of the same kernel in the meantime does not start another.
+
+The mode is ``"wait"`` (compile in the calling process, the default of the
+library) or ``"background"`` (the default of the command line): set it with
+:func:`set_compile_mode` or the environment variable ``KNIFEEDGE_COMPILE``.
+"""
+from __future__ import annotations
+
+import base64
+import contextlib
+import json
+import os
+import pickle
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+MODES = ("wait", "background")
+_MODE: list = [None]
+#: what the compiling process runs (not ``-m``: the module is imported by its package first)
+_CHILD = "import sys; from knifeedge.integrators.compiler import _main; sys.exit(_main())"
+#: the compiling processes this process started, by kernel file name
+_STARTED: dict = {}
+
+
+def set_compile_mode(mode: str) -> None:
+    """Set how a kernel that is not yet compiled is compiled: ``"wait"`` or ``"background"``.
+
+    ``"wait"``: the first run of a (model, method) pair compiles it and then
+    runs (seconds, once per machine).  ``"background"``: a separate process
+    compiles it while SciPy's solver of the same method (``DOP853``,
+    ``DP54``/``RK45``) with a plain-Python right-hand side answers; the run
+    moves into the compiled kernel as soon as it is ready.  Methods without
+    a SciPy twin, and ``error_control="mode"``, always wait.  Overrides the
+    environment variable ``KNIFEEDGE_COMPILE``.
+    """
+    if mode not in MODES:
+        raise ValueError(f"`mode` must be one of {MODES}, got {mode!r}")
+    _MODE[0] = mode
+
+
+@contextlib.contextmanager
+def compile_mode_set(mode: str):
+    """Context manager: :func:`set_compile_mode` ``mode`` inside the block, the previous setting after it."""
+    previous = _MODE[0]
+    set_compile_mode(mode)
+    try:
+        yield
+    finally:
+        _MODE[0] = previous
+
+
+def compile_mode() -> str:
+    """The compile mode in force: :func:`set_compile_mode`, else ``$KNIFEEDGE_COMPILE``, else ``"wait"``."""
+    if _MODE[0] is not None:
+        return _MODE[0]
+    env = os.environ.get("KNIFEEDGE_COMPILE", "").strip()
+    if env and env not in MODES:
+        raise ValueError(f"environment variable KNIFEEDGE_COMPILE must be one of {MODES}, got {env!r}")
+    return env or "wait"
+
+
+class Pending:
+    """A kernel being compiled by another process.
+
+    Attributes
+    ----------
+    module : the kernel module (imported, not compiled).
+    path : its file; the compiling process's lock is ``path`` with suffix ``.compiling``.
+    started : whether this process started the compiler (else another one had).
+    """
+
+    def __init__(self, module, path: Path, proc, started: bool):
+        self.module, self.path, self.proc, self.started = module, path, proc, started
+        self.t_start = time.perf_counter()
+
+    def ready(self) -> bool:
+        """Whether the compiled code is in the cache (a cheap check: one file's existence)."""
+        from .specialize import is_compiled
+
+        return is_compiled(self.module)
+
+    def failed(self) -> bool:
+        """Whether the compiling process ended (or its lock disappeared) without leaving compiled code."""
+        if self.ready():
+            return False
+        if self.proc is not None:
+            return self.proc.poll() is not None
+        return not _lock(self.path).exists()
+
+    def log(self) -> str:
+        """The compiling process's error output (empty if none)."""
+        try:
+            return _log(self.path).read_text()[-2000:]
+        except OSError:
+            return ""
+
+
+def _lock(path: Path) -> Path:
+    return path.with_suffix(".compiling")
+
+
+def _log(path: Path) -> Path:
+    return path.with_suffix(".log")
+
+
+def _alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        return True
+    return True
+
+
+def argument_types(kernel_module, args: tuple) -> tuple:
+    """numba's types of what ``kernel_module.solve(*args)`` compiles, found without compiling anything."""
+    if hasattr(kernel_module, "argument_types"):  # the model's parts of the shared adaptive integrator
+        return kernel_module.argument_types(args)
+    return tuple(kernel_module.solve.typeof_pyval(a) for a in args)
+
+
+def compile_types(kernel_module, arg_types: tuple) -> None:
+    """Compile (or load from the cache) ``kernel_module``'s code for :func:`argument_types` ``arg_types``."""
+    if hasattr(kernel_module, "compile_types"):
+        kernel_module.compile_types(arg_types)
+    else:
+        kernel_module.solve.compile(arg_types)
+
+
+def start(model, method: str, kernel_module, arg_types: tuple) -> Pending:
+    """Compile the kernel of ``method`` for ``model`` (``kernel_module``) for the argument types ``arg_types``
+    (:func:`argument_types`) in a separate process.
+
+    Returns a :class:`Pending`; if another live process is already compiling
+    the same kernel (its lock file names it), none is started.
+    """
+    path = Path(kernel_module.__file__)
+    lock = _lock(path)
+    if path.name in _STARTED:
+        return _STARTED[path.name]
+    try:
+        pid = int(lock.read_text() or 0)
+    except (OSError, ValueError):
+        pid = 0
+    if pid and _alive(pid):
+        return Pending(kernel_module, path, None, started=False)
+    lock.unlink(missing_ok=True)
+    job = {
+        "kernel": str(path), "method": method,
+        "model": model.module.MODEL, "fidelity": model.module.FIDELITY, "pose": bool(model.pose),
+        "path": str(model.source_path.parent) if model.source_path is not None else None,
+        "types": base64.b64encode(pickle.dumps(tuple(arg_types))).decode(),
+    }
+    env = dict(os.environ, KNIFEEDGE_COMPILE="wait")
+    with open(_log(path), "w") as err:
+        proc = subprocess.Popen([sys.executable, "-c", _CHILD], stdin=subprocess.PIPE,
+                                stdout=subprocess.DEVNULL, stderr=err, env=env, start_new_session=True)
+    lock.write_text(str(proc.pid))
+    proc.stdin.write(json.dumps(job).encode())
+    proc.stdin.close()
+    pending = Pending(kernel_module, path, proc, started=True)
+    _STARTED[path.name] = pending
+    return pending
+
+
+def _main() -> int:
+    """The compiling process: read the job from stdin, import the model and the kernel, compile, cache."""
+    job = json.loads(sys.stdin.read())
+    path = Path(job["kernel"])
+    try:
+        from .. import load
+        from . import kernel_module
+
+        model = load(job["model"], fidelity=job["fidelity"], pose=job["pose"], path=job["path"])
+        module = kernel_module(model, job["method"])
+        if Path(module.__file__) != path:
+            raise RuntimeError(f"the kernel of this process is {module.__file__}, not {path}")
+        compile_types(module, pickle.loads(base64.b64decode(job["types"])))
+    finally:
+        lock = _lock(path)
+        try:
+            if int(lock.read_text() or 0) == os.getpid():
+                lock.unlink()
+        except (OSError, ValueError):
+            pass
+    return 0
+

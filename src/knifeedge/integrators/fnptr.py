@@ -1,0 +1,78 @@
+"""Calls through a function's address inside compiled code: one compiled integrator serves every model.
+
+A model's compiled parts (its right-hand side, the stages of a step, the
+interpolant: ``numba.cfunc`` functions of the kernel module written by
+:mod:`.specialize`) are passed to the shared integrator as machine
+addresses, plain integers, and called with :func:`call_f8` / :func:`call_void`.
+The integrator therefore compiles once per method and machine (its cache
+does not depend on the model), and each model compiles only its parts.
+
+Arguments are ``float64`` or ``int64`` scalars, passed by value, and
+contiguous arrays, passed as the address of their first element (a
+``double*`` or ``int64_t*`` in the callee, which rebuilds the array with
+``numba.carray``).  The caller keeps the ``cfunc`` objects alive for as long
+as their addresses are in use.
+"""
+from llvmlite import ir
+from numba import types
+from numba.core import cgutils
+from numba.extending import intrinsic
+
+
+def _lower_args(context, builder, arg_types, values):
+    """LLVM values and types of the arguments: scalars as they are, arrays as pointers to their data."""
+    out, tys = [], []
+    for ty, v in zip(arg_types, values):
+        if isinstance(ty, types.Array):
+            data = context.make_array(ty)(context, builder, v).data
+            out.append(data)
+            tys.append(data.type)
+        elif isinstance(ty, (types.Float, types.Integer)):
+            out.append(v)
+            tys.append(context.get_value_type(ty))
+        else:
+            raise TypeError(f"fnptr: unsupported argument type {ty}")
+    return out, tys
+
+
+def _check(args):
+    if not isinstance(args, types.BaseTuple):
+        raise TypeError("fnptr: the arguments must be passed as one tuple")
+    for ty in args:
+        if isinstance(ty, types.Array) and ty.layout != "C":
+            raise TypeError(f"fnptr: arrays must be C-contiguous, got {ty}")
+
+
+@intrinsic
+def call_f8(typingctx, address, args):
+    """``call_f8(address, (a, b, ...))``: call the ``double f(...)`` at ``address`` and return its value."""
+    _check(args)
+    sig = types.float64(address, args)
+
+    def codegen(context, builder, signature, llargs):
+        addr, tup = llargs
+        values = cgutils.unpack_tuple(builder, tup, len(args))
+        vals, tys = _lower_args(context, builder, args.types, values)
+        fnty = ir.FunctionType(ir.DoubleType(), tys)
+        fn = builder.inttoptr(addr, fnty.as_pointer())
+        return builder.call(fn, vals)
+
+    return sig, codegen
+
+
+@intrinsic
+def call_void(typingctx, address, args):
+    """``call_void(address, (a, b, ...))``: call the ``void f(...)`` at ``address``."""
+    _check(args)
+    sig = types.none(address, args)
+
+    def codegen(context, builder, signature, llargs):
+        addr, tup = llargs
+        values = cgutils.unpack_tuple(builder, tup, len(args))
+        vals, tys = _lower_args(context, builder, args.types, values)
+        fnty = ir.FunctionType(ir.VoidType(), tys)
+        fn = builder.inttoptr(addr, fnty.as_pointer())
+        builder.call(fn, vals)
+        return context.get_dummy_value()
+
+    return sig, codegen

@@ -1,0 +1,197 @@
+"""A model's parts of the adaptive integrator (``erk.py``), compiled as C-callable functions.
+
+:mod:`..specialize` writes this template for one model and one method: the
+``# knifeedge:rhs`` and ``# knifeedge:event_values`` lines import the model's
+functions, the ``# knifeedge:driver`` line the integrator, ``N`` and ``NV``
+become its state size (a constant, so that the loops over the state unroll)
+and its number of event functions, and the blocks between
+``# knifeedge:begin NAME`` and ``# knifeedge:end NAME`` (``attempt``: the
+stages of a step; ``error``: the error norm; ``dense``: the interpolant)
+become straight-line code with the tableau's coefficients as literals; the
+stages of a step are summed as ``y + (h a_0) K_0 + ...`` so that fused
+multiply-adds shorten the chain of dependent operations.
+
+The parts are ``numba.cfunc`` functions compiled on first use (:func:`parts`)
+and cached; the integrator, compiled once per method for every model, calls
+them through their addresses (:mod:`knifeedge.integrators.fnptr`).
+:func:`solve` is the integrator with this model's parts: it takes the
+arguments of ``erk.solve`` without ``fns`` and ``q``.
+"""
+import numpy as np
+from numba import carray, cfunc, types
+
+from knifeedge.integrators import tableau as _tableau
+from knifeedge.integrators.templates import erk as _driver  # knifeedge:driver
+from knifeedge.integrators.templates._stub import constants as _constants, rhs_q_into as _rhs  # knifeedge:rhs
+from knifeedge.integrators.templates._stub import event_values as _event_values  # knifeedge:event_values
+
+TABLEAU = "DOP853"  # knifeedge:variant  (a registered ExplicitTableau, see knifeedge.integrators.tableau)
+N = 3  # knifeedge:n  (the state size, a compile-time constant so that the loops over it unroll)
+NV = 1  # knifeedge:nv  (the number of event functions)
+
+(A, C, E5, E3, DD, P, HAIRER, N_STAGES, N_EXT, DENSE_ROWS, ALT, ERROR_ORDER) = _tableau.erk_arrays(TABLEAU)
+
+_F8 = types.float64
+_I8 = types.int64
+_D = types.CPointer(types.float64)
+_L = types.CPointer(types.int64)
+RHS_SIG = types.void(_F8, _D, _D, _I8, _D)
+ATTEMPT_SIG = types.float64(_F8, _F8, _F8, _F8, _I8, _D, _D, _I8, _D, _D, _D, _D, _D, _L)
+DENSE_SIG = types.void(_F8, _F8, _D, _D, _D, _I8, _D, _D, _D)
+EVENTS_SIG = types.void(_D, _D, _I8, _D)
+
+
+def rhs(t, yp, qp, nq, outp):
+    """``out = f(t, y)`` (``q`` = ``constants(p)`` has ``nq`` elements)."""
+    _rhs(t, carray(yp, (N,)), carray(qp, (nq,)), carray(outp, (N,)))
+
+
+def attempt(t, h, t_new, rtol, mode_scaled, yp, qp, nq, Kp, ynp, wp, sp, ap, pairp):
+    """One step from ``K[0] = f(t, y)``: the stages ``K[1 ..]``, ``y_new`` and ``K[N_STAGES] = f(t_new,
+    y_new)``; returns the scaled norm of the error estimate (``scale`` is written too)."""
+    y = carray(yp, (N,))
+    q = carray(qp, (nq,))
+    K = carray(Kp, (N_EXT, N))
+    y_new = carray(ynp, (N,))
+    work = carray(wp, (N,))
+    scale = carray(sp, (N,))
+    atol = carray(ap, (N,))
+    pair = carray(pairp, (N,))
+    # knifeedge:begin attempt
+    # stages 1 .. N_STAGES from K[0] = f(t, y) (first same as last), then y_new and K[N_STAGES]
+    for s in range(1, N_STAGES + 1):
+        for i in range(N):
+            acc = 0.0
+            for j in range(s):
+                acc += A[s, j] * K[j, i]
+            if s < N_STAGES:
+                work[i] = y[i] + h * acc
+            else:
+                y_new[i] = y[i] + h * acc
+        if s < N_STAGES:
+            _rhs(t + C[s] * h, work, q, K[s])
+        else:
+            _rhs(t_new, y_new, q, K[s])
+    # knifeedge:end attempt
+    for i in range(N):
+        m = max(abs(y[i]), abs(y_new[i]))
+        if mode_scaled and pair[i] >= 0:
+            m = max(m, abs(y[pair[i]]), abs(y_new[pair[i]]))
+        scale[i] = atol[i] + rtol * m
+    # knifeedge:begin error
+    # the scaled norm of the embedded estimate (DOP853: its 5th- and 3rd-order ones combined as Hairer's)
+    n5 = 0.0
+    n3 = 0.0
+    for i in range(N):
+        e5 = 0.0
+        e3 = 0.0
+        for j in range(N_STAGES + 1):
+            e5 += E5[j] * K[j, i]
+            e3 += E3[j] * K[j, i]
+        n5 += (e5 / scale[i]) * (e5 / scale[i])
+        n3 += (e3 / scale[i]) * (e3 / scale[i])
+    if not HAIRER:
+        err = abs(h) * np.sqrt(n5 / N)
+    elif n5 == 0.0 and n3 == 0.0:
+        err = 0.0
+    else:
+        err = abs(h) * n5 / np.sqrt((n5 + 0.01 * n3) * N)
+    # knifeedge:end error
+    return err
+
+
+def dense(t, h, yp, ynp, qp, nq, Kp, Fp, wp):
+    """``F`` (``DENSE_ROWS`` x ``N``), the interpolant of the accepted step (DOP853: its extra stages first)."""
+    y = carray(yp, (N,))
+    y_new = carray(ynp, (N,))
+    q = carray(qp, (nq,))
+    K = carray(Kp, (N_EXT, N))
+    F = carray(Fp, (DENSE_ROWS, N))
+    work = carray(wp, (N,))
+    # knifeedge:begin dense
+    if HAIRER:
+        for s in range(N_STAGES + 1, N_EXT):
+            for i in range(N):
+                acc = 0.0
+                for j in range(s):
+                    acc += A[s, j] * K[j, i]
+                work[i] = y[i] + h * acc
+            _rhs(t + C[s] * h, work, q, K[s])
+        for i in range(N):
+            dy = y_new[i] - y[i]
+            F[0, i] = dy
+            F[1, i] = h * K[0, i] - dy
+            F[2, i] = 2.0 * dy - h * (K[N_STAGES, i] + K[0, i])
+            for r in range(DENSE_ROWS - 3):
+                acc = 0.0
+                for j in range(N_EXT):
+                    acc += DD[r, j] * K[j, i]
+                F[3 + r, i] = h * acc
+    else:
+        for i in range(N):
+            for r in range(DENSE_ROWS):
+                acc = 0.0
+                for j in range(N_EXT):
+                    acc += K[j, i] * P[j, r]
+                F[r, i] = h * acc
+    # knifeedge:end dense
+
+
+def events(sp, pp, n_p, outp):
+    """``out = event_values(s, p)`` (``p`` has ``n_p`` elements)."""
+    out = carray(outp, (max(NV, 1),))
+    v = _event_values(carray(sp, (N,)), carray(pp, (n_p,)))
+    for k in range(NV):
+        out[k] = v[k]
+
+
+_PARTS: list = []
+_OPTIONS = {"cache": True, "error_model": "numpy"}
+
+
+def parts() -> np.ndarray:
+    """The addresses of the compiled parts (compiled, or loaded from the cache, at the first call), then
+    ``NV``: the ``fns`` argument of the integrator."""
+    if not _PARTS:
+        # "contract": fused multiply-adds in the stage sums
+        fast = dict(_OPTIONS, fastmath={"contract"})
+        compiled = (cfunc(RHS_SIG, **_OPTIONS)(rhs), cfunc(ATTEMPT_SIG, **fast)(attempt),
+                    cfunc(DENSE_SIG, **fast)(dense), cfunc(EVENTS_SIG, **_OPTIONS)(events))
+        _PARTS.append(compiled)  # kept alive: the integrator calls them by address
+        _PARTS.append(np.array([f.address for f in compiled] + [NV], dtype=np.int64))
+    return _PARTS[1]
+
+
+def is_compiled() -> bool:
+    """Whether the cache holds the compiled parts and the integrator (later calls load them)."""
+    from knifeedge.integrators.specialize import cached
+
+    return all(cached(f) for f in (rhs, attempt, dense, events, _driver.solve))
+
+
+def arguments(t0, t1, y0, f0, p, *rest) -> tuple:
+    """The integrator's arguments for the arguments of :func:`solve`."""
+    if y0.size != N:
+        raise ValueError("the initial state does not have the size this kernel was specialized to")
+    return (parts(), t0, t1, y0, f0, _constants(p), p) + rest
+
+
+def argument_types(args: tuple) -> tuple:
+    """numba's types of the integrator's arguments for the arguments ``args`` of :func:`solve` (compiles
+    nothing: what a separate process needs to compile the integrator)."""
+    t0, t1, y0, f0, p, *rest = args
+    sample = (np.zeros(5, dtype=np.int64), t0, t1, y0, f0, np.zeros(1), p, *rest)
+    return tuple(_driver.solve.typeof_pyval(a) for a in sample)
+
+
+def compile_types(types_) -> None:
+    """Compile (or load from the cache) the parts and the integrator for the argument types ``types_``."""
+    parts()
+    _driver.solve.compile(types_)
+
+
+def solve(t0, t1, y0, f0, p, rtol, atol, h_init, max_step, t_eval, every, events, max_steps, pair, mode_scaled,
+          chunk, ts, ys, ev_t, ev_k):
+    """``erk.solve`` with this model's parts (see its parameters and returns)."""
+    return _driver.solve(*arguments(t0, t1, y0, f0, p, rtol, atol, h_init, max_step, t_eval, every, events,
+                                    max_steps, pair, mode_scaled, chunk, ts, ys, ev_t, ev_k))
