@@ -542,16 +542,28 @@ def test_a_task_is_opaque_to_dask_and_has_a_key_of_its_own():
 
 
 def test_local_workers_are_forked_with_the_kernel_loaded():
-    """The sweep's process loads the kernel once before forking its workers, rather than each worker loading
-    (or, on a first use, compiling) it."""
+    """The sweep's process runs the kernel once (loading it, or on a first use compiling it) before it forks its
+    workers, rather than each worker loading or compiling it."""
     code = """if True:
+        import os
         import knifeedge as ke
-        from knifeedge.integrators import kernel
-        m = ke.load("single_mode", "reduced")
-        assert not getattr(kernel(m, "DOP853"), "signatures", None)  # not loaded yet in this fresh process
+        from knifeedge import runspec, workers
+        events, parent = [], os.getpid()
+        simulate, start = runspec.RunSpec.simulate, workers.LocalPool.__init__
+
+        def logged_simulate(self):
+            if os.getpid() == parent:
+                events.append("simulate")
+            return simulate(self)
+
+        def logged_start(self, n):
+            events.append("workers")
+            start(self, n)
+
+        runspec.RunSpec.simulate, workers.LocalPool.__init__ = logged_simulate, logged_start
         t = ke.sweep(ke.scene("numerical", t_end=40.0), {"phi_dot": [0.1, 0.2, 0.3]}, max_workers=2, progress=False)
         assert set(t["status"]) == {"ok"}, t.rows
-        assert kernel(m, "DOP853").signatures, "the kernel was not loaded before the workers were forked"
+        assert events == ["simulate", "workers"], events
     """
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
     assert r.returncode == 0, r.stderr

@@ -711,8 +711,10 @@ class _Sweep:
 
     def _warm(self) -> None:
         """Load (or compile) the kernels of the runs to do in this process, before workers are forked from it:
-        each worker would otherwise load them itself (0.4 s of CPU for the two-mode model; the compilation of a
-        first use, several seconds, in every worker at once)."""
+        each worker would otherwise load them itself (0.4 s of CPU for the two-mode model; on a first use, all
+        would run SciPy's solver while a background process compiles, or all compile at once)."""
+        from .integrators.compiler import compile_mode_set
+
         done = set()
         for r in self.spec_of.values():
             method = r.spec["method"]
@@ -722,7 +724,7 @@ class _Sweep:
             t0, t1 = r.spec["t_span"]
             tiny = {**r.spec, "t_span": [t0, t0 + 1e-9 * (t1 - t0)], "n_eval": None, "max_steps": None}
             try:
-                with warnings.catch_warnings():
+                with warnings.catch_warnings(), compile_mode_set("wait"):
                     warnings.simplefilter("ignore")
                     RunSpec.from_dict(tiny).simulate()
             except Exception:  # noqa: BLE001 - the runs themselves will say what is wrong
