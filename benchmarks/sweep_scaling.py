@@ -13,11 +13,16 @@ Two measures of the time spent outside integration, for each configuration with 
   worker integrating (the row's ``seconds``: ``RunSpec.simulate`` and the reversal columns); the rest of the
   workers' time went to starting them, handing out tasks, pickling, the parent's commits and the tail.  On a
   machine shared with other work both times stretch, and a worker waiting for a core counts as overhead.
+* ``overhead_cpu_direct = 1 - cpu_in_runs / cpu_total``: ``cpu_in_runs`` is the CPU time of the sweep's runs
+  themselves, measured in its workers as they run (the thread time of each ``run_one``), ``cpu_total`` the CPU
+  time the sweep used -- its own process (scheduling, the store, unpickling rows) plus its workers (start-up
+  included).  Both are measured in the same sweep, under the same load.
 * ``overhead_cpu = 1 - cpu_integration / cpu_total``: ``cpu_integration`` is the CPU time of the same runs
   integrated one after another in this process (``run_one``, measured first); ``cpu_total`` the CPU time the
   sweep used -- its own process (scheduling, the store, unpickling rows) plus its workers (start-up included).
-  CPU time does not count waiting for a core, so this is the figure that other load on the machine leaves alone
-  (mostly: a core shared with other work also runs slower).
+  CPU time does not count waiting for a core; but a core shared with other work also runs slower, and
+  ``cpu_integration`` is measured before the sweeps, so on a loaded machine this figure drifts by several per
+  cent either way (``overhead_cpu_direct`` does not).
 
 Each repeat measures ``cpu_integration`` again, then every configuration; the rows are the medians over the
 repeats (``repeats`` holds every measurement), with the 1-minute load average of the machine before and after.
@@ -25,7 +30,9 @@ repeats (``repeats`` holds every measurement), with the 1-minute load average of
 from __future__ import annotations
 
 import argparse
+import importlib
 import json
+import multiprocessing
 import os
 import platform
 import resource
@@ -39,6 +46,48 @@ import numpy as np
 import knifeedge as ke
 from knifeedge.scenes.tinversion import RUN, _t_end
 from knifeedge.sweep import run_one
+
+
+_SWEEP = importlib.import_module("knifeedge.sweep")
+_RUN_ONE = _SWEEP.run_one
+#: CPU seconds inside run_one, shared with the local workers forked from this process (None in a Dask worker)
+_SHARED = None
+_IN_RUNS = 0.0  # the same in a Dask worker
+
+
+def _timed_run_one(spec):
+    """``run_one``, adding the CPU time of its thread to the total of this process."""
+    global _IN_RUNS
+    c = time.thread_time()
+    out = _RUN_ONE(spec)
+    dt = time.thread_time() - c
+    if _SHARED is not None:
+        with _SHARED.get_lock():
+            _SHARED.value += dt
+    else:
+        _IN_RUNS += dt
+    return out
+
+
+def _install_timer() -> None:
+    """In a Dask worker: time its runs (by this module imported there, not a copy sent with the function)."""
+    m = importlib.import_module("benchmarks.sweep_scaling")
+    m._SHARED, m._IN_RUNS = None, 0.0
+    importlib.import_module("knifeedge.sweep").run_one = m._timed_run_one
+
+
+def _read_timer() -> float:
+    return importlib.import_module("benchmarks.sweep_scaling")._IN_RUNS
+
+
+def _warm_up() -> float:
+    """In a fresh worker: import knifeedge and load the kernel (one run); its CPU seconds."""
+    c = time.process_time()
+    from knifeedge.scenes.tinversion import RUN
+    from knifeedge.sweep import run_one
+
+    run_one(RUN.with_(fidelity="full", phi_dot=0.2, t_end=10.0).to_dict())
+    return time.process_time() - c
 
 
 def _points(n: int) -> list:
@@ -75,8 +124,27 @@ def _children_cpu() -> float:
     return r.ru_utime + r.ru_stime
 
 
-def _measure(name: str, n_workers: int, points: list, cpu_integration: float, executor=None) -> dict:
+def _measure(name: str, n_workers: int, points: list, cpu_integration: float, executor=None, client=None) -> dict:
+    global _SHARED
     run = RUN.with_(fidelity="full")
+    _SHARED = None
+    if client is not None:
+        client.run(_install_timer)
+    else:
+        _SHARED = multiprocessing.Value("d", 0.0)  # inherited by the workers forked for this sweep
+    _SWEEP.run_one = _timed_run_one
+    try:
+        row = _sweep(name, n_workers, points, cpu_integration, executor, run)
+    finally:
+        _SWEEP.run_one = _RUN_ONE
+    in_runs = sum(client.run(_read_timer).values()) if client is not None else _SHARED.value
+    cpu_total = row["cpu_parent_s"] + row["cpu_workers_s"]
+    row["cpu_in_runs_s"] = in_runs
+    row["overhead_cpu_direct"] = 1.0 - in_runs / cpu_total
+    return row
+
+
+def _sweep(name: str, n_workers: int, points: list, cpu_integration: float, executor, run) -> dict:
     with tempfile.TemporaryDirectory() as d:
         store = Path(d) / "runs.sqlite"
         load0 = os.getloadavg()[0]
@@ -104,7 +172,8 @@ def _measure(name: str, n_workers: int, points: list, cpu_integration: float, ex
 
 
 _MEDIAN_KEYS = ("wall_s", "busy_s", "overhead_wall", "cpu_integration_s", "cpu_parent_s", "cpu_workers_s",
-                "overhead_cpu", "start_to_first_row_s", "runs_per_s", "mean_run_ms")
+                "overhead_cpu", "cpu_in_runs_s", "overhead_cpu_direct", "start_to_first_row_s", "runs_per_s",
+                "mean_run_ms")
 
 
 def _median_row(rows: list) -> dict:
@@ -148,8 +217,11 @@ def main(argv=None) -> int:
 
                 with LocalCluster(n_workers=w, threads_per_worker=1, processes=True, dashboard_address=None) \
                         as cluster, Client(cluster) as client:
-                    client.run(lambda: __import__("knifeedge"))  # import in the workers before the clock starts
-                    r = _measure(name, w, points, cpu_integration, client.get_executor())
+                    # before the clock starts, as for local workers (forks of this warmed-up process): each worker
+                    # imports knifeedge and loads the kernel (CPU time reported as worker_warmup_cpu_s)
+                    warmup = client.run(_warm_up)
+                    r = _measure(name, w, points, cpu_integration, client.get_executor(), client)
+                    r["worker_warmup_cpu_s"] = sorted(warmup.values())
             else:
                 r = _measure(name, w, points, cpu_integration)
             results["repeats"].append(r)
@@ -165,8 +237,9 @@ def main(argv=None) -> int:
     results["load_avg_1min_end"] = os.getloadavg()[0]
     for r in results["rows"]:
         print(f"{r['config']:30s} wall {r['wall_s']:6.2f} s  overhead: wall {100 * r['overhead_wall']:5.1f} %, "
-              f"CPU {100 * r['overhead_cpu']:5.1f} %  (sweep process {r['cpu_parent_s']:.2f} CPU s, workers "
-              f"{r['cpu_workers_s']:.2f}; median of {r['repeats']})")
+              f"CPU {100 * r['overhead_cpu_direct']:5.1f} % ({100 * r['overhead_cpu']:5.1f} % against the runs alone)"
+              f"  (sweep process {r['cpu_parent_s']:.2f} CPU s, workers {r['cpu_workers_s']:.2f}, in runs "
+              f"{r['cpu_in_runs_s']:.2f}; median of {r['repeats']})")
     print(f"speed-up of 2 local workers over 1: {results['speedup_2_vs_1']:.2f}x "
           f"(each repeat: {', '.join(f'{x:.2f}' for x in results['speedup_2_vs_1_all'])})")
     args.out.parent.mkdir(parents=True, exist_ok=True)

@@ -541,6 +541,34 @@ def test_a_task_is_opaque_to_dask_and_has_a_key_of_its_own():
     assert list(again) == [{"phi_dot": 0.1}] and tokenize(again) == tokenize(plain)
 
 
+def test_local_workers_are_forked_with_the_kernel_loaded():
+    """The sweep's process runs the kernel once (loading it, or on a first use compiling it) before it forks its
+    workers, rather than each worker loading or compiling it."""
+    code = """if True:
+        import os
+        import knifeedge as ke
+        from knifeedge import runspec, workers
+        events, parent = [], os.getpid()
+        simulate, start = runspec.RunSpec.simulate, workers.LocalPool.__init__
+
+        def logged_simulate(self):
+            if os.getpid() == parent:
+                events.append("simulate")
+            return simulate(self)
+
+        def logged_start(self, n):
+            events.append("workers")
+            start(self, n)
+
+        runspec.RunSpec.simulate, workers.LocalPool.__init__ = logged_simulate, logged_start
+        t = ke.sweep(ke.scene("numerical", t_end=40.0), {"phi_dot": [0.1, 0.2, 0.3]}, max_workers=2, progress=False)
+        assert set(t["status"]) == {"ok"}, t.rows
+        assert events == ["simulate", "workers"], events
+    """
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+
+
 def test_ctrl_c_on_the_command_line_keeps_finished_runs(tmp_path):
     """A real SIGINT to `knifeedge sweep` on local workers: finished rows stay, the rerun computes only the rest."""
     out = tmp_path / "runs.csv"
