@@ -13,9 +13,12 @@ derive:
 check-generated:
 	$(PYTHON) -m knifeedge.derive --check --out generated
 
-## test: the test suite (what CI runs)
+## test: the test suite on every core (the README's test command); test-all: then the slow checks (CI runs both)
 test:
 	$(PYTHON) -m pytest
+
+test-all: test
+	$(PYTHON) -m pytest -m slow
 
 ## demo: the main job
 demo:

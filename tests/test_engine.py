@@ -10,6 +10,9 @@ from knifeedge.generated import MODULES
 from knifeedge.derive.truncation import ORDER
 from knifeedge.derive.verify import is_zero, tilt_order
 
+# the symbolic derivations (the session's `systems`, a fresh `make derive`) run once, in one test worker
+pytestmark = pytest.mark.xdist_group("symbolic")
+
 
 @pytest.mark.parametrize("name", sorted({m for m, _ in MODULES}))
 def test_reduced_equations_hold_at_a_general_pose(name, systems):

@@ -8,6 +8,9 @@ from pathlib import Path
 
 import pytest
 
+# the symbolic derivations (the session's `systems`, a fresh `make derive`) run once, in one test worker
+pytestmark = pytest.mark.xdist_group("symbolic")
+
 ROOT = Path(__file__).resolve().parents[1]
 
 
@@ -39,6 +42,7 @@ def test_generated_is_not_stale(fresh):
     assert not problems, "generated/ is stale: run make derive\n" + "\n".join(problems)
 
 
+@pytest.mark.slow
 def test_derivation_is_deterministic_under_any_hash_seed(fresh, tmp_path):
     """make derive pins PYTHONHASHSEED=0; the output does not depend on it anyway."""
     _derive(tmp_path, seed="12345")

@@ -17,6 +17,9 @@ from knifeedge.derive.engine import ReducedSystem
 
 from knifeedge.generated import MODULES
 
+# the symbolic derivations (the session's `systems`, a fresh `make derive`) run once, in one test worker
+pytestmark = pytest.mark.xdist_group("symbolic")
+
 #: every generated module, from the registry (a new model is checked without editing this file)
 KEYS = [f"{m}/{f}" for m, f in sorted(MODULES)]
 

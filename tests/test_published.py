@@ -17,6 +17,9 @@ from knifeedge.derive import verify
 from knifeedge.derive.dimensions import check_equation
 from knifeedge.derive.truncation import truncate
 
+# the symbolic derivations (the session's `systems`, a fresh `make derive`) run once, in one test worker
+pytestmark = pytest.mark.xdist_group("symbolic")
+
 ROOT = Path(__file__).resolve().parents[1]
 REQUIRED = {"lambda2", "phiAf", "thetBf", "FINAL1", "FINAL2", "Chap1", "Chap2", "an1", "an2",
             "Const22", "Const23", "Const52", "eqs_2modes.2", "eqs_2modes.3", "t0", "tr",

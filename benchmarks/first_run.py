@@ -1,0 +1,97 @@
+"""A newcomer's first run: ``knifeedge demo`` and ``knifeedge figures`` with every cache empty, then warm.
+
+``python -m benchmarks.first_run [--repeats 3] [--skip-figures] [--out benchmarks/results]``
+
+Each cold run gets fresh, empty folders for the compiled kernels
+(``KNIFEEDGE_CACHE_DIR``) and for numba's cache of the generated modules
+(``NUMBA_CACHE_DIR``), as after a fresh install; a cold ``demo`` is followed by
+a pause for the kernel it left compiling in the background (the command
+line's default for single runs), so that the next cold run is not slowed by
+it.  The warm runs reuse the caches of the last cold run.  Wall and CPU time
+(of the command and its children) are medians of the repeats; the load
+average before each run is recorded, as the machine may be shared.  Writes
+``first_run.json``.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import resource
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+
+def _run(args: list, env: dict, cwd: Path) -> dict:
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    load = os.getloadavg()[0]
+    t = time.perf_counter()
+    out = subprocess.run(args, env=env, cwd=cwd, capture_output=True, text=True)
+    wall = time.perf_counter() - t
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    if out.returncode != 0:
+        raise RuntimeError(f"{' '.join(args)} failed: {out.stderr[-2000:]}")
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    return {"wall_s": round(wall, 2), "cpu_s": round(cpu, 2), "load_before": round(load, 2)}
+
+
+def _wait_for_compiles(cache: Path, limit: float = 300.0) -> None:
+    """Wait until no background compile of this cache folder is running (its lock files are gone)."""
+    end = time.monotonic() + limit
+    while any((cache / "kernels").glob("*.compiling")) and time.monotonic() < end:
+        time.sleep(0.5)
+
+
+def measure(command: list, repeats: int, work: Path) -> dict:
+    exe = str(Path(sys.executable).parent / "knifeedge")
+    cold, warm = [], []
+    env = None
+    for k in range(repeats):
+        caches = Path(tempfile.mkdtemp(prefix="first-run-", dir=work))
+        env = dict(os.environ, KNIFEEDGE_CACHE_DIR=str(caches / "kernels-cache"),
+                   NUMBA_CACHE_DIR=str(caches / "numba-cache"))
+        env.pop("KNIFEEDGE_COMPILE", None)
+        cold.append(_run([exe, *command], env, work))
+        _wait_for_compiles(caches / "kernels-cache")
+        print(f"  cold {k + 1}/{repeats}: {cold[-1]}", flush=True)
+    for k in range(repeats):
+        warm.append(_run([exe, *command], env, work))
+        print(f"  warm {k + 1}/{repeats}: {warm[-1]}", flush=True)
+    med = lambda rows, key: round(statistics.median(r[key] for r in rows), 2)  # noqa: E731
+    return {"command": "knifeedge " + " ".join(command), "cold": cold, "warm": warm,
+            "cold_wall_median_s": med(cold, "wall_s"), "cold_cpu_median_s": med(cold, "cpu_s"),
+            "warm_wall_median_s": med(warm, "wall_s"), "warm_cpu_median_s": med(warm, "cpu_s"),
+            "cold_over_warm_wall": round(med(cold, "wall_s") / med(warm, "wall_s"), 2)}
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(prog="python -m benchmarks.first_run", description=__doc__.splitlines()[0])
+    ap.add_argument("--out", type=Path, default=Path(__file__).resolve().parent / "results")
+    ap.add_argument("--repeats", type=int, default=3)
+    ap.add_argument("--skip-figures", action="store_true")
+    args = ap.parse_args(argv)
+    results = {"cpus": os.cpu_count()}
+    with tempfile.TemporaryDirectory(prefix="knifeedge-first-run-") as tmp:
+        work = Path(tmp)
+        print("knifeedge demo", flush=True)
+        results["demo"] = measure(["demo", "--out", str(work / "demo.png")], args.repeats, work)
+        if not args.skip_figures:
+            print("knifeedge figures", flush=True)
+            results["figures"] = measure(["figures", "--out", str(work / "figures")], args.repeats, work)
+    args.out.mkdir(parents=True, exist_ok=True)
+    (args.out / "first_run.json").write_text(json.dumps(results, indent=1) + "\n")
+    for key in ("demo", "figures"):
+        if key in results:
+            r = results[key]
+            print(f"{r['command'].split(' --out')[0]}: cold {r['cold_wall_median_s']} s wall "
+                  f"({r['cold_cpu_median_s']} s CPU), warm {r['warm_wall_median_s']} s wall "
+                  f"({r['warm_cpu_median_s']} s CPU): {r['cold_over_warm_wall']}x")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
