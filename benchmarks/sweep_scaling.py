@@ -38,6 +38,7 @@ import platform
 import resource
 import sqlite3
 import tempfile
+import threading
 import time
 from pathlib import Path
 
@@ -145,6 +146,7 @@ def _measure(name: str, n_workers: int, points: list, cpu_integration: float, ex
 
 
 def _sweep(name: str, n_workers: int, points: list, cpu_integration: float, executor, run) -> dict:
+    forked = executor is None and threading.active_count() == 1  # else new interpreters (see knifeedge.workers)
     with tempfile.TemporaryDirectory() as d:
         store = Path(d) / "runs.sqlite"
         load0 = os.getloadavg()[0]
@@ -167,7 +169,8 @@ def _sweep(name: str, n_workers: int, points: list, cpu_integration: float, exec
         "cpu_integration_s": cpu_integration, "cpu_parent_s": cpu_parent, "cpu_workers_s": cpu_workers,
         "overhead_cpu": 1.0 - cpu_integration / cpu_total,
         "start_to_first_row_s": first, "runs_per_s": len(points) / wall, "mean_run_ms": 1e3 * busy / len(points),
-        "ok": int(np.sum(table.ok)), "load_avg_1min_before": load0, "load_avg_1min_after": os.getloadavg()[0],
+        "ok": int(np.sum(table.ok)), "local_workers_forked": forked, "load_avg_1min_before": load0,
+        "load_avg_1min_after": os.getloadavg()[0],
     }
 
 
@@ -204,36 +207,41 @@ def main(argv=None) -> int:
     if not args.skip_dask:
         configs.append(("dask LocalCluster, 2 workers", 2))
     integration = []
-    for rep in range(args.repeats):
-        cpu_integration = _integration_cpu(points)
-        integration.append(cpu_integration)
-        print(f"repeat {rep + 1}/{args.repeats}: integration alone {cpu_integration:.2f} CPU s for "
-              f"{len(points)} runs (load {os.getloadavg()[0]:.2f})", flush=True)
-        for name, w in configs:
-            if name.startswith("dask"):
-                # started afresh each time, after the local sweeps: while its threads run in this process, local
-                # workers are new interpreters rather than forks of it
-                from distributed import Client, LocalCluster
+    # the local sweeps first: once a Dask cluster has run in this process its threads stay, and local workers are
+    # then new interpreters rather than forks of this process
+    for phase in ("local", "dask"):
+        for rep in range(args.repeats):
+            todo = [(name, w) for name, w in configs if name.startswith("dask") == (phase == "dask")]
+            if not todo:
+                continue
+            cpu_integration = _integration_cpu(points)
+            integration.append(cpu_integration)
+            print(f"{phase} repeat {rep + 1}/{args.repeats}: integration alone {cpu_integration:.2f} CPU s for "
+                  f"{len(points)} runs (load {os.getloadavg()[0]:.2f})", flush=True)
+            for name, w in todo:
+                if phase == "dask":
+                    from distributed import Client, LocalCluster
 
-                with LocalCluster(n_workers=w, threads_per_worker=1, processes=True, dashboard_address=None) \
-                        as cluster, Client(cluster) as client:
-                    # before the clock starts, as for local workers (forks of this warmed-up process): each worker
-                    # imports knifeedge and loads the kernel (CPU time reported as worker_warmup_cpu_s)
-                    warmup = client.run(_warm_up)
-                    r = _measure(name, w, points, cpu_integration, client.get_executor(), client)
-                    r["worker_warmup_cpu_s"] = sorted(warmup.values())
-            else:
-                r = _measure(name, w, points, cpu_integration)
-            results["repeats"].append(r)
-            print(json.dumps(r), flush=True)
+                    with LocalCluster(n_workers=w, threads_per_worker=1, processes=True, dashboard_address=None) \
+                            as cluster, Client(cluster) as client:
+                        # before the clock starts, as for local workers (forks of this warmed-up process): each
+                        # worker imports knifeedge and loads the kernel (CPU time reported as worker_warmup_cpu_s)
+                        warmup = client.run(_warm_up)
+                        r = _measure(name, w, points, cpu_integration, client.get_executor(), client)
+                        r["worker_warmup_cpu_s"] = sorted(warmup.values())
+                else:
+                    r = _measure(name, w, points, cpu_integration)
+                results["repeats"].append(r)
+                print(json.dumps(r), flush=True)
     results["cpu_integration_s"] = float(np.median(integration))
     results["cpu_integration_all_s"] = integration
     for name, _ in configs:
         results["rows"].append(_median_row([r for r in results["repeats"] if r["config"] == name]))
     one, two = results["rows"][0], results["rows"][1]
     results["speedup_2_vs_1"] = one["wall_s"] / two["wall_s"]
-    results["speedup_2_vs_1_all"] = [a["wall_s"] / b["wall_s"] for a, b in
-                                     zip(results["repeats"][0::len(configs)], results["repeats"][1::len(configs)])]
+    ones = [r for r in results["repeats"] if r["config"] == one["config"]]
+    twos = [r for r in results["repeats"] if r["config"] == two["config"]]
+    results["speedup_2_vs_1_all"] = [a["wall_s"] / b["wall_s"] for a, b in zip(ones, twos)]
     results["load_avg_1min_end"] = os.getloadavg()[0]
     for r in results["rows"]:
         print(f"{r['config']:30s} wall {r['wall_s']:6.2f} s  overhead: wall {100 * r['overhead_wall']:5.1f} %, "

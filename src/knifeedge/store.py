@@ -311,22 +311,25 @@ class ResultStore:
         (``{run_id: "pid 123 on host"}``); messages about damaged rows.
         """
         now = time.time()
-        claimed, busy = [], {}
-        done, damaged = self.read(run_ids, since)
-        todo = [r for r in dict.fromkeys(run_ids) if r not in done]
-        with self._transaction():
-            for i in range(0, len(todo), 500):
-                chunk = todo[i:i + 500]
+        claimed, busy, done, damaged = [], {}, {}, []
+        ids = list(dict.fromkeys(run_ids))
+        with self._transaction():  # no other sweep writes meanwhile: what is found written stays so
+            for i in range(0, len(ids), 500):
+                chunk = ids[i:i + 500]
+                marks = ",".join("?" * len(chunk))
+                written = [r[0] for r in self.db.execute(
+                    f"SELECT run_id FROM runs WHERE run_id IN ({marks})" + ("" if since is None else
+                                                                            " AND finished_at >= ?"),
+                    chunk + ([] if since is None else [since]))]
+                if written:  # read back (a damaged row is reported, and its run claimed to be computed again)
+                    found, bad = self.read(written, since)
+                    done.update(found)
+                    damaged.extend(bad)
                 held = {r[0]: r[1:] for r in self.db.execute(
-                    f"SELECT run_id, owner, host, pid, started, expires FROM claims WHERE run_id IN "
-                    f"({','.join('?' * len(chunk))})", chunk)}
-                # a row written between read() and this transaction (by a sweep that has now released it)
-                written = {r[0] for r in self.db.execute(
-                    f"SELECT run_id FROM runs WHERE run_id IN ({','.join('?' * len(chunk))})"
-                    + ("" if since is None else " AND finished_at >= ?"), chunk + ([] if since is None else [since]))}
+                    f"SELECT run_id, owner, host, pid, started, expires FROM claims WHERE run_id IN ({marks})",
+                    chunk)}
                 for rid in chunk:
-                    if rid in written and rid not in done and not any(rid in d for d in damaged):
-                        busy[rid] = "just written"
+                    if rid in done:
                         continue
                     h = held.get(rid)
                     if h is not None and h[0] != self.owner and self._live(h, now):
