@@ -19,7 +19,7 @@ from knifeedge.derive import averaging
 from knifeedge.derive import published as pub
 from knifeedge.derive.models import D, L, alpha, ell, g
 
-# the symbolic derivations (the session's `systems`, a fresh `make derive`) run once, in one test worker
+# the session's symbolic derivation of every model (`systems`) is built once, in one test worker
 pytestmark = pytest.mark.xdist_group("symbolic")
 
 A_theta, A_phi, A1, A2 = (sp.Symbol(n, nonnegative=True) for n in ("A_theta", "A_phi", "A1", "A2"))

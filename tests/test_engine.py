@@ -10,7 +10,7 @@ from knifeedge.generated import MODULES
 from knifeedge.derive.truncation import ORDER
 from knifeedge.derive.verify import is_zero, tilt_order
 
-# the symbolic derivations (the session's `systems`, a fresh `make derive`) run once, in one test worker
+# the session's symbolic derivation of every model (`systems`) is built once, in one test worker
 pytestmark = pytest.mark.xdist_group("symbolic")
 
 

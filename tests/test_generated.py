@@ -8,9 +8,6 @@ from pathlib import Path
 
 import pytest
 
-# the symbolic derivations (the session's `systems`, a fresh `make derive`) run once, in one test worker
-pytestmark = pytest.mark.xdist_group("symbolic")
-
 ROOT = Path(__file__).resolve().parents[1]
 
 

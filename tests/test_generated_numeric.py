@@ -17,7 +17,7 @@ from knifeedge.derive.engine import ReducedSystem
 
 from knifeedge.generated import MODULES
 
-# the symbolic derivations (the session's `systems`, a fresh `make derive`) run once, in one test worker
+# the session's symbolic derivation of every model (`systems`) is built once, in one test worker
 pytestmark = pytest.mark.xdist_group("symbolic")
 
 #: every generated module, from the registry (a new model is checked without editing this file)

@@ -17,7 +17,7 @@ from knifeedge.derive import verify
 from knifeedge.derive.dimensions import check_equation
 from knifeedge.derive.truncation import truncate
 
-# the symbolic derivations (the session's `systems`, a fresh `make derive`) run once, in one test worker
+# the session's symbolic derivation of every model (`systems`) is built once, in one test worker
 pytestmark = pytest.mark.xdist_group("symbolic")
 
 ROOT = Path(__file__).resolve().parents[1]

@@ -17,7 +17,7 @@ import knifeedge as ke
 from knifeedge.derive import engine
 from knifeedge.derive.sleigh import a, amplitude_analogy, k
 
-# the symbolic derivations (the session's `systems`, a fresh `make derive`) run once, in one test worker
+# the session's symbolic derivation of every model (`systems`) is built once, in one test worker
 pytestmark = pytest.mark.xdist_group("symbolic")
 
 

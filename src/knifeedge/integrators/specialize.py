@@ -45,6 +45,7 @@ MODEL_FILES = {"erk": "erk_parts", "fixed": "fixed"}
 RHS_MARK = "# knifeedge:rhs"
 DRIVER_MARK = "# knifeedge:driver"
 NV_MARK = "# knifeedge:nv"
+NQ_MARK = "# knifeedge:nq"
 VARIANT_MARK = "# knifeedge:variant"
 N_MARK = "# knifeedge:n"
 EVENTS_MARK = "# knifeedge:event_values"
@@ -111,7 +112,7 @@ def _private_folder(path: Path) -> None:
 
 def kernel_source(template: str, variant, rhs_module: str, rhs_name: str, n_state: int, unroll: bool = True,
                   has_events: bool = False, driver: str = "knifeedge.integrators.templates.erk",
-                  n_events: int = 0) -> str:
+                  n_events: int = 0, n_constants: int = 1) -> str:
     """Text of the kernel module for a template specialized to ``rhs_module.rhs_name`` on ``n_state`` states.
 
     ``unroll=False`` keeps the template's generic loops over the tableau
@@ -119,7 +120,7 @@ def kernel_source(template: str, variant, rhs_module: str, rhs_name: str, n_stat
     defines ``n_events`` event functions (``EVENT_NAMES``, ``event_values(s,
     p)``), which the kernel then locates besides state components.  For
     ``erk`` the module holds the model's parts of the integrator, the module
-    ``driver`` (see :func:`driver_source`).
+    ``driver`` (see :func:`driver_source`); ``n_constants`` is the size of the model's ``constants(p)``.
     """
     if template not in TEMPLATES:
         raise ValueError(f"unknown kernel template {template!r}; known: {TEMPLATES}")
@@ -134,6 +135,9 @@ def kernel_source(template: str, variant, rhs_module: str, rhs_name: str, n_stat
         elif template == "erk" and line.startswith("NV =") and NV_MARK in line:
             line = f"NV = {int(n_events) if has_events else 0}  {NV_MARK}"
             seen.add(NV_MARK)
+        elif template == "erk" and line.startswith("NQ =") and NQ_MARK in line:
+            line = f"NQ = {int(n_constants)}  {NQ_MARK}"
+            seen.add(NQ_MARK)
         elif line.rstrip().endswith(RHS_MARK):
             line = f"from {rhs_module} import constants as _constants, {rhs_name} as _rhs  {RHS_MARK}"
             seen.add(RHS_MARK)
@@ -149,7 +153,7 @@ def kernel_source(template: str, variant, rhs_module: str, rhs_name: str, n_stat
             line = f"N = {n_state}  {N_MARK}"
             seen.add(N_MARK)
         out.append(line)
-    if seen != {RHS_MARK, VARIANT_MARK, N_MARK, EVENTS_MARK} | ({DRIVER_MARK, NV_MARK} if template == "erk" else set()):
+    if seen != {RHS_MARK, VARIANT_MARK, N_MARK, EVENTS_MARK} | ({DRIVER_MARK, NV_MARK, NQ_MARK} if template == "erk" else set()):
         raise RuntimeError(f"kernel template {template}.py lacks one of its {RHS_MARK!r}, {VARIANT_MARK!r}, "
                            f"{N_MARK!r}, {EVENTS_MARK!r} lines")
     if template == "fixed":
@@ -458,10 +462,20 @@ def load_kernel(template: str, variant, rhs_module: ModuleType, rhs_name: str, n
         driver = f"knifeedge_driver_{dstem}"
         _import(dstem, dsource, driver)
     source = kernel_source(template, variant, rhs_module.__name__, rhs_name, n_state, unroll,
-                           has_events=bool(names), driver=driver, n_events=len(names))
+                           has_events=bool(names), driver=driver, n_events=len(names),
+                           n_constants=_n_constants(rhs_module))
     key = _key(source, rhs_module.__file__)
     stem = f"{template}{variant}{'' if unroll else 'g'}_{rhs_module.__name__.rsplit('.', 1)[-1]}_{rhs_name}_{key}"
     return _import(stem, source, f"knifeedge_kernels.{stem}")
+
+
+def _n_constants(rhs_module: ModuleType) -> int:
+    """The size of ``rhs_module.constants(p)`` (run as plain Python on parameters all one)."""
+    import numpy as np
+
+    n_params = len(getattr(rhs_module, "PARAM_NAMES", ())) or 1
+    with np.errstate(all="ignore"):
+        return int(np.size(rhs_module.constants.py_func(np.ones(n_params))))
 
 
 def _import(stem: str, source: str, name: str) -> ModuleType:

@@ -100,14 +100,22 @@ def solve(fns, t0, t1, y0, f0, q, p, rtol, atol, h_init, max_step, t_eval, every
     ev = fns[3:5]
     ms = np.int64(1 if mode_scaled else 0)
     nq = np.int64(q.size)
-    K = np.empty((N_EXT, N))
-    y = np.empty(N)
+    # one workspace (see _workspace) that the model's parts see at fixed offsets: the compiler then knows the
+    # stages, the states and q never overlap (separate pointers could alias, and every store would force
+    # the reloads of q in the inlined right-hand sides)
+    ws = np.empty((N_EXT + 4 + DENSE_ROWS) * N + nq)
+    K = ws[:N_EXT * N].reshape((N_EXT, N))
+    o = N_EXT * N
+    y = ws[o:o + N]
+    y_new = ws[o + N:o + 2 * N]
+    work = ws[o + 2 * N:o + 3 * N]
+    scale = ws[o + 3 * N:o + 4 * N]
+    F = ws[o + 4 * N:o + (4 + DENSE_ROWS) * N].reshape((DENSE_ROWS, N))
+    qw = ws[o + (4 + DENSE_ROWS) * N:]
+    for i in range(nq):
+        qw[i] = q[i]
     for i in range(N):
         y[i] = y0[i]
-    y_new = np.empty(N)
-    work = np.empty(N)
-    scale = np.empty(N)
-    F = np.empty((DENSE_ROWS, N))
     fa = K[0]  # the derivatives at the ends of a step (views of the first and the last stage)
     fb = K[N_STAGES]
     # knifeedge:begin alloc
@@ -178,7 +186,7 @@ def solve(fns, t0, t1, y0, f0, q, p, rtol, atol, h_init, max_step, t_eval, every
             h = t_new - t
             h_abs = abs(h)
             # the stages, y_new, K[N_STAGES] and the scaled error norm: the model's part
-            err = call_f8(attempt, (t, h, t_new, rtol, ms, y, q, nq, K, y_new, work, scale, atol, pair))
+            err = call_f8(attempt, (t, h, t_new, rtol, ms, ws, nq, atol, pair))
             nfev += N_STAGES
             if err < 1.0:
                 if err == 0.0:
@@ -216,7 +224,7 @@ def solve(fns, t0, t1, y0, f0, q, p, rtol, atol, h_init, max_step, t_eval, every
                 any_flag = _c.screen(ga, gb, sa, sb, crit, n_crit, flag)
         if any_flag or (ie < t_eval.size and t_eval[ie] < t_new):
             # the interpolant of the step: F (DENSE_ROWS x N)
-            call_void(dense, (t, h, y, y_new, q, nq, K, F, work))
+            call_void(dense, (t, h, ws, nq))
             nfev += DENSE_NFEV
         if any_flag:
             n_ev = _c.locate(events, F, y, ALT, t, h, ga, gb, crit, n_crit, flag, xs, gs, ev_t, ev_k, n_ev)

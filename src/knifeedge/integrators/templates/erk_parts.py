@@ -28,6 +28,7 @@ from knifeedge.integrators.templates._stub import event_values as _event_values 
 TABLEAU = "DOP853"  # knifeedge:variant  (a registered ExplicitTableau, see knifeedge.integrators.tableau)
 N = 3  # knifeedge:n  (the state size, a compile-time constant so that the loops over it unroll)
 NV = 1  # knifeedge:nv  (the number of event functions)
+NQ = 2  # knifeedge:nq  (the size of constants(p))
 
 (A, C, E5, E3, DD, P, HAIRER, N_STAGES, N_EXT, DENSE_ROWS, ALT, ERROR_ORDER) = _tableau.erk_arrays(TABLEAU)
 
@@ -36,8 +37,14 @@ _I8 = types.int64
 _D = types.CPointer(types.float64)
 _L = types.CPointer(types.int64)
 RHS_SIG = types.void(_F8, _D, _D, _I8, _D)
-ATTEMPT_SIG = types.float64(_F8, _F8, _F8, _F8, _I8, _D, _D, _I8, _D, _D, _D, _D, _D, _L)
-DENSE_SIG = types.void(_F8, _F8, _D, _D, _D, _I8, _D, _D, _D)
+ATTEMPT_SIG = types.float64(_F8, _F8, _F8, _F8, _I8, _D, _I8, _D, _L)
+DENSE_SIG = types.void(_F8, _F8, _D, _I8)
+#: the integrator's workspace, in this order: K (N_EXT x N), y, y_new, work, scale (N each), F (DENSE_ROWS x N),
+#: then q (its size at run time); the parts take their arrays at these fixed offsets of the one pointer
+_O = N_EXT * N
+_OQ = _O + (4 + DENSE_ROWS) * N
+#: its size: a constant, so that every view of it is at an offset the compiler knows
+_WS = _OQ + NQ
 EVENTS_SIG = types.void(_D, _D, _I8, _D)
 
 
@@ -46,15 +53,16 @@ def rhs(t, yp, qp, nq, outp):
     _rhs(t, carray(yp, (N,)), carray(qp, (nq,)), carray(outp, (N,)))
 
 
-def attempt(t, h, t_new, rtol, mode_scaled, yp, qp, nq, Kp, ynp, wp, sp, ap, pairp):
+def attempt(t, h, t_new, rtol, mode_scaled, wsp, nq, ap, pairp):
     """One step from ``K[0] = f(t, y)``: the stages ``K[1 ..]``, ``y_new`` and ``K[N_STAGES] = f(t_new,
     y_new)``; returns the scaled norm of the error estimate (``scale`` is written too)."""
-    y = carray(yp, (N,))
-    q = carray(qp, (nq,))
-    K = carray(Kp, (N_EXT, N))
-    y_new = carray(ynp, (N,))
-    work = carray(wp, (N,))
-    scale = carray(sp, (N,))
+    ws = carray(wsp, (_WS,))
+    K = carray(wsp, (N_EXT, N))  # at the start of the workspace (a reshape would call numba's helper each time)
+    y = ws[_O:_O + N]
+    y_new = ws[_O + N:_O + 2 * N]
+    work = ws[_O + 2 * N:_O + 3 * N]
+    scale = ws[_O + 3 * N:_O + 4 * N]
+    q = ws[_OQ:]
     atol = carray(ap, (N,))
     pair = carray(pairp, (N,))
     # knifeedge:begin attempt
@@ -100,14 +108,15 @@ def attempt(t, h, t_new, rtol, mode_scaled, yp, qp, nq, Kp, ynp, wp, sp, ap, pai
     return err
 
 
-def dense(t, h, yp, ynp, qp, nq, Kp, Fp, wp):
+def dense(t, h, wsp, nq):
     """``F`` (``DENSE_ROWS`` x ``N``), the interpolant of the accepted step (DOP853: its extra stages first)."""
-    y = carray(yp, (N,))
-    y_new = carray(ynp, (N,))
-    q = carray(qp, (nq,))
-    K = carray(Kp, (N_EXT, N))
-    F = carray(Fp, (DENSE_ROWS, N))
-    work = carray(wp, (N,))
+    ws = carray(wsp, (_WS,))
+    K = carray(wsp, (N_EXT, N))  # at the start of the workspace (a reshape would call numba's helper each time)
+    y = ws[_O:_O + N]
+    y_new = ws[_O + N:_O + 2 * N]
+    work = ws[_O + 2 * N:_O + 3 * N]
+    F = ws[_O + 4 * N:_OQ].reshape((DENSE_ROWS, N))
+    q = ws[_OQ:]
     # knifeedge:begin dense
     if HAIRER:
         for s in range(N_STAGES + 1, N_EXT):
@@ -173,7 +182,10 @@ def arguments(t0, t1, y0, f0, p, *rest) -> tuple:
     """The integrator's arguments for the arguments of :func:`solve`."""
     if y0.size != N:
         raise ValueError("the initial state does not have the size this kernel was specialized to")
-    return (parts(), t0, t1, y0, f0, _constants(p), p) + rest
+    q = _constants(p)
+    if q.size != NQ:
+        raise ValueError(f"constants(p) has {q.size} elements, not the {NQ} this kernel was specialized to")
+    return (parts(), t0, t1, y0, f0, q, p) + rest
 
 
 def argument_types(args: tuple) -> tuple:
