@@ -25,7 +25,9 @@ Two measures of the time spent outside integration, for each configuration with 
   cent either way (``overhead_cpu_direct`` does not).
 
 Each repeat measures ``cpu_integration`` again, then every configuration; the rows are the medians over the
-repeats (``repeats`` holds every measurement), with the 1-minute load average of the machine before and after.
+repeats (``repeats`` holds every measurement), with the 1-minute load average of the machine before and after
+(the sweep's own processes included), and the best wall time of each (other work on a shared machine only ever
+adds time: a third busy process on 2 cores takes most of what a second worker would gain).
 """
 from __future__ import annotations
 
@@ -183,6 +185,10 @@ def _median_row(rows: list) -> dict:
     out = dict(rows[0])
     for k in _MEDIAN_KEYS:
         out[k] = float(np.median([r[k] for r in rows]))
+    best = min(rows, key=lambda r: r["wall_s"])  # other work on the machine only ever adds time
+    out["best_wall_s"] = best["wall_s"]
+    out["best_overhead_wall"] = best["overhead_wall"]
+    out["best_overhead_cpu_direct"] = best["overhead_cpu_direct"]
     out["load_avg_1min"] = [min(r["load_avg_1min_before"] for r in rows), max(r["load_avg_1min_after"] for r in rows)]
     for k in ("load_avg_1min_before", "load_avg_1min_after"):
         out.pop(k)
@@ -239,6 +245,7 @@ def main(argv=None) -> int:
         results["rows"].append(_median_row([r for r in results["repeats"] if r["config"] == name]))
     one, two = results["rows"][0], results["rows"][1]
     results["speedup_2_vs_1"] = one["wall_s"] / two["wall_s"]
+    results["speedup_2_vs_1_best"] = one["best_wall_s"] / two["best_wall_s"]
     ones = [r for r in results["repeats"] if r["config"] == one["config"]]
     twos = [r for r in results["repeats"] if r["config"] == two["config"]]
     results["speedup_2_vs_1_all"] = [a["wall_s"] / b["wall_s"] for a, b in zip(ones, twos)]
@@ -248,7 +255,8 @@ def main(argv=None) -> int:
               f"CPU {100 * r['overhead_cpu_direct']:5.1f} % ({100 * r['overhead_cpu']:5.1f} % against the runs alone)"
               f"  (sweep process {r['cpu_parent_s']:.2f} CPU s, workers {r['cpu_workers_s']:.2f}, in runs "
               f"{r['cpu_in_runs_s']:.2f}; median of {r['repeats']})")
-    print(f"speed-up of 2 local workers over 1: {results['speedup_2_vs_1']:.2f}x "
+    print(f"speed-up of 2 local workers over 1: {results['speedup_2_vs_1']:.2f}x (medians), "
+          f"{results['speedup_2_vs_1_best']:.2f}x (best walls) "
           f"(each repeat: {', '.join(f'{x:.2f}' for x in results['speedup_2_vs_1_all'])})")
     args.out.parent.mkdir(parents=True, exist_ok=True)
     args.out.write_text(json.dumps(results, indent=1) + "\n")

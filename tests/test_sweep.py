@@ -233,6 +233,8 @@ def test_row_checksums_are_those_of_earlier_versions():
     before = checksum({**row, "reversal_times": times}, tuple(row))
     times.append(3.0)  # a list changed in place is written anew
     assert checksum({**row, "reversal_times": times}, tuple(row)) != before
+    for r in ({**row, "reversal_times": None}, {**row, "reversal_times": [4.0]}, {**row, "reversal_times": None}):
+        assert checksum(r, tuple(r)) == definition(r, tuple(r))
 
 
 def test_sweeping_a_model_needs_params_state_and_span():
