@@ -53,9 +53,12 @@ from knifeedge.sweep import run_one
 
 _SWEEP = importlib.import_module("knifeedge.sweep")
 _RUN_ONE = _SWEEP.run_one
-#: CPU seconds inside run_one, shared with the local workers forked from this process (None in a Dask worker)
+#: CPU seconds inside run_one of each local worker forked from this process, one slot each, written without a lock
+#: (a lock shared by the workers stalls one whenever the other is preempted holding it); None in a Dask worker
 _SHARED = None
-_IN_RUNS = 0.0  # the same in a Dask worker
+_SLOTS_USED = None
+_MINE = [None, None, 0.0]  # this process: its pid, its slot, its total
+_IN_RUNS = 0.0  # in a Dask worker
 
 
 def _timed_run_one(spec):
@@ -64,11 +67,15 @@ def _timed_run_one(spec):
     c = time.thread_time()
     out = _RUN_ONE(spec)
     dt = time.thread_time() - c
-    if _SHARED is not None:
-        with _SHARED.get_lock():
-            _SHARED.value += dt
-    else:
+    if _SHARED is None:
         _IN_RUNS += dt
+        return out
+    if _MINE[0] != os.getpid():  # the first run of this worker: a slot of its own
+        with _SLOTS_USED.get_lock():
+            _MINE[:] = [os.getpid(), _SLOTS_USED.value, 0.0]
+            _SLOTS_USED.value += 1
+    _MINE[2] += dt
+    _SHARED[_MINE[1]] = _MINE[2]
     return out
 
 
@@ -128,19 +135,20 @@ def _children_cpu() -> float:
 
 
 def _measure(name: str, n_workers: int, points: list, cpu_integration: float, executor=None, client=None) -> dict:
-    global _SHARED
+    global _SHARED, _SLOTS_USED
     run = RUN.with_(fidelity="full")
     _SHARED = None
     if client is not None:
         client.run(_install_timer)
-    else:
-        _SHARED = multiprocessing.Value("d", 0.0)  # inherited by the workers forked for this sweep
+    else:  # inherited by the workers forked for this sweep
+        _SHARED = multiprocessing.Array("d", 256, lock=False)
+        _SLOTS_USED = multiprocessing.Value("i", 0)
     _SWEEP.run_one = _timed_run_one
     try:
         row = _sweep(name, n_workers, points, cpu_integration, executor, run)
     finally:
         _SWEEP.run_one = _RUN_ONE
-    in_runs = sum(client.run(_read_timer).values()) if client is not None else _SHARED.value
+    in_runs = sum(client.run(_read_timer).values()) if client is not None else sum(_SHARED[:_SLOTS_USED.value])
     cpu_total = row["cpu_parent_s"] + row["cpu_workers_s"]
     row["cpu_in_runs_s"] = in_runs
     row["overhead_cpu_direct"] = 1.0 - in_runs / cpu_total
