@@ -153,6 +153,7 @@ def test_a_cold_machine_compiles_in_a_separate_process(tmp_path):
     assert out2.returncode == 0, out2.stderr
     second = json.loads(out2.stdout)
     assert second["before"] is True, out2.stderr  # compiled by the background process
+    assert not list((tmp_path / "kernels" / "kernels").glob("*.log"))  # a compile that succeeded leaves no log
     assert "compiling" not in out2.stderr
     assert second["nsteps"] == first["nsteps"]
     np.testing.assert_allclose(second["y"], first["y"], rtol=1e-12, atol=1e-14)

@@ -192,6 +192,11 @@ def _main() -> int:
         if Path(module.__file__) != path:
             raise RuntimeError(f"the kernel of this process is {module.__file__}, not {path}")
         compile_types(module, pickle.loads(base64.b64decode(job["types"])))
+        try:  # compiled: nothing to report, so no log is left beside the kernel (before the lock goes)
+            if _log(path).stat().st_size == 0:
+                _log(path).unlink()
+        except OSError:
+            pass
     finally:
         lock = _lock(path)
         try:
