@@ -1,22 +1,28 @@
 """Specialize a kernel template to one generated model and cache the compiled result.
 
-A kernel module is the template's text with its ``# knifeedge:rhs`` line
+A kernel module is a template's text with its ``# knifeedge:rhs`` line
 replaced by an import of the model's right-hand side, its
 ``# knifeedge:variant`` line by the chosen variant and its ``# knifeedge:n``
 line by the state size (a compile-time constant, so LLVM unrolls the loops
-over the state).  In the adaptive template, the blocks between
+over the state).  For the adaptive methods the kernel module is the model's
+parts (``templates/erk_parts.py``: ``# knifeedge:nv`` and ``# knifeedge:nq``
+become its number of event functions and the size of its ``constants(p)``,
+``# knifeedge:driver`` the import of the integrator), and the blocks between
 ``# knifeedge:begin NAME`` and ``# knifeedge:end NAME`` (``attempt``: the
-stages of a step; ``error``: the error norm; ``dense``: the interpolant;
-``power``: the step-size controller's power) are replaced by straight-line
-code with the tableau's coefficients as literals.  The error norm and the
-dense output sum in the generic loop's order; the stages of a step are summed
-as ``y + (h a_0) K_0 + ...`` so that fused multiply-adds shorten the chain of
-dependent operations (the results differ from SciPy's ``y + h (a_0 K_0 + ...)`` by round-off).  It is written once to
-``<cache>/kernels/`` under a name carrying a hash of everything it depends on
-(template and helper sources, the generated module's source, numba and
-Python versions), imported from there, and its ``@njit(cache=True)``
-functions keep their machine code in the ``__pycache__`` beside it, so a
-second process loads instead of compiling.
+stages of a step; ``error``: the error norm; ``dense``: the interpolant)
+are replaced by straight-line code with the tableau's coefficients as
+literals.  The error norm and the dense output sum in the generic loop's
+order; the stages of a step are summed as ``y + (h a_0) K_0 + ...`` so that
+fused multiply-adds shorten the chain of dependent operations (the results
+differ from SciPy's ``y + h (a_0 K_0 + ...)`` by round-off).  The integrator
+they serve (``templates/erk.py``, one per method for every model, its
+``power`` block the step-size controller's power) is written by
+:func:`driver_source`.  Each module is written once to ``<cache>/kernels/``
+under a name carrying a hash of everything it depends on (template and
+helper sources, the generated module's source, numba and Python versions),
+imported from there, and its ``cache=True`` functions keep their machine
+code in the ``__pycache__`` beside it, so a second process loads instead of
+compiling.
 
 The cache directory is ``$KNIFEEDGE_CACHE_DIR`` if set, else
 ``$XDG_CACHE_HOME/knifeedge`` (default ``~/.cache/knifeedge``); when that is

@@ -100,9 +100,8 @@ def solve(fns, t0, t1, y0, f0, q, p, rtol, atol, h_init, max_step, t_eval, every
     ev = fns[3:5]
     ms = np.int64(1 if mode_scaled else 0)
     nq = np.int64(q.size)
-    # one workspace (see _workspace) that the model's parts see at fixed offsets: the compiler then knows the
-    # stages, the states and q never overlap (separate pointers could alias, and every store would force
-    # the reloads of q in the inlined right-hand sides)
+    # one workspace laid out as erk_parts.py reads it (K, y, y_new, work, scale, F, then q): the model's parts
+    # take their arrays at fixed offsets of one pointer, so the compiler can tell them apart
     ws = np.empty((N_EXT + 4 + DENSE_ROWS) * N + nq)
     K = ws[:N_EXT * N].reshape((N_EXT, N))
     o = N_EXT * N

@@ -40,7 +40,7 @@ RHS_SIG = types.void(_F8, _D, _D, _I8, _D)
 ATTEMPT_SIG = types.float64(_F8, _F8, _F8, _F8, _I8, _D, _I8, _D, _L)
 DENSE_SIG = types.void(_F8, _F8, _D, _I8)
 #: the integrator's workspace, in this order: K (N_EXT x N), y, y_new, work, scale (N each), F (DENSE_ROWS x N),
-#: then q (its size at run time); the parts take their arrays at these fixed offsets of the one pointer
+#: then q (NQ); the parts take their arrays at these fixed offsets of the one pointer
 _O = N_EXT * N
 _OQ = _O + (4 + DENSE_ROWS) * N
 #: its size: a constant, so that every view of it is at an offset the compiler knows
