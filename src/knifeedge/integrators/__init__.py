@@ -72,9 +72,7 @@ def kernel(model, method: str):
     takes seconds, and says so in one line on stderr; later uses, in any
     process, load the machine code from the cache (:func:`cache_dir`).
     """
-    spec = COMPILED_METHODS[ALIASES.get(method, method)]
-    rhs_name = "rhs_pose_q_into" if model.pose else "rhs_q_into"
-    key = (model.module.__name__, rhs_name, spec.template, spec.variant)
+    spec, rhs_name, key = _identity(model, method)
     if key not in _KERNELS:
         module = kernel_module(model, method)
         solve = module.solve
@@ -88,8 +86,7 @@ def kernel(model, method: str):
 def kernel_module(model, method: str):
     """The kernel module of ``method`` for ``model`` (written and imported, compiled or not: its ``solve``
     compiles at its first call unless the cache holds it, see :func:`kernel_compiled`)."""
-    spec = COMPILED_METHODS[ALIASES.get(method, method)]
-    rhs_name = "rhs_pose_q_into" if model.pose else "rhs_q_into"
+    spec, rhs_name, _ = _identity(model, method)
     return load_kernel(spec.template, spec.variant, model.module, rhs_name, model.n_state)
 
 
@@ -100,9 +97,14 @@ def kernel_compiled(model, method: str) -> bool:
 
 def use_compiled(model, method: str) -> None:
     """Forget a first-call notice of the kernel of ``method`` for ``model`` (it was compiled elsewhere)."""
+    _KERNELS[_identity(model, method)[2]] = kernel_module(model, method).solve
+
+
+def _identity(model, method: str) -> tuple:
+    """``(spec, rhs_name, key)``: the method, the right-hand side its kernel calls, and the kernel's key."""
     spec = COMPILED_METHODS[ALIASES.get(method, method)]
     rhs_name = "rhs_pose_q_into" if model.pose else "rhs_q_into"
-    _KERNELS[(model.module.__name__, rhs_name, spec.template, spec.variant)] = kernel_module(model, method).solve
+    return spec, rhs_name, (model.module.__name__, rhs_name, spec.template, spec.variant)
 
 
 def _announced(solve, label: str):

@@ -43,36 +43,28 @@ def _check(args):
             raise TypeError(f"fnptr: arrays must be C-contiguous, got {ty}")
 
 
-@intrinsic
-def call_f8(typingctx, address, args):
-    """``call_f8(address, (a, b, ...))``: call the ``double f(...)`` at ``address`` and return its value."""
-    _check(args)
-    sig = types.float64(address, args)
-
+def _call_through(args, returns):
+    """The codegen of a call through an address, of the LLVM function type returning ``returns``."""
     def codegen(context, builder, signature, llargs):
         addr, tup = llargs
         values = cgutils.unpack_tuple(builder, tup, len(args))
         vals, tys = _lower_args(context, builder, args.types, values)
-        fnty = ir.FunctionType(ir.DoubleType(), tys)
-        fn = builder.inttoptr(addr, fnty.as_pointer())
-        return builder.call(fn, vals)
+        fn = builder.inttoptr(addr, ir.FunctionType(returns, tys).as_pointer())
+        out = builder.call(fn, vals)
+        return out if returns != ir.VoidType() else context.get_dummy_value()
 
-    return sig, codegen
+    return codegen
+
+
+@intrinsic
+def call_f8(typingctx, address, args):
+    """``call_f8(address, (a, b, ...))``: call the ``double f(...)`` at ``address`` and return its value."""
+    _check(args)
+    return types.float64(address, args), _call_through(args, ir.DoubleType())
 
 
 @intrinsic
 def call_void(typingctx, address, args):
     """``call_void(address, (a, b, ...))``: call the ``void f(...)`` at ``address``."""
     _check(args)
-    sig = types.none(address, args)
-
-    def codegen(context, builder, signature, llargs):
-        addr, tup = llargs
-        values = cgutils.unpack_tuple(builder, tup, len(args))
-        vals, tys = _lower_args(context, builder, args.types, values)
-        fnty = ir.FunctionType(ir.VoidType(), tys)
-        fn = builder.inttoptr(addr, fnty.as_pointer())
-        builder.call(fn, vals)
-        return context.get_dummy_value()
-
-    return sig, codegen
+    return types.none(address, args), _call_through(args, ir.VoidType())
