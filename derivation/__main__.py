@@ -14,7 +14,7 @@ import tempfile
 import time
 from pathlib import Path
 
-from .cli import ROOT, DeriveError, derive_specs, load_specs, project_specs
+from .cli import MANIFEST, ROOT, DeriveError, derive_specs, load_specs, manifest_text, project_specs
 from .emit import write_all
 
 
@@ -39,14 +39,19 @@ def main(argv=None) -> int:
     systems = derive_specs(specs, check=bool(args.files), log=lambda s: print(s, file=sys.stderr))
     for path in write_all(args.out, systems, registry=not args.files):
         print(f"wrote {path}", file=sys.stderr)
+    if not args.files:  # the package's models: what they were derived from, checked by the tests without deriving
+        manifest = args.out / MANIFEST
+        manifest.write_text(manifest_text(args.out))
+        print(f"wrote {manifest}", file=sys.stderr)
     print(f"done in {time.perf_counter() - start:.1f} s", file=sys.stderr)
     return 0
 
 
 def compare(checked_in: Path, fresh: Path) -> int:
-    """0 if the ``*.py`` files of both folders are identical, else print a diff and the remedy and return 1."""
-    old = {p.name: p for p in checked_in.glob("*.py")}
-    new = {p.name: p for p in fresh.glob("*.py")}
+    """0 if the ``*.py`` files and the manifest of both folders are identical, else print a diff and the remedy and
+    return 1."""
+    old = {p.name: p for p in [*checked_in.glob("*.py"), checked_in / MANIFEST] if p.is_file()}
+    new = {p.name: p for p in [*fresh.glob("*.py"), fresh / MANIFEST] if p.is_file()}
     problems = [f"only in {checked_in}: {n}" for n in sorted(set(old) - set(new))]
     problems += [f"missing from {checked_in}: {n}" for n in sorted(set(new) - set(old))]
     for name in sorted(set(old) & set(new)):

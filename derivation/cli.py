@@ -14,6 +14,7 @@ deriving a model names the deepest line of the user's file involved.
 """
 from __future__ import annotations
 
+import hashlib
 import importlib.util
 import sys
 import traceback
@@ -81,6 +82,58 @@ def project_specs() -> list:
 
     specs = list(models.MODELS.values()) + [RIGID_MODELS[k] for k in sorted(RIGID_MODELS)]
     return specs + [s for f in EXAMPLE_MODELS if (ROOT / f).is_file() for s in load_specs(ROOT / f)]
+
+
+#: the file ``make derive`` writes beside the generated modules: what they were derived from, and what was written
+MANIFEST = "MANIFEST.sha256"
+
+
+def _sha256(path: Path) -> str:
+    return hashlib.sha256(path.read_bytes()).hexdigest()
+
+
+def manifest_text(generated: Path, root: Path = ROOT) -> str:
+    """The manifest of the folder ``generated`` derived from the source tree ``root``.
+
+    One line per file, as ``sha256sum`` writes them (``sha256sum -c`` checks it from ``root``): every source
+    of the derivation (``derivation/*.py``, the example models of :data:`EXAMPLE_MODELS`), then every generated
+    module; the first line names the SymPy version.  A derivation source changed since ``make derive``, or a
+    generated module edited by hand, no longer matches its line (:func:`manifest_mismatches`); this check reads
+    files only, where the full one (``make check-generated``) derives everything again.
+    """
+    import sympy
+
+    sources = sorted((root / "derivation").glob("*.py")) + [root / f for f in EXAMPLE_MODELS if (root / f).is_file()]
+    written = sorted(generated.glob("*.py"))
+    lines = [f"# sympy {sympy.__version__}"]
+    lines += [f"{_sha256(f)}  {f.relative_to(root).as_posix()}" for f in sources]
+    lines += [f"{_sha256(f)}  generated/{f.name}" for f in written]
+    return "\n".join(lines) + "\n"
+
+
+def manifest_mismatches(generated: Path, root: Path = ROOT) -> list:
+    """What differs between ``generated``'s manifest and the files it names now (empty: nothing does)."""
+    path = generated / MANIFEST
+    if not path.is_file():
+        return [f"{path} is missing"]
+
+    def entries(text: str) -> dict:
+        out = {}
+        for line in text.splitlines():
+            digest, _, name = line.partition("  ")
+            out[name or digest] = digest if name else ""
+        return out
+
+    recorded, now = entries(path.read_text()), entries(manifest_text(generated, root))
+    problems = []
+    for name in sorted(set(recorded) | set(now)):
+        if name not in now:
+            problems.append(f"{name}: named by the manifest, absent now")
+        elif name not in recorded:
+            problems.append(f"{name}: present, not in the manifest")
+        elif recorded[name] != now[name]:
+            problems.append(f"{name}: changed since the manifest was written")
+    return problems
 
 
 def derive_specs(specs, check: bool = True, log=None) -> dict:

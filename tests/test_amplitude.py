@@ -126,6 +126,7 @@ def test_averaging_refuses_resonant_modes(systems):
 
 
 @pytest.mark.parametrize("key", sorted(MODULES))
+@pytest.mark.slow
 def test_generated_rhs_equals_its_sympy_source(systems, key):
     """The printed code evaluates to the expressions it was printed from (at random points,
     parameters away from 1 so that e.g. x/L**2 printed as x/L*L would be caught)."""

@@ -353,6 +353,7 @@ def test_drawing_refuses_inconsistent_descriptions():
     assert "def body_points(s, p)" in src and "def body_outlines(s, p, uu)" in src and "DRAWING = {" in src
 
 
+@pytest.mark.slow
 def test_rerun_with_the_pose_keeps_the_scenes_reversal_times():
     """The pose is left out of the error control, so even the ill-conditioned later two-mode reversals of the
     drawn run are those of the scene's own run."""
@@ -469,6 +470,7 @@ def test_rolling_disk_drawing_is_the_disk_at_its_pose():
     assert m.module.DRAWING["gauge"] == "q1_dot" and m.module.DRAWING["magnify"] == ("q2",)
 
 
+@pytest.mark.slow
 def test_drawn_rigid_bodies_roll_without_slipping():
     """Along runs with the pose, the drawn points move as a rigid body about the contact at rest: the velocity of
     any drawn point (finite differences) is omega x (P - C).  Disk: omega = q1_dot z + q2_dot u_q1 + q3_dot axle

@@ -248,6 +248,7 @@ def test_cli_takes_the_step_and_the_step_budget(capsys):
     assert "20 steps" in out and "maximum number of solver steps" in err
 
 
+@pytest.mark.slow
 def test_cli_set_takes_the_run_settings_its_help_lists(tmp_path, capsys):
     """`scene --set` says it takes method and fidelity: they are text, not numbers."""
     from knifeedge.cli import assignments, grid_assignments

@@ -96,6 +96,7 @@ def test_run_that_ends_first_does_not_wait(monkeypatch, capsys):
     assert (np.abs(r.y - ref.y).max(axis=1) <= 1e-7 * np.abs(ref.y).max(axis=1)).all()
 
 
+@pytest.mark.slow
 def test_methods_without_a_scipy_twin_and_mode_control_wait(background, capsys):
     """Tsit5, fixed-step methods and ``error_control="mode"`` compile in the calling process (as "wait")."""
     m, p, y0 = _two_mode()
@@ -134,6 +135,7 @@ print(json.dumps({"before": before, "y": r.y[:, -1].tolist(), "nsteps": r.nsteps
 """
 
 
+@pytest.mark.slow
 def test_a_cold_machine_compiles_in_a_separate_process(tmp_path):
     """Empty caches: the run answers without the kernel, a separate process leaves it compiled in the cache,
     and the answer equals the compiled kernel's (Chaplygin sleigh, paper section II.C)."""

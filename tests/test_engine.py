@@ -14,7 +14,8 @@ from knifeedge.derive.verify import is_zero, tilt_order
 pytestmark = pytest.mark.xdist_group("symbolic")
 
 
-@pytest.mark.parametrize("name", sorted({m for m, _ in MODULES}))
+@pytest.mark.parametrize("name", [n if n in ("single_mode", "two_mode") else pytest.param(n, marks=pytest.mark.slow)
+                                  for n in sorted({m for m, _ in MODULES})])
 def test_reduced_equations_hold_at_a_general_pose(name, systems):
     """Evaluating at phi = x = y = 0 after differentiating is exact: at a random pose, the
     unreduced Lagrange equations with multipliers (solved as a DAE at 30 digits) give the same
@@ -39,6 +40,7 @@ def test_reduced_fidelity_is_the_degree_2_truncation(name, systems):
     assert ORDER == 2
 
 
+@pytest.mark.slow
 def test_mass_matrix_and_explicit_forms_agree(systems):
     for (name, fid), s in systems.items():
         if fid != "full" or isinstance(s, RollingSystem):  # rigid bodies (square roots): test_rigid.py, numerically

@@ -69,7 +69,8 @@ def _pairs_inside_one_step(times, steps):
     return int(np.sum(idx[1:] == idx[:-1]))
 
 
-@pytest.mark.parametrize("method,h", [("DOP853", None), ("DP54", None), ("Tsit5", None), ("RK4", 0.05)])
+@pytest.mark.parametrize("method,h", [("DOP853", None), pytest.param("DP54", None, marks=pytest.mark.slow),
+                                      pytest.param("Tsit5", None, marks=pytest.mark.slow), pytest.param("RK4", 0.05, marks=pytest.mark.slow)])
 def test_two_crossings_of_a_state_inside_one_step(method, h):
     """w_ = W0 - sin(2t)/2 with W0 = 0.4999 is below zero only for |t - pi/4 - k pi| < 0.01: both crossings
     of each dip fall inside one step (the step ends have the same sign), and are found to the tolerance
@@ -192,7 +193,8 @@ def sleigh(tmp_path_factory):
     return ke.load("damped_sleigh", path=out)
 
 
-@pytest.mark.parametrize("method,kw", [("DOP853", {}), ("DP54", {}), ("RK4", {"h": 0.01}), ("scipy:DOP853", {})])
+@pytest.mark.parametrize("method,kw", [("DOP853", {}), pytest.param("DP54", {}, marks=pytest.mark.slow),
+                                       pytest.param("RK4", {"h": 0.01}, marks=pytest.mark.slow), ("scipy:DOP853", {})])
 def test_event_functions_of_a_model_are_located_by_every_method(sleigh, method, kw):
     """simulate(..., events=("heading_speed",)) locates the zero of the model's event function phi_dot - v
     (the turning rate falls to the speed as the damping slows the turn): where it is reported, the state

@@ -24,8 +24,45 @@ def fresh(tmp_path_factory):
     return out
 
 
+def test_generated_matches_its_manifest():
+    """Nothing changed since make derive: every derivation source and generated module has the SHA-256 that
+    make derive recorded in generated/MANIFEST.sha256 (reads files only; the slow test below derives again)."""
+    from knifeedge.derive.cli import manifest_mismatches
+
+    problems = manifest_mismatches(ROOT / "generated")
+    assert not problems, "generated/ is stale or edited by hand: run make derive\n" + "\n".join(problems)
+
+
+def test_manifest_reports_an_edited_module_and_a_changed_source(tmp_path):
+    """The manifest check fails when a generated module or a derivation source differs by one byte."""
+    import shutil
+
+    from knifeedge.derive.cli import EXAMPLE_MODELS, MANIFEST, manifest_mismatches
+
+    for sub in ("derivation", "generated"):
+        shutil.copytree(ROOT / sub, tmp_path / sub, ignore=shutil.ignore_patterns("__pycache__"))
+    for f in EXAMPLE_MODELS:
+        (tmp_path / f).parent.mkdir(parents=True, exist_ok=True)
+        shutil.copy(ROOT / f, tmp_path / f)
+    assert manifest_mismatches(tmp_path / "generated", tmp_path) == []
+    module = tmp_path / "generated" / "two_mode_full.py"
+    module.write_text(module.read_text().replace("cos(", "sin(", 1))
+    source = tmp_path / "derivation" / "averaging.py"
+    source.write_text(source.read_text() + "\n")
+    assert manifest_mismatches(tmp_path / "generated", tmp_path) == [
+        "derivation/averaging.py: changed since the manifest was written",
+        "generated/two_mode_full.py: changed since the manifest was written"]
+    (tmp_path / "generated" / MANIFEST).unlink()
+    assert "is missing" in manifest_mismatches(tmp_path / "generated", tmp_path)[0]
+
+
+@pytest.mark.slow
+@pytest.mark.xdist_group("derive")  # one worker derives `fresh` once for both tests that use it
 def test_generated_is_not_stale(fresh):
-    """A fresh derivation reproduces the checked-in generated/ byte for byte."""
+    """A fresh derivation reproduces the checked-in generated/ (and its manifest) byte for byte."""
+    from knifeedge.derive.cli import MANIFEST
+
+    assert (fresh / MANIFEST).read_text() == (ROOT / "generated" / MANIFEST).read_text(), "run make derive"
     checked_in = sorted(p.name for p in (ROOT / "generated").glob("*.py"))
     regenerated = sorted(p.name for p in fresh.glob("*.py"))
     assert checked_in == regenerated, f"generated/ holds {checked_in}, derivation writes {regenerated}: run make derive"
@@ -40,6 +77,7 @@ def test_generated_is_not_stale(fresh):
 
 
 @pytest.mark.slow
+@pytest.mark.xdist_group("derive")
 def test_derivation_is_deterministic_under_any_hash_seed(fresh, tmp_path):
     """make derive pins PYTHONHASHSEED=0; the output does not depend on it anyway."""
     _derive(tmp_path, seed="12345")

@@ -18,7 +18,8 @@ from knifeedge.derive.engine import ReducedSystem
 from knifeedge.generated import MODULES
 
 # the session's symbolic derivation of every model (`systems`) is built once, in one test worker
-pytestmark = pytest.mark.xdist_group("symbolic")
+# every generated module against the derivation it was printed from: symbolic work, in the slow checks
+pytestmark = [pytest.mark.xdist_group("symbolic"), pytest.mark.slow]
 
 #: every generated module, from the registry (a new model is checked without editing this file)
 KEYS = [f"{m}/{f}" for m, f in sorted(MODULES)]

@@ -120,8 +120,8 @@ def test_pose_model_matches_scipy():
 
 
 # -- fixed-step methods: orders and reversibility --------------------------------
-@pytest.mark.parametrize("method,h,order", [("RK4", 0.05, 4), ("implicit_midpoint", 0.025, 2),
-                                            ("gauss4", 0.1, 4), ("gauss6", 0.2, 6)])
+@pytest.mark.parametrize("method,h,order", [("RK4", 0.05, 4), pytest.param("implicit_midpoint", 0.025, 2, marks=pytest.mark.slow),
+                                            ("gauss4", 0.1, 4), pytest.param("gauss6", 0.2, 6, marks=pytest.mark.slow)])
 def test_fixed_step_order(method, h, order):
     """Halving the step divides the global error by 2^order (single mode, large tilt: nonlinear)."""
     m, p = _single()
@@ -165,6 +165,7 @@ def test_first_two_mode_reversal():
     assert abs(r.reversal_times[0] / lsoda.reversal_times[0] - 1) < 1e-6
 
 
+@pytest.mark.slow
 def test_later_reversals_need_the_small_mode_kept_accurate():
     """Between reversals the inactive tilt mode decays by ~12 orders of magnitude, so later reversal
     times depend on how accurately it is kept.  Two independent converged answers agree to 3e-4
@@ -342,6 +343,7 @@ def test_temporary_cache_folder_is_private_and_a_foreign_one_is_refused(tmp_path
         specialize.cache_dir()
 
 
+@pytest.mark.slow
 def test_a_damaged_kernel_cache_file_is_discarded_and_compiled_again(tmp_path):
     """Issue: a truncated .nbi/.nbc of the kernel cache is detected, removed, recompiled, said in one line."""
     code = (

@@ -39,7 +39,7 @@ def _random_states(rng, k):
 
 
 @pytest.mark.parametrize("preset, sigma", [("kane_levinson_1982", 0.0), ("kane_levinson_1982", 1e-4),
-                                           ("schoemer", 0.0)])
+                                           pytest.param("schoemer", 0.0, marks=pytest.mark.slow)])
 def test_rhs_and_energy_match_newton_euler(m, preset, sigma):
     """Generated right-hand side and energy against the independent Newton--Euler formulation at random states."""
     p = m.preset(preset, sigma=sigma)
@@ -352,6 +352,7 @@ def test_rigid_knife_edge_linear_frequencies_include_the_missing_potential():
     np.testing.assert_allclose(got, want, rtol=1e-7)
 
 
+@pytest.mark.slow
 def test_knife_edge_rigid_scene_reports_the_comparison():
     """Scene knife_edge_rigid (section III, Fig. sketch_2modes; Twomodes.lagrangian in derivation/published.py).
 

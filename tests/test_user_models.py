@@ -85,7 +85,8 @@ def test_energy_plus_dissipated_work_is_constant(derived):
     assert np.max(np.abs(r.energy + work - m.energy(y0, p))) < 1e-7
 
 
-@pytest.mark.parametrize("method", sorted(ke.METHODS))
+@pytest.mark.parametrize("method", [m if m == "DOP853" or m.startswith("scipy:") else pytest.param(m, marks=pytest.mark.slow)
+                                    for m in sorted(ke.METHODS)])
 def test_every_method_runs_a_model_from_a_path(derived, method):
     m = ke.load("damped_sleigh", path=derived, pose=True)
     fixed = method in COMPILED_METHODS and COMPILED_METHODS[method].fixed_step

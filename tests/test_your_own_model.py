@@ -14,6 +14,8 @@ import re
 import shlex
 from pathlib import Path
 
+import pytest
+
 from knifeedge.cli import main
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -36,6 +38,7 @@ def test_the_doc_builds_the_example_file():
     assert _squeeze("\n".join(pieces)) == _squeeze(EXAMPLE.read_text())
 
 
+@pytest.mark.slow
 def test_the_doc_runs_from_an_empty_folder(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     (tmp_path / "rolling_disk.py").write_text("\n".join(_blocks("python file=rolling_disk.py")))
