@@ -1,6 +1,6 @@
 """A newcomer's first run: ``knifeedge demo`` and ``knifeedge figures`` with every cache empty, then warm.
 
-``python -m benchmarks.first_run [--repeats 3] [--skip-figures] [--out benchmarks/results]``
+``python -m benchmarks.first_run [--repeats 3] [--skip-figures] [--test-command] [--out benchmarks/results]``
 
 Each cold run gets fresh, empty folders for the compiled kernels
 (``KNIFEEDGE_CACHE_DIR``) and for numba's cache of the generated modules
@@ -11,6 +11,11 @@ it.  The warm runs reuse the caches of the last cold run.  Wall and CPU time
 (of the command and its children) are medians of the repeats; the load
 average before each run is recorded, as the machine may be shared.  Writes
 ``first_run.json``.
+
+``--test-command`` also times the README's test command (the set-up line that
+ends in ``pytest``: a virtual environment, the install, the tests) from a fresh
+clone of this repository's committed ``HEAD``, with empty caches, ``--repeats``
+times (a few minutes each).
 """
 from __future__ import annotations
 
@@ -68,11 +73,42 @@ def measure(command: list, repeats: int, work: Path) -> dict:
             "cold_over_warm_wall": round(med(cold, "wall_s") / med(warm, "wall_s"), 2)}
 
 
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def readme_test_command() -> str:
+    """The README's set-up command that installs the package and runs the tests."""
+    for line in (ROOT / "README.md").read_text().splitlines():
+        if line.startswith("    python3 -m venv") and line.rstrip().endswith("pytest"):
+            return line.strip()
+    raise RuntimeError("README.md has no set-up command ending in pytest")
+
+
+def measure_test_command(repeats: int, work: Path) -> dict:
+    command = readme_test_command()
+    rows = []
+    for k in range(repeats):
+        clone = Path(tempfile.mkdtemp(prefix="clone-", dir=work))
+        subprocess.run(["git", "clone", "-q", str(ROOT), str(clone / "knifeedge")], check=True)
+        if (ROOT.parent / "shared").exists():
+            (clone / "shared").symlink_to(ROOT.parent / "shared")
+        env = dict(os.environ, KNIFEEDGE_CACHE_DIR=str(clone / "kernels-cache"), NUMBA_CACHE_DIR=str(clone / "numba-cache"))
+        env.pop("KNIFEEDGE_COMPILE", None)
+        env.pop("VIRTUAL_ENV", None)
+        rows.append(_run(["bash", "-c", command], env, clone / "knifeedge"))
+        print(f"  cold {k + 1}/{repeats}: {rows[-1]}", flush=True)
+    return {"command": command, "cold": rows,
+            "cold_wall_median_s": round(statistics.median(r["wall_s"] for r in rows), 2),
+            "cold_cpu_median_s": round(statistics.median(r["cpu_s"] for r in rows), 2)}
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(prog="python -m benchmarks.first_run", description=__doc__.splitlines()[0])
     ap.add_argument("--out", type=Path, default=Path(__file__).resolve().parent / "results")
     ap.add_argument("--repeats", type=int, default=3)
     ap.add_argument("--skip-figures", action="store_true")
+    ap.add_argument("--test-command", action="store_true",
+                    help="also time the README's test command from a fresh clone (minutes per repeat)")
     args = ap.parse_args(argv)
     results = {"cpus": os.cpu_count()}
     with tempfile.TemporaryDirectory(prefix="knifeedge-first-run-") as tmp:
@@ -82,14 +118,23 @@ def main(argv=None) -> int:
         if not args.skip_figures:
             print("knifeedge figures", flush=True)
             results["figures"] = measure(["figures", "--out", str(work / "figures")], args.repeats, work)
+        if args.test_command:
+            print("the README's test command", flush=True)
+            results["test_command"] = measure_test_command(args.repeats, work)
     args.out.mkdir(parents=True, exist_ok=True)
-    (args.out / "first_run.json").write_text(json.dumps(results, indent=1) + "\n")
+    path = args.out / "first_run.json"
+    earlier = json.loads(path.read_text()) if path.is_file() else {}
+    # a partial run (--skip-figures) keeps the earlier figures of what it did not measure
+    path.write_text(json.dumps({**earlier, **results}, indent=1) + "\n")
     for key in ("demo", "figures"):
         if key in results:
             r = results[key]
             print(f"{r['command'].split(' --out')[0]}: cold {r['cold_wall_median_s']} s wall "
                   f"({r['cold_cpu_median_s']} s CPU), warm {r['warm_wall_median_s']} s wall "
                   f"({r['warm_cpu_median_s']} s CPU): {r['cold_over_warm_wall']}x")
+    if "test_command" in results:
+        r = results["test_command"]
+        print(f"README test command: cold {r['cold_wall_median_s']} s wall ({r['cold_cpu_median_s']} s CPU)")
     return 0
 
 

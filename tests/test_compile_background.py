@@ -54,8 +54,8 @@ def _two_mode():
     return m, p, y0
 
 
-@pytest.mark.parametrize("method", ["DOP853", "RK45"])
-@pytest.mark.parametrize("output", ["every step", "t_eval"])
+@pytest.mark.parametrize("method,output", [("DOP853", "every step"), ("DOP853", "t_eval"), ("RK45", "every step"),
+                                           pytest.param("RK45", "t_eval", marks=pytest.mark.slow)])
 def test_handover_takes_the_steps_of_the_compiled_run(background, method, output, capsys):
     """Two-mode knife edge (paper eqs_2modes, Fig. Numerical2), first reversal near t = 2396.7: the run
     begun by SciPy and finished by the kernel has the compiled run's steps, states and reversal."""

@@ -61,6 +61,7 @@ def test_gauss_tableaus_satisfy_collocation_conditions(s):
 
 # -- the compiled adaptive methods are SciPy's algorithms ------------------------
 @pytest.mark.parametrize("ours,theirs", [("DOP853", "scipy:DOP853"), ("DP54", "scipy:RK45"), ("RK45", "scipy:RK45")])
+@pytest.mark.xdist_group("dp54_tsit5")  # one worker compiles the DP54 and Tsit5 integrators for all such tests
 def test_adaptive_methods_take_scipys_steps(ours, theirs):
     """Same tableau, initial step and controller: the same steps and evaluations, and the same answer up to
     round-off (the error norms are summed in a different order, which moves step sizes by ~1e-7 for DP54)."""
@@ -299,7 +300,8 @@ def test_events_on_named_states_match_scipys_event_location():
         ke.simulate(m, TWO_Y0, (0.0, 1.0), p, events=("psi",))
 
 
-@pytest.mark.parametrize("method,kw", [("DOP853", {}), ("DP54", {}), ("RK4", {"h": 0.05}), ("gauss4", {"h": 0.1})])
+@pytest.mark.parametrize("method,kw", [("DOP853", {}), pytest.param("DP54", {}, marks=pytest.mark.slow), ("RK4", {"h": 0.05}),
+                                       pytest.param("gauss4", {"h": 0.1}, marks=pytest.mark.slow)])
 def test_a_run_in_chunks_takes_the_same_steps(monkeypatch, method, kw):
     """The kernels run at most CHUNK_STEPS accepted steps per call (so that Ctrl-C is answered between calls);
     the steps, the evaluations, the output and the events are those of one call, bit for bit."""

@@ -32,7 +32,8 @@ def _scene(name):
     return m, m.state(**SINGLE_Y0), m.params(**SINGLE), 300.0
 
 
-CASES = [("two", "DOP853", {}), ("single", "DP54", {}), ("single", "RK4", {"h": 0.05})]
+# DP54 shares DOP853's integrator (the slow checks run it); RK4 is the fixed-step one
+CASES = [("two", "DOP853", {}), pytest.param("single", "DP54", {}, marks=pytest.mark.slow), ("single", "RK4", {"h": 0.05})]
 
 
 @pytest.mark.parametrize("scene,method,kw", CASES)

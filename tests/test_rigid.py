@@ -40,6 +40,7 @@ def _random_states(rng, k):
 
 @pytest.mark.parametrize("preset, sigma", [("kane_levinson_1982", 0.0), ("kane_levinson_1982", 1e-4),
                                            pytest.param("schoemer", 0.0, marks=pytest.mark.slow)])
+@pytest.mark.xdist_group("celt")  # the presets share the celt's compiled functions: one worker compiles them
 def test_rhs_and_energy_match_newton_euler(m, preset, sigma):
     """Generated right-hand side and energy against the independent Newton--Euler formulation at random states."""
     p = m.preset(preset, sigma=sigma)

@@ -89,6 +89,7 @@ def _harmonic(method, rtol, **kw):
 
 
 @pytest.mark.parametrize("method,order", [("Tsit5", 5), ("DP54", 5), ("DOP853", 8)])
+@pytest.mark.xdist_group("dp54_tsit5")  # one worker compiles the DP54 and Tsit5 integrators for all such tests
 def test_adaptive_methods_converge_at_their_order(method, order):
     """Global error of q(10) = cos(20) against the number of evaluations: slope -order (within 30 %),
     measured between rtol 1e-7 and 1e-10; the zeros of q, cos(2t) = 0 at t = (2k+1) pi/4, are located too."""
@@ -103,7 +104,7 @@ def test_adaptive_methods_converge_at_their_order(method, order):
     assert 0.7 * order < slope < 1.3 * order + 1, (slope, errs, work)
 
 
-@pytest.mark.parametrize("method", ["Tsit5", "DP54", "DOP853"])
+@pytest.mark.parametrize("method", [pytest.param("Tsit5", marks=pytest.mark.slow), pytest.param("DP54", marks=pytest.mark.slow), "DOP853"])
 def test_generic_template_bodies_agree_with_the_unrolled_ones(method):
     """The template's loops over the tableau (unroll=False) and the specializer's straight-line code compute
     the same method: as many steps, and answers equal within the tolerance (their round-off differs, as

@@ -106,6 +106,7 @@ def test_cli_simulates_a_model_from_a_path_with_its_defaults(derived, capsys, tm
     assert (tmp_path / "run.csv").read_text().startswith("t,v,phi_dot")
 
 
+@pytest.mark.slow
 def test_cli_simulates_every_builtin_model_from_its_defaults(capsys):
     """`knifeedge simulate --model NAME` needs nothing but the module's defaults, for every registered model."""
     for name in ke.MODEL_NAMES:
