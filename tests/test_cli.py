@@ -136,3 +136,53 @@ def test_demo_unchanged(capsys, tmp_path):
     rc, out, err = run(capsys, "demo", "--out", str(tmp_path / "d.png"), "--t-end", "150")
     assert rc == 0
     assert "spin reversals at t = 106.36" in out
+
+
+def test_figures_compile_other_models_parts_while_the_first_integrator_compiles(monkeypatch, tmp_path):
+    """figures._schedule: the first integrator compiles alone among the integrators, the other worker
+    compiles the next models' own parts meanwhile (never the first's), each integrator is compiled once,
+    and a scene starts only when every integrator it uses is compiled."""
+    import concurrent.futures as cf
+    import threading
+    import time
+
+    from knifeedge import figures
+
+    log, lock = [], threading.Lock()
+
+    def record(*event):
+        with lock:
+            log.append((time.perf_counter(), *event))
+
+    def warm(*key):
+        record("warm start", key)
+        time.sleep(0.3 if not any(e[1] == "warm end" for e in log) else 0.01)
+        record("warm end", key)
+        return "/".join(map(str, key))
+
+    def warm_parts(*key):
+        record("parts", key)
+        time.sleep(0.05)
+        return True
+
+    def render(name, out):
+        record("scene", name)
+        return {"name": name, "ok": True, "seconds": 0.0}
+
+    monkeypatch.setattr(figures, "warm", warm)
+    monkeypatch.setattr(figures, "warm_parts", warm_parts)
+    monkeypatch.setattr(figures, "render_scene", render)
+    monkeypatch.setattr(figures, "render_animation", render)
+    order = ["numerical2", "knife_edge_rigid", "model_fidelity", "celt", "numerical"]
+    with cf.ThreadPoolExecutor(max_workers=2) as pool:
+        figures._schedule(pool, 2, order, tmp_path, lambda kind, rec: None, False, time.perf_counter())
+    warmed = [e[2] for e in log if e[1] == "warm start"]
+    assert len(warmed) == len(set(warmed)) >= 4
+    first_end = min(e[0] for e in log if e[1] == "warm end")
+    parts = [e for e in log if e[1] == "parts"]
+    assert parts and all(e[0] < first_end and e[2] != warmed[0] for e in parts)
+    assert not [e for e in log if e[1] == "warm start" and e[0] < first_end and e[2] != warmed[0]]
+    for n in order:
+        start = min(e[0] for e in log if e[1] == "scene" and e[2] == n)
+        for key in {(*u, figures.get_scene(n).run.method) for u in figures.get_scene(n).uses}:
+            assert max(e[0] for e in log if e[1] == "warm end" and e[2] == key) < start, (n, key)

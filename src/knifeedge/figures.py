@@ -89,18 +89,37 @@ def warm(model: str, fidelity: str, pose: bool, method: str) -> str:
     return f"{model}/{fidelity}{'+pose' if pose else ''}/{method}"
 
 
+def warm_parts(model: str, fidelity: str, pose: bool, method: str) -> bool:
+    """Compile (or load from the cache) only the model's parts of an adaptive method's integrator, not the
+    integrator they plug into; False if the method has no such parts (fixed step) or the model no such form."""
+    from .integrators import kernel_module
+    from .models import load
+
+    try:
+        module = kernel_module(load(model, fidelity=fidelity, pose=pose), method)
+    except ValueError:
+        return False
+    if not hasattr(module, "parts"):
+        return False
+    module.parts()
+    return True
+
+
 def _schedule(pool, workers: int, order: list, out: Path, report, progress, t0: float) -> None:
     """Run the scenes on ``pool``, compiling each integrator once and first.
 
     The first integrator compiles alone (it also compiles the helpers every
-    kernel shares, which later processes then load from the cache); after
-    that at most ``workers`` tasks run at once, a scene as soon as all its
-    integrators are compiled, otherwise the next compilation.
+    kernel shares, which later processes then load from the cache), while
+    the other processes compile the next models' parts of it (each model's
+    own code, which does not need the shared integrator); after that at most
+    ``workers`` tasks run at once, a scene as soon as all its integrators are
+    compiled, otherwise the next compilation.
     """
     needs = {("scene", n): {(*u, get_scene(n).run.method) for u in get_scene(n).uses} for n in order}
     needs.update({("animation", n): _animation_needs(n) for n in order if n in ANIMATIONS})
     warms = sorted(set().union(*needs.values()), key=lambda k: -sum(k in v for v in needs.values()))
     compiled: set = set()
+    parted: set = set()  # integrators whose model parts were compiled, or are, while the first one compiles
     scenes = list(needs)
     running: dict = {}
     n_warm = len(warms)
@@ -112,8 +131,14 @@ def _schedule(pool, workers: int, order: list, out: Path, report, progress, t0: 
                 task = render_scene if ready[0][0] == "scene" else render_animation
                 running[pool.submit(task, ready[0][1], str(out))] = ready[0]
             elif warms and (compiled or not any(kind == "warm" for kind, _ in running.values())):
-                k = warms.pop(0)
+                busy = {what for kind, what in running.values() if kind == "parts"}  # not compiled twice at once
+                k = next((w for w in warms if w not in busy), warms[0])
+                warms.remove(k)
                 running[pool.submit(warm, *k)] = ("warm", k)
+            elif not compiled and any(w not in parted for w in warms):
+                k = next(w for w in warms if w not in parted)
+                parted.add(k)
+                running[pool.submit(warm_parts, *k)] = ("parts", k)
             else:
                 break
         done, _ = cf.wait(list(running), return_when=cf.FIRST_COMPLETED)
@@ -121,6 +146,9 @@ def _schedule(pool, workers: int, order: list, out: Path, report, progress, t0: 
             kind, what = running.pop(fut)
             if kind in ("scene", "animation"):
                 report(kind, fut.result())
+                continue
+            if kind == "parts":  # errors show when the integrator itself is compiled
+                fut.exception()
                 continue
             try:
                 label = fut.result()
