@@ -121,8 +121,8 @@ def test_pose_model_matches_scipy():
 
 
 # -- fixed-step methods: orders and reversibility --------------------------------
-@pytest.mark.parametrize("method,h,order", [("RK4", 0.05, 4), pytest.param("implicit_midpoint", 0.025, 2, marks=pytest.mark.slow),
-                                            ("gauss4", 0.1, 4), pytest.param("gauss6", 0.2, 6, marks=pytest.mark.slow)])
+@pytest.mark.parametrize("method,h,order", [("RK4", 0.05, 4), ("implicit_midpoint", 0.025, 2),
+                                            ("gauss4", 0.1, 4), ("gauss6", 0.2, 6)])
 def test_fixed_step_order(method, h, order):
     """Halving the step divides the global error by 2^order (single mode, large tilt: nonlinear)."""
     m, p = _single()
