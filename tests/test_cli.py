@@ -156,23 +156,24 @@ def test_figures_compile_other_models_parts_while_the_first_integrator_compiles(
 
     def warm(*key):
         record("warm start", key)
-        time.sleep(0.3 if not any(e[1] == "warm end" for e in log) else 0.01)
+        time.sleep(0.5 if not any(e[1] == "warm end" for e in log) else 0.01)  # the first: long against the parts
         record("warm end", key)
         return "/".join(map(str, key))
 
     def warm_parts(*key):
         record("parts", key)
-        time.sleep(0.05)
         return True
 
-    def render(name, out):
-        record("scene", name)
-        return {"name": name, "ok": True, "seconds": 0.0}
+    def render(kind):
+        def task(name, out):
+            record(kind, name)
+            return {"name": name, "ok": True, "seconds": 0.0}
+        return task
 
     monkeypatch.setattr(figures, "warm", warm)
     monkeypatch.setattr(figures, "warm_parts", warm_parts)
-    monkeypatch.setattr(figures, "render_scene", render)
-    monkeypatch.setattr(figures, "render_animation", render)
+    monkeypatch.setattr(figures, "render_scene", render("scene"))
+    monkeypatch.setattr(figures, "render_animation", render("animation"))
     order = ["numerical2", "knife_edge_rigid", "model_fidelity", "celt", "numerical"]
     with cf.ThreadPoolExecutor(max_workers=2) as pool:
         figures._schedule(pool, 2, order, tmp_path, lambda kind, rec: None, False, time.perf_counter())
@@ -182,7 +183,9 @@ def test_figures_compile_other_models_parts_while_the_first_integrator_compiles(
     parts = [e for e in log if e[1] == "parts"]
     assert parts and all(e[0] < first_end and e[2] != warmed[0] for e in parts)
     assert not [e for e in log if e[1] == "warm start" and e[0] < first_end and e[2] != warmed[0]]
-    for n in order:
-        start = min(e[0] for e in log if e[1] == "scene" and e[2] == n)
-        for key in {(*u, figures.get_scene(n).run.method) for u in figures.get_scene(n).uses}:
-            assert max(e[0] for e in log if e[1] == "warm end" and e[2] == key) < start, (n, key)
+    tasks = [("scene", n, {(*u, figures.get_scene(n).run.method) for u in figures.get_scene(n).uses}) for n in order]
+    tasks += [("animation", n, figures._animation_needs(n)) for n in order if n in figures.ANIMATIONS]
+    for kind, n, needs in tasks:
+        start = min(e[0] for e in log if e[1] == kind and e[2] == n)
+        for key in needs:
+            assert max(e[0] for e in log if e[1] == "warm end" and e[2] == key) < start, (kind, n, key)
