@@ -51,15 +51,20 @@ def _wait_for_compiles(cache: Path, limit: float = 300.0) -> None:
         time.sleep(0.5)
 
 
+def _cold_env(caches: Path) -> dict:
+    """This environment with empty cache folders under ``caches`` (kernels, numba) and the default compile mode."""
+    env = dict(os.environ, KNIFEEDGE_CACHE_DIR=str(caches / "kernels-cache"), NUMBA_CACHE_DIR=str(caches / "numba-cache"))
+    env.pop("KNIFEEDGE_COMPILE", None)
+    return env
+
+
 def measure(command: list, repeats: int, work: Path) -> dict:
     exe = str(Path(sys.executable).parent / "knifeedge")
     cold, warm = [], []
     env = None
     for k in range(repeats):
         caches = Path(tempfile.mkdtemp(prefix="first-run-", dir=work))
-        env = dict(os.environ, KNIFEEDGE_CACHE_DIR=str(caches / "kernels-cache"),
-                   NUMBA_CACHE_DIR=str(caches / "numba-cache"))
-        env.pop("KNIFEEDGE_COMPILE", None)
+        env = _cold_env(caches)
         cold.append(_run([exe, *command], env, work))
         _wait_for_compiles(caches / "kernels-cache")
         print(f"  cold {k + 1}/{repeats}: {cold[-1]}", flush=True)
@@ -92,8 +97,7 @@ def measure_test_command(repeats: int, work: Path) -> dict:
         subprocess.run(["git", "clone", "-q", str(ROOT), str(clone / "knifeedge")], check=True)
         if (ROOT.parent / "shared").exists():
             (clone / "shared").symlink_to(ROOT.parent / "shared")
-        env = dict(os.environ, KNIFEEDGE_CACHE_DIR=str(clone / "kernels-cache"), NUMBA_CACHE_DIR=str(clone / "numba-cache"))
-        env.pop("KNIFEEDGE_COMPILE", None)
+        env = _cold_env(clone)
         env.pop("VIRTUAL_ENV", None)
         rows.append(_run(["bash", "-c", command], env, clone / "knifeedge"))
         print(f"  cold {k + 1}/{repeats}: {rows[-1]}", flush=True)

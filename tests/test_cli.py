@@ -183,7 +183,7 @@ def test_figures_compile_other_models_parts_while_the_first_integrator_compiles(
     parts = [e for e in log if e[1] == "parts"]
     assert parts and all(e[0] < first_end and e[2] != warmed[0] for e in parts)
     assert not [e for e in log if e[1] == "warm start" and e[0] < first_end and e[2] != warmed[0]]
-    tasks = [("scene", n, {(*u, figures.get_scene(n).run.method) for u in figures.get_scene(n).uses}) for n in order]
+    tasks = [("scene", n, figures._scene_needs(n)) for n in order]
     tasks += [("animation", n, figures._animation_needs(n)) for n in order if n in figures.ANIMATIONS]
     for kind, n, needs in tasks:
         start = min(e[0] for e in log if e[1] == kind and e[2] == n)

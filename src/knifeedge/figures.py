@@ -65,6 +65,12 @@ def _animation_caption(info) -> str:
             f"around the reversals and up to {tps.max():.3g} elsewhere; {mag}. Drawn by {info.drawn_by}.")
 
 
+def _scene_needs(name: str) -> set:
+    """The integrators scene ``name`` uses: ``(model, fidelity, pose, method)`` of each of its runs' models."""
+    scene = get_scene(name)
+    return {(*u, scene.run.method) for u in scene.uses}
+
+
 def _animation_needs(name: str) -> set:
     """The integrators an animation of scene ``name`` uses: its run's model with the pose."""
     if name not in ANIMATIONS:
@@ -115,7 +121,7 @@ def _schedule(pool, workers: int, order: list, out: Path, report, progress, t0: 
     ``workers`` tasks run at once, a scene as soon as all its integrators are
     compiled, otherwise the next compilation.
     """
-    needs = {("scene", n): {(*u, get_scene(n).run.method) for u in get_scene(n).uses} for n in order}
+    needs = {("scene", n): _scene_needs(n) for n in order}
     needs.update({("animation", n): _animation_needs(n) for n in order if n in ANIMATIONS})
     warms = sorted(set().union(*needs.values()), key=lambda k: -sum(k in v for v in needs.values()))
     compiled: set = set()
