@@ -17,7 +17,7 @@ import numpy as np
 import pytest
 
 import knifeedge as ke
-from knifeedge.integrators import COMPILED_METHODS, Status, kernel, specialize
+from knifeedge.integrators import COMPILED_METHODS, Status, irparts, kernel, specialize
 from knifeedge.integrators import dop853_tableau as t8
 from knifeedge.integrators import rk_tableaus as tb
 
@@ -237,13 +237,21 @@ def test_kernel_source_imports_the_models_rhs(tmp_path):
     src = specialize.kernel_source("erk", "DP54", "knifeedge.generated.two_mode_full", "rhs_pose_q_into", 8)
     assert "from knifeedge.generated.two_mode_full import constants as _constants, rhs_pose_q_into as _rhs" in src
     assert "TABLEAU = 'DP54'" in src and "N = 8" in src and "templates._stub" not in src
-    # stages unrolled with the Dormand-Prince coefficients as literals (a21 = 1/5, b1 = 35/384)
-    assert "work[i] = y[i] + (h * 0.2) * K[0, i]" in src and f"y_new[i] = y[i] + (h * {35 / 384!r}) * K[0, i]" in src
-    # the error estimate likewise (e1 = -71/57600), and no generic loop over the stages is left in the step
-    assert f"acc += {-71 / 57600!r} * K[0, i]" in src and "for s in range(1, N_STAGES" not in src
-    assert "for j in range(" not in src
-    # DOP853: its 3 extra stages of the dense output (K[13], K[14], K[15]) are evaluated in the kernel
-    assert "q, K[15])" in specialize.kernel_source("erk", "DOP853", "m", "rhs_q_into", 3)
+    # the specialized kernel's stages are the LLVM IR of irparts; unroll=False keeps numba's loops
+    assert "IR = True" in src
+    assert "IR = False" in specialize.kernel_source("erk", "DP54", "m", "rhs_q_into", 8, unroll=False)
+    # stages unrolled with the Dormand-Prince coefficients as exact literals (a21 = 1/5, b1 = 35/384)
+    ir = irparts.module_ir(irparts.Tableau("DP54"), 8, 3, ("a", "d"), "rhs")
+    assert f"fmul contract double %h, {irparts.literal(0.2)}" in ir
+    assert f"fmul contract double %h, {irparts.literal(35 / 384)}" in ir
+    # the error estimate likewise (e1 = -71/57600)
+    assert f"fmul contract double {irparts.literal(-71 / 57600)}, " in ir
+    # one call of the right-hand side per stage: DP54 6 in attempt (7 stages, first same as last);
+    # DOP853 12 in attempt and its 3 extra stages of the dense output in dense
+    assert ir.count('call i32 @"rhs"') == 6
+    ir8 = irparts.module_ir(irparts.Tableau("DOP853"), 3, 2, ("a", "d"), "rhs")
+    attempt, dense = ir8.split('define void @"d"')
+    assert attempt.count('call i32 @"rhs"') == 12 and dense.count('call i32 @"rhs"') == 3
     with pytest.raises(ValueError, match="unknown kernel template"):
         specialize.kernel_source("euler", 0, "x", "y", 3)
     with pytest.raises(ValueError, match="n_state"):

@@ -104,9 +104,10 @@ def test_adaptive_methods_converge_at_their_order(method, order):
     assert 0.7 * order < slope < 1.3 * order + 1, (slope, errs, work)
 
 
+@pytest.mark.xdist_group("generic_parts")  # with test_irparts: one worker compiles the generic-loop parts
 @pytest.mark.parametrize("method", [pytest.param("Tsit5", marks=pytest.mark.slow), pytest.param("DP54", marks=pytest.mark.slow), "DOP853"])
 def test_generic_template_bodies_agree_with_the_unrolled_ones(method):
-    """The template's loops over the tableau (unroll=False) and the specializer's straight-line code compute
+    """The template's loops over the tableau (unroll=False) and the straight-line IR parts (irparts) compute
     the same method: as many steps, and answers equal within the tolerance (their round-off differs, as
     the unrolled stages use fused multiply-adds, and moves the step sizes, hence the answers at the error level;
     a wrong coefficient would break the order and miss by orders of magnitude more)."""

@@ -7,22 +7,18 @@ line by the state size (a compile-time constant, so LLVM unrolls the loops
 over the state).  For the adaptive methods the kernel module is the model's
 parts (``templates/erk_parts.py``: ``# knifeedge:nv`` and ``# knifeedge:nq``
 become its number of event functions and the size of its ``constants(p)``,
-``# knifeedge:driver`` the import of the integrator), and the blocks between
-``# knifeedge:begin NAME`` and ``# knifeedge:end NAME`` (``attempt``: the
-stages of a step; ``error``: the error norm; ``dense``: the interpolant)
-are replaced by straight-line code with the tableau's coefficients as
-literals.  The error norm and the dense output sum in the generic loop's
-order; the stages of a step are summed as ``y + (h a_0) K_0 + ...`` so that
-fused multiply-adds shorten the chain of dependent operations (the results
-differ from SciPy's ``y + h (a_0 K_0 + ...)`` by round-off).  The integrator
-they serve (``templates/erk.py``, one per method for every model, its
-``power`` block the step-size controller's power) is written by
-:func:`driver_source`.  Each module is written once to ``<cache>/kernels/``
-under a name carrying a hash of everything it depends on (template and
-helper sources, the generated module's source, numba and Python versions),
-imported from there, and its ``cache=True`` functions keep their machine
-code in the ``__pycache__`` beside it, so a second process loads instead of
-compiling.
+``# knifeedge:driver`` the import of the integrator, and ``# knifeedge:ir``
+says whether its stages and interpolant are written as LLVM IR from the
+tableau, :mod:`.irparts`, or compiled by numba from the template's loops
+over the tableau, ``unroll=False``).  The integrator they serve
+(``templates/erk.py``, one per method for every model, its ``power`` block
+the step-size controller's power) is written by :func:`driver_source`.
+Each module is written once to ``<cache>/kernels/`` under a name carrying a
+hash of everything it depends on (template and helper sources, the
+generated module's source, numba and Python versions), imported from there,
+and its ``cache=True`` functions keep their machine code in the
+``__pycache__`` beside it (the IR parts in a file beside it), so a second
+process loads instead of compiling.
 
 The cache directory is ``$KNIFEEDGE_CACHE_DIR`` if set, else
 ``$XDG_CACHE_HOME/knifeedge`` (default ``~/.cache/knifeedge``); when that is
@@ -52,6 +48,7 @@ RHS_MARK = "# knifeedge:rhs"
 DRIVER_MARK = "# knifeedge:driver"
 NV_MARK = "# knifeedge:nv"
 NQ_MARK = "# knifeedge:nq"
+IR_MARK = "# knifeedge:ir"
 VARIANT_MARK = "# knifeedge:variant"
 N_MARK = "# knifeedge:n"
 EVENTS_MARK = "# knifeedge:event_values"
@@ -121,8 +118,9 @@ def kernel_source(template: str, variant, rhs_module: str, rhs_name: str, n_stat
                   n_events: int = 0, n_constants: int = 1) -> str:
     """Text of the kernel module for a template specialized to ``rhs_module.rhs_name`` on ``n_state`` states.
 
-    ``unroll=False`` keeps the template's generic loops over the tableau
-    (same algorithm; the tests compare the two).  ``has_events``: the module
+    ``unroll=False`` has numba compile the template's generic loops over the
+    tableau instead of the straight-line LLVM IR of :mod:`.irparts` (same
+    algorithm; the tests compare the two).  ``has_events``: the module
     defines ``n_events`` event functions (``EVENT_NAMES``, ``event_values(s,
     p)``), which the kernel then locates besides state components.  For
     ``erk`` the module holds the model's parts of the integrator, the module
@@ -144,6 +142,9 @@ def kernel_source(template: str, variant, rhs_module: str, rhs_name: str, n_stat
         elif template == "erk" and line.startswith("NQ =") and NQ_MARK in line:
             line = f"NQ = {int(n_constants)}  {NQ_MARK}"
             seen.add(NQ_MARK)
+        elif template == "erk" and line.startswith("IR =") and IR_MARK in line:
+            line = f"IR = {bool(unroll)}  {IR_MARK}"
+            seen.add(IR_MARK)
         elif line.rstrip().endswith(RHS_MARK):
             line = f"from {rhs_module} import constants as _constants, {rhs_name} as _rhs  {RHS_MARK}"
             seen.add(RHS_MARK)
@@ -159,16 +160,11 @@ def kernel_source(template: str, variant, rhs_module: str, rhs_name: str, n_stat
             line = f"N = {n_state}  {N_MARK}"
             seen.add(N_MARK)
         out.append(line)
-    if seen != {RHS_MARK, VARIANT_MARK, N_MARK, EVENTS_MARK} | ({DRIVER_MARK, NV_MARK, NQ_MARK} if template == "erk" else set()):
+    if seen != {RHS_MARK, VARIANT_MARK, N_MARK, EVENTS_MARK} | ({DRIVER_MARK, NV_MARK, NQ_MARK, IR_MARK} if template == "erk" else set()):
         raise RuntimeError(f"kernel template {template}.py lacks one of its {RHS_MARK!r}, {VARIANT_MARK!r}, "
                            f"{N_MARK!r}, {EVENTS_MARK!r} lines")
     if template == "fixed":
         out = _event_blocks(out, has_events)
-    elif unroll:
-        tableau = _erk_tableau(variant)
-        out = _replace_block(out, "attempt", _attempt_block(tableau["A"], tableau["C"], tableau["n_stages"]))
-        out = _replace_block(out, "error", _error_block(tableau))
-        out = _replace_block(out, "dense", _dense_block(tableau))
     header = (f"# Specialized kernel: template {template}.py, variant {variant}, rhs {rhs_module}.{rhs_name}, "
               f"{n_state} states{'' if unroll else ', generic loops'}.\n")
     return header + "\n".join(out) + "\n"
@@ -201,104 +197,10 @@ def driver_source(variant: str) -> str:
     if not seen:
         raise RuntimeError(f"kernel template erk.py lacks its {VARIANT_MARK!r} line")
     out = _event_blocks(out, True)
-    out = _replace_block(out, "power", _power_block(_erk_tableau(variant)["error_order"]))
+    from .tableau import erk_arrays
+
+    out = _replace_block(out, "power", _power_block(erk_arrays(variant)[-1]))
     return f"# The adaptive integrator: template erk.py, variant {variant}, every model.\n" + "\n".join(out) + "\n"
-
-
-def _erk_tableau(name: str) -> dict:
-    """The tables the ``erk`` template uses for the registered method ``name`` (row ``n_stages`` of ``A``
-    holds the weights; later rows, DOP853's extra dense-output stages)."""
-    import numpy as np
-
-    from . import tableau
-
-    t = tableau.get(name)
-    s = t.stages
-    n_ext = s + 1 + (t.hairer["c_ext"].size if t.hairer else 0)
-    A = np.zeros((n_ext, n_ext))
-    A[:s, :s] = t.A
-    A[s, :s] = t.b
-    C = np.ones(n_ext)
-    C[:s] = t.c
-    if t.hairer:
-        A[s + 1:] = t.hairer["A_ext"]
-        C[s + 1:] = t.hairer["c_ext"]
-    return {"A": A, "C": C, "E5": t.e, "E3": t.hairer["e3"] if t.hairer else None, "n_stages": s,
-            "D": t.hairer["D"] if t.hairer else None, "P": t.P, "error_order": t.error_order}
-
-
-def _acc(coefficients, term: str, indent: str = "    ") -> list:
-    """``acc += <term> + <term> + ...`` over the nonzero ``coefficients``, in order (no line if none);
-    in ``term``, ``{c}`` stands for the coefficient (a literal) and ``{j}`` for its stage."""
-    terms = [term.format(c=repr(float(c)), j=j) for j, c in enumerate(coefficients) if c != 0.0]
-    return [f"{indent}acc += " + " + ".join(terms)] if terms else []
-
-
-def _attempt_block(A, C, n_stages: int) -> list:
-    """Every stage of one step, in sequence: ``K[1 .. n_stages]`` and ``y_new`` from ``K[0] = f(t, y)``.
-
-    A stage state is ``y + (h a_0) K_0 + ... + (h a_{s-1}) K_{s-1}``, summed
-    oldest stage first, so that (with fused multiply-adds) only the last
-    term waits for the stage just computed: the stages are a chain of
-    dependent right-hand-side calls, and this keeps the arithmetic between
-    two of them to one operation.
-    """
-    body = []
-    for s in range(1, n_stages + 1):
-        last = s == n_stages
-        target = "y_new" if last else "work"
-        terms = [f"(h * {float(c)!r}) * K[{j}, i]" for j, c in enumerate(A[s, :s]) if c != 0.0]
-        body.append("for i in range(N):")
-        body.append(f"    {target}[i] = y[i] + {' + '.join(terms)}")
-        body.append(f"_rhs({'t_new' if last else f't + {float(C[s])!r} * h'}, {target}, q, K[{s}])")
-    return body
-
-
-def _error_block(tableau: dict) -> list:
-    """``err``: the scaled norm of the embedded estimate, the estimators' coefficients as literals."""
-    body = ["n5 = 0.0", "n3 = 0.0", "for i in range(N):", "    acc = 0.0"]
-    body += _acc(tableau["E5"], "{c} * K[{j}, i]")
-    body += ["    e5 = acc / scale[i]", "    n5 += e5 * e5"]
-    if tableau["E3"] is not None:  # DOP853: the 5th- and 3rd-order estimates combined as in Hairer's code
-        body.append("    acc = 0.0")
-        body += _acc(tableau["E3"], "{c} * K[{j}, i]")
-        body += ["    e3 = acc / scale[i]", "    n3 += e3 * e3",
-                 "if n5 == 0.0 and n3 == 0.0:",
-                 "    err = 0.0",
-                 "else:",
-                 "    err = abs(h) * n5 / np.sqrt((n5 + 0.01 * n3) * N)"]
-    else:  # root mean square of the one estimate
-        body.append("err = abs(h) * np.sqrt(n5 / N)")
-    return body
-
-
-def _dense_block(tableau: dict) -> list:
-    """``F``, the interpolant of the accepted step (DOP853: its extra stages first, evaluated here)."""
-    A, C, s = tableau["A"], tableau["C"], tableau["n_stages"]
-    body = []
-    if tableau["D"] is not None:
-        for st in range(s + 1, A.shape[0]):
-            body += ["for i in range(N):", "    acc = 0.0"]
-            body += _acc(A[st, :st], "{c} * K[{j}, i]")
-            body += ["    work[i] = y[i] + h * acc", f"_rhs(t + {float(C[st])!r} * h, work, q, K[{st}])"]
-        body += [
-            "for i in range(N):",
-            "    dy = y_new[i] - y[i]",
-            "    F[0, i] = dy",
-            "    F[1, i] = h * K[0, i] - dy",
-            f"    F[2, i] = 2.0 * dy - h * (K[{s}, i] + K[0, i])",
-        ]
-        for r, row in enumerate(tableau["D"]):
-            body.append("    acc = 0.0")
-            body += _acc(row, "{c} * K[{j}, i]")
-            body.append(f"    F[{3 + r}, i] = h * acc")
-    else:
-        body.append("for i in range(N):")
-        for r, col in enumerate(tableau["P"].T):
-            body.append("    acc = 0.0")
-            body += _acc(col, "{c} * K[{j}, i]")
-            body.append(f"    F[{r}, i] = h * acc")
-    return body
 
 
 def _power_block(error_order: int):

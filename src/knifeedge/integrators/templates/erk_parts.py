@@ -3,23 +3,28 @@
 :mod:`..specialize` writes this template for one model and one method: the
 ``# knifeedge:rhs`` and ``# knifeedge:event_values`` lines import the model's
 functions, the ``# knifeedge:driver`` line the integrator, ``N`` and ``NV``
-become its state size (a constant, so that the loops over the state unroll)
-and its number of event functions, and the blocks between
-``# knifeedge:begin NAME`` and ``# knifeedge:end NAME`` (``attempt``: the
-stages of a step; ``error``: the error norm; ``dense``: the interpolant)
-become straight-line code with the tableau's coefficients as literals; the
-stages of a step are summed as ``y + (h a_0) K_0 + ...`` so that fused
-multiply-adds shorten the chain of dependent operations.
+become its state size and its number of event functions, ``NQ`` the size of
+its ``constants(p)``, and ``IR`` says how ``attempt`` and ``dense`` are
+compiled.
 
-The parts are ``numba.cfunc`` functions compiled on first use (:func:`parts`)
-and cached; the integrator, compiled once per method for every model, calls
-them through their addresses (:mod:`knifeedge.integrators.fnptr`).
-:func:`solve` is the integrator with this model's parts: it takes the
-arguments of ``erk.solve`` without ``fns`` and ``q``.
+The parts are the right-hand side (:func:`rhs`), the stages of a step with
+the error norm (:func:`attempt`), the interpolant (:func:`dense`) and the
+event functions (:func:`events`).  ``rhs`` and ``events`` are
+``numba.cfunc`` functions; ``attempt`` and ``dense`` are, when ``IR`` is
+true (a specialized kernel), straight-line LLVM IR written from the tableau
+with the state size and coefficients as constants and the right-hand side
+inlined (:mod:`knifeedge.integrators.irparts`), else numba's compilation of
+the loops over the tableau below (the reference the tests compare them
+with).  All are compiled on first use (:func:`parts`) and cached; the
+integrator, compiled once per method for every model, calls them through
+their addresses (:mod:`knifeedge.integrators.fnptr`).  :func:`solve` is the
+integrator with this model's parts: it takes the arguments of ``erk.solve``
+without ``fns`` and ``q``.
 """
 import numpy as np
 from numba import carray, cfunc, types
 
+from knifeedge.integrators import irparts as _irparts
 from knifeedge.integrators import tableau as _tableau
 from knifeedge.integrators.templates import erk as _driver  # knifeedge:driver
 from knifeedge.integrators.templates._stub import constants as _constants, rhs_q_into as _rhs  # knifeedge:rhs
@@ -29,6 +34,7 @@ TABLEAU = "DOP853"  # knifeedge:variant  (a registered ExplicitTableau, see knif
 N = 3  # knifeedge:n  (the state size, a compile-time constant so that the loops over it unroll)
 NV = 1  # knifeedge:nv  (the number of event functions)
 NQ = 2  # knifeedge:nq  (the size of constants(p))
+IR = False  # knifeedge:ir  (attempt and dense as LLVM IR written from the tableau; False: numba compiles the loops)
 
 (A, C, E5, E3, DD, P, HAIRER, N_STAGES, N_EXT, DENSE_ROWS, ALT, ERROR_ORDER) = _tableau.erk_arrays(TABLEAU)
 
@@ -65,7 +71,6 @@ def attempt(t, h, t_new, rtol, mode_scaled, wsp, nq, ap, pairp):
     q = ws[_OQ:]
     atol = carray(ap, (N,))
     pair = carray(pairp, (N,))
-    # knifeedge:begin attempt
     # stages 1 .. N_STAGES from K[0] = f(t, y) (first same as last), then y_new and K[N_STAGES]
     for s in range(1, N_STAGES + 1):
         for i in range(N):
@@ -80,13 +85,11 @@ def attempt(t, h, t_new, rtol, mode_scaled, wsp, nq, ap, pairp):
             _rhs(t + C[s] * h, work, q, K[s])
         else:
             _rhs(t_new, y_new, q, K[s])
-    # knifeedge:end attempt
     for i in range(N):
         m = max(abs(y[i]), abs(y_new[i]))
         if mode_scaled and pair[i] >= 0:
             m = max(m, abs(y[pair[i]]), abs(y_new[pair[i]]))
         scale[i] = atol[i] + rtol * m
-    # knifeedge:begin error
     # the scaled norm of the embedded estimate (DOP853: its 5th- and 3rd-order ones combined as Hairer's)
     n5 = 0.0
     n3 = 0.0
@@ -104,7 +107,6 @@ def attempt(t, h, t_new, rtol, mode_scaled, wsp, nq, ap, pairp):
         err = 0.0
     else:
         err = abs(h) * n5 / np.sqrt((n5 + 0.01 * n3) * N)
-    # knifeedge:end error
     return err
 
 
@@ -117,7 +119,6 @@ def dense(t, h, wsp, nq):
     work = ws[_O + 2 * N:_O + 3 * N]
     F = ws[_O + 4 * N:_OQ].reshape((DENSE_ROWS, N))
     q = ws[_OQ:]
-    # knifeedge:begin dense
     if HAIRER:
         for s in range(N_STAGES + 1, N_EXT):
             for i in range(N):
@@ -143,7 +144,6 @@ def dense(t, h, wsp, nq):
                 for j in range(N_EXT):
                     acc += K[j, i] * P[j, r]
                 F[r, i] = h * acc
-    # knifeedge:end dense
 
 
 def events(sp, pp, n_p, outp):
@@ -162,12 +162,20 @@ def parts() -> np.ndarray:
     """The addresses of the compiled parts (compiled, or loaded from the cache, at the first call), then
     ``NV``: the ``fns`` argument of the integrator."""
     if not _PARTS:
-        # "contract": fused multiply-adds in the stage sums
-        fast = dict(_OPTIONS, fastmath={"contract"})
-        compiled = (cfunc(RHS_SIG, **_OPTIONS)(rhs), cfunc(ATTEMPT_SIG, **fast)(attempt),
-                    cfunc(DENSE_SIG, **fast)(dense), cfunc(EVENTS_SIG, **_OPTIONS)(events))
-        _PARTS.append(compiled)  # kept alive: the integrator calls them by address
-        _PARTS.append(np.array([f.address for f in compiled] + [NV], dtype=np.int64))
+        rhs_c = cfunc(RHS_SIG, **_OPTIONS)(rhs)
+        events_c = cfunc(EVENTS_SIG, **_OPTIONS)(events)
+        if IR:
+            lib, attempt_address, dense_address = _irparts.load_or_compile(__file__, TABLEAU, N, NQ, rhs_c)
+            kept = (rhs_c, events_c, lib)
+        else:
+            # "contract": fused multiply-adds in the stage sums
+            fast = dict(_OPTIONS, fastmath={"contract"})
+            attempt_c, dense_c = cfunc(ATTEMPT_SIG, **fast)(attempt), cfunc(DENSE_SIG, **fast)(dense)
+            kept = (rhs_c, events_c, attempt_c, dense_c)
+            attempt_address, dense_address = attempt_c.address, dense_c.address
+        _PARTS.append(kept)  # kept alive: the integrator calls them by address
+        _PARTS.append(np.array([rhs_c.address, attempt_address, dense_address, events_c.address, NV],
+                               dtype=np.int64))
     return _PARTS[1]
 
 
@@ -175,6 +183,10 @@ def is_compiled() -> bool:
     """Whether the cache holds the compiled parts and the integrator (later calls load them)."""
     from knifeedge.integrators.specialize import cached
 
+    if IR:
+        if not _irparts.cache_file(__file__).is_file():
+            return False
+        return all(cached(f) for f in (rhs, events, _driver.solve))
     return all(cached(f) for f in (rhs, attempt, dense, events, _driver.solve))
 
 

@@ -1,0 +1,128 @@
+"""The stages of a step and the interpolant written as LLVM IR (knifeedge.integrators.irparts).
+
+Each check calls the IR parts of a kernel and numba's compilation of the template's loops over the tableau
+(``unroll=False``, an independent implementation of the same method) on one workspace, or checks the IR parts
+against the formulas they implement: Hairer, Norsett & Wanner, Solving ODEs I, Sect. II.4 (the error scale
+``atol + rtol max(|y|, |y_new|)``) and II.10 (DOP853's error norm), as SciPy's ``solve_ivp`` computes them.
+The stand-in model is ``templates/_stub.py``: q' = v, v' = -w^2 q, s' = -q.
+"""
+import ctypes
+import importlib.util
+import math
+import sys
+
+import numpy as np
+import pytest
+
+from knifeedge.integrators import Status, from_code, irparts, specialize
+from knifeedge.integrators.templates import _stub
+
+_D = ctypes.c_double
+_I = ctypes.c_int64
+_P = ctypes.c_void_p
+ATTEMPT = ctypes.CFUNCTYPE(_D, _D, _D, _D, _D, _I, _P, _I, _P, _P)
+DENSE = ctypes.CFUNCTYPE(None, _D, _D, _P, _I)
+RHS = ctypes.CFUNCTYPE(None, _D, _P, _P, _I, _P)
+
+
+def _ptr(a):
+    return a.ctypes.data
+
+
+def _workspace(mod, y, p):
+    """The workspace the integrator gives the parts: y, q = constants(p) and K[0] = f(0, y)."""
+    ws = np.zeros(mod._WS)
+    ws[mod._O:mod._O + mod.N] = y
+    ws[mod._OQ:] = mod._constants(p)
+    fns = mod.parts()
+    RHS(int(fns[0]))(0.0, _ptr(ws[mod._O:]), _ptr(ws[mod._OQ:]), mod.NQ, _ptr(ws))
+    return ws
+
+
+def _step(mod, ws, h, rtol, atol, pair, mode):
+    fns = mod.parts()
+    err = ATTEMPT(int(fns[1]))(0.0, h, h, rtol, mode, _ptr(ws), mod.NQ, _ptr(atol), _ptr(pair))
+    DENSE(int(fns[2]))(0.0, h, _ptr(ws), mod.NQ)
+    return err
+
+
+@pytest.mark.xdist_group("generic_parts")  # with test_tableaus' generic-loop check: one worker compiles them
+@pytest.mark.parametrize("method", ["DOP853", pytest.param("DP54", marks=pytest.mark.slow),
+                                    pytest.param("Tsit5", marks=pytest.mark.slow)])
+def test_ir_parts_compute_what_numbas_loops_over_the_tableau_compute(method):
+    """One step of the stand-in from one workspace: the stages K, y_new, the scale, the error norm and the
+    interpolant's rows F agree between the IR parts and numba's loops to round-off (the IR sums a stage as
+    y + (h a_0) K_0 + ... with fused multiply-adds, the loops as y + h (a_0 K_0 + ...)); with
+    ``mode_scaled`` the scale of a component takes its partner's magnitude too."""
+    ir = specialize.load_kernel("erk", method, _stub, "rhs_q_into", 3)
+    loops = specialize.load_kernel("erk", method, _stub, "rhs_q_into", 3, unroll=False)
+    assert ir.IR and not loops.IR
+    y, p = np.array([0.8, -0.3, 0.1]), np.array([2.0, 0.1])
+    atol = np.array([1e-9, 2e-9, 3e-9])
+    pair = np.array([1, 0, -1], dtype=np.int64)
+    for mode in (0, 1):
+        wa, wb = _workspace(ir, y, p), _workspace(loops, y, p)
+        # a long step (error norm about 1e2), so that the estimate is far above round-off
+        ea = _step(ir, wa, 0.3, 1e-7, atol, pair, mode)
+        eb = _step(loops, wb, 0.3, 1e-7, atol, pair, mode)
+        assert math.isfinite(ea) and ea > 0.0
+        assert math.isclose(ea, eb, rel_tol=1e-6), (ea, eb)  # round-off in the estimate: 1e-9 seen
+        np.testing.assert_allclose(wa[:ir._O], wb[:ir._O], rtol=1e-13, atol=1e-15)  # the stages K
+        y_new = wa[ir._O + 3:ir._O + 6]
+        np.testing.assert_allclose(y_new, wb[ir._O + 3:ir._O + 6], rtol=1e-14)
+        # the scale, from its definition (mode_scaled: max over the component and its partner)
+        mag = np.maximum(np.abs(y), np.abs(y_new))
+        if mode:
+            mag = np.array([max(mag[0], mag[1]), max(mag[0], mag[1]), mag[2]])
+        np.testing.assert_allclose(wa[ir._O + 9:ir._O + 12], atol + 1e-7 * mag, rtol=1e-15)
+        F = slice(ir._O + 12, ir._OQ)
+        np.testing.assert_allclose(wa[F], wb[F], rtol=0, atol=1e-12 * np.abs(wb[F]).max())  # 2e-13 seen
+    # the exact solution q = 0.8 cos(2t) - 0.15 sin(2t): one short step of the 8th (5th) order method is that close
+    ws = _workspace(ir, y, p)
+    _step(ir, ws, 0.05, 1e-7, atol, pair, 0)
+    exact = 0.8 * math.cos(0.1) - 0.15 * math.sin(0.1)
+    assert abs(ws[ir._O + 3] - exact) < (1e-14 if method == "DOP853" else 1e-9), abs(ws[ir._O + 3] - exact)
+
+
+def test_the_error_norm_is_hairers_from_the_stages():
+    """DOP853's norm (Hairer's code, SciPy's ``DOP853._estimate_error_norm``): err = |h| n5 / sqrt((n5 + 0.01
+    n3) N) with n5, n3 the squared scaled 5th- and 3rd-order estimates, recomputed here in numpy from the
+    stages the IR part left in the workspace."""
+    mod = specialize.load_kernel("erk", "DOP853", _stub, "rhs_q_into", 3)
+    t = irparts.Tableau("DOP853")
+    y, p = np.array([0.8, -0.3, 0.1]), np.array([2.0, 0.1])
+    ws = _workspace(mod, y, p)
+    h = 0.2
+    err = _step(mod, ws, h, 1e-8, np.full(3, 1e-10), np.full(3, -1, dtype=np.int64), 0)
+    K = ws[:t.n_ext * 3].reshape(t.n_ext, 3)[:t.n_stages + 1]
+    scale = ws[mod._O + 9:mod._O + 12]
+    n5 = np.sum((t.E5 @ K / scale) ** 2)
+    n3 = np.sum((t.E3 @ K / scale) ** 2)
+    assert math.isclose(err, h * n5 / math.sqrt((n5 + 0.01 * n3) * 3), rel_tol=1e-9)
+
+
+def test_a_right_hand_side_that_raises_fails_the_run_instead_of_going_on(tmp_path, monkeypatch):
+    """A right-hand side whose compiled code raises (here once q > 0.9) makes the step's error norm NaN: the
+    step is rejected until the step size underflows, and the run reports failure; the numba parts' wrapper
+    would have printed the exception and gone on."""
+    src = (tmp_path / "raising_rhs.py")
+    src.write_text(
+        "import numpy as np\nfrom numba import njit\n\n"
+        "@njit(cache=True)\ndef constants(p):\n    return np.array([p[0], p[0] * p[0]])\n\n"
+        "@njit(cache=True)\ndef rhs_q_into(t, s, q, ds):\n"
+        "    if s[0] > 0.9:\n        raise ValueError('q left the domain')\n"
+        "    ds[0] = s[1]\n    ds[1] = -q[1] * s[0]\n    ds[2] = -s[0]\n")
+    spec = importlib.util.spec_from_file_location("raising_rhs", src)
+    module = importlib.util.module_from_spec(spec)
+    monkeypatch.setitem(sys.modules, "raising_rhs", module)
+    spec.loader.exec_module(module)
+    solve = specialize.load_kernel("erk", "DOP853", module, "rhs_q_into", 3).solve
+    # q = 0.5 cos 2t + sin 2t = R sin(2t + phi) first reaches 0.9 at t* (R = sqrt(1.25), phi = atan2(0.5, 1))
+    y0, p = np.array([0.5, 2.0, 0.0]), np.array([2.0])
+    t_star = (math.asin(0.9 / math.sqrt(1.25)) - math.atan2(0.5, 1.0)) / 2
+    ts, ys, ev_t, ev_k = np.empty(2), np.empty((2, 3)), np.empty(64), np.empty(64, dtype=np.int64)
+    out = solve(0.0, 10.0, y0, y0, p, 1e-8, np.full(3, 1e-11), 0.0, np.inf, np.array([5.0, 10.0]), False,
+                np.array([0]), 10**6, np.full(3, -1), False, 10**6, ts, ys, ev_t, ev_k)
+    n_out, status, t_end = out[0], out[2], out[6]
+    assert from_code(status) == Status.STEP_SIZE_UNDERFLOW and n_out == 0
+    assert 0.99 * t_star < t_end < t_star + 1e-8  # the last accepted step ends where q reaches 0.9
