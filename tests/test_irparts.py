@@ -9,6 +9,8 @@ The stand-in model is ``templates/_stub.py``: q' = v, v' = -w^2 q, s' = -q.
 import ctypes
 import importlib.util
 import math
+import os
+import subprocess
 import sys
 
 import numpy as np
@@ -126,3 +128,32 @@ def test_a_right_hand_side_that_raises_fails_the_run_instead_of_going_on(tmp_pat
     n_out, status, t_end = out[0], out[2], out[6]
     assert from_code(status) == Status.STEP_SIZE_UNDERFLOW and n_out == 0
     assert 0.99 * t_star < t_end < t_star + 1e-8  # the last accepted step ends where q reaches 0.9
+
+
+@pytest.mark.slow
+def test_compiled_parts_are_loaded_by_a_second_process_and_a_damaged_file_is_compiled_again(tmp_path):
+    """The IR parts are compiled once and kept beside the kernel (irparts.cache_file): a second process loads
+    them, says nothing and gets the same answer; a truncated file is removed, said in one line, compiled
+    again."""
+    code = (
+        "import numpy as np, knifeedge as ke\n"
+        "m = ke.load('single_mode', 'reduced')\n"
+        "r = ke.simulate(m, {'theta': 1e-3, 'theta_dot': 0.0, 'phi_dot': 0.1}, (0.0, 150.0),"
+        " m.params(g=1.0, ell=1.0, L=1.0, D=1.0), rtol=1e-10)\n"
+        "print(r.success, repr(float(r.reversal_times[0])), r.nfev)\n"
+    )
+    env = dict(os.environ, KNIFEEDGE_CACHE_DIR=str(tmp_path / "k"), NUMBA_CACHE_DIR=str(tmp_path / "n"))
+    first = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
+    assert "compiling DOP853 for single_mode (reduced); once" in first.stderr
+    assert first.stdout.startswith("True 106.3")  # the paper's Fig. 'numerical': reversal at t = 106.36
+    parts = list((tmp_path / "k" / "kernels").glob("erkDOP853_single_mode_reduced_*.parts-*.nbo"))
+    assert len(parts) == 1
+    quiet = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
+    assert quiet.stdout == first.stdout and quiet.stderr == ""
+    with open(parts[0], "r+b") as f:
+        f.truncate(100)
+    again = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
+    assert again.stdout == first.stdout
+    lines = [ln for ln in again.stderr.splitlines() if ln.strip()]
+    assert len(lines) == 1 and "discarded a damaged compiled-parts cache file" in lines[0], again.stderr
+    assert parts[0].stat().st_size > 1000
