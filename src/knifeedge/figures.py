@@ -119,11 +119,17 @@ def _schedule(pool, workers: int, order: list, out: Path, report, progress, t0: 
     the other processes compile the next models' parts of it (each model's
     own code, which does not need the shared integrator); after that at most
     ``workers`` tasks run at once, a scene as soon as all its integrators are
-    compiled, otherwise the next compilation.
+    compiled, otherwise the next compilation, in the order of the first task
+    that needs it.
     """
     needs = {("scene", n): _scene_needs(n) for n in order}
     needs.update({("animation", n): _animation_needs(n) for n in order if n in ANIMATIONS})
-    warms = sorted(set().union(*needs.values()), key=lambda k: -sum(k in v for v in needs.values()))
+    # integrators in the order the tasks want them (the scenes' order puts the longest first, so that they
+    # do not start last), then those more tasks need
+    tasks = list(needs)
+    warms = sorted(set().union(*needs.values()),
+                   key=lambda k: (min(i for i, t in enumerate(tasks) if k in needs[t]),
+                                  -sum(k in v for v in needs.values())))
     compiled: set = set()
     parted: set = set()  # integrators whose model parts were compiled, or are, while the first one compiles
     scenes = list(needs)
