@@ -28,18 +28,44 @@ def unpack(p):
     return np.array([a * a, b * b, c * c]), h, m, g, inertia, sigma
 
 
+# numba compiles these plain loops in about a second; with ``@``, ``np.outer`` and ``np.linalg.solve`` (BLAS
+# and LAPACK bindings) it took 12 s
 @njit(cache=True)
 def cross(u, v):
     return np.array([u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]])
 
 
 @njit(cache=True)
+def dot(u, v):
+    return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]
+
+
+@njit(cache=True)
+def matvec(a, v):
+    return np.array([dot(a[0], v), dot(a[1], v), dot(a[2], v)])
+
+
+@njit(cache=True)
 def contact(n, e2, h):
     """Contact point r(n) and its derivative matrix dr/dn."""
-    d = np.sqrt(n @ (e2 * n))
-    r = np.array([0.0, 0.0, h]) - e2 * n / d
-    drdn = -np.diag(e2) / d + np.outer(e2 * n, e2 * n) / d**3
+    en = e2 * n
+    d = np.sqrt(dot(n, en))
+    r = np.array([0.0, 0.0, h]) - en / d
+    drdn = np.empty((3, 3))
+    for i in range(3):
+        for j in range(3):
+            drdn[i, j] = en[i] * en[j] / d**3 - (e2[i] / d if i == j else 0.0)
     return r, drdn
+
+
+@njit(cache=True)
+def solve3(a, b):
+    """``x`` with ``a x = b`` for a 3 x 3 ``a`` by Cramer's rule (the matrix here, inertia plus
+    ``m (r.r 1 - r r^T)``, is symmetric positive definite and well conditioned)."""
+    c0, c1, c2 = a[:, 0].copy(), a[:, 1].copy(), a[:, 2].copy()
+    k = cross(c1, c2)
+    det = dot(c0, k)
+    return np.array([dot(b, k), dot(c0, cross(b, c2)), dot(c0, cross(c1, b))]) / det
 
 
 @njit(cache=True)
@@ -47,11 +73,15 @@ def _rhs(s, e2, h, m, g, inertia, sigma):
     n, w = s[:3].copy(), s[3:6].copy()
     r, drdn = contact(n, e2, h)
     n_dot = cross(n, w)
-    r_dot = drdn @ n_dot
+    r_dot = matvec(drdn, n_dot)
     v = -cross(w, r)
-    lhs = inertia + m * ((r @ r) * np.eye(3) - np.outer(r, r))
-    rhs_ = -cross(w, inertia @ w) + m * cross(r, -cross(w, r_dot) + cross(w, v) + g * n) - sigma * w
-    w_dot = np.linalg.solve(lhs, rhs_)
+    lhs = inertia.copy()
+    rr = dot(r, r)
+    for i in range(3):
+        for j in range(3):
+            lhs[i, j] += m * ((rr if i == j else 0.0) - r[i] * r[j])
+    rhs_ = -cross(w, matvec(inertia, w)) + m * cross(r, -cross(w, r_dot) + cross(w, v) + g * n) - sigma * w
+    w_dot = solve3(lhs, rhs_)
     return np.concatenate((n_dot, w_dot))
 
 
