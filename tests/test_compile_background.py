@@ -54,6 +54,7 @@ def _two_mode():
     return m, p, y0
 
 
+@pytest.mark.xdist_group("dp54_tsit5")  # one worker compiles the DP54 and Tsit5 integrators for all such tests
 @pytest.mark.parametrize("method,output", [("DOP853", "every step"), ("DOP853", "t_eval"), ("RK45", "every step"),
                                            pytest.param("RK45", "t_eval", marks=pytest.mark.slow)])
 def test_handover_takes_the_steps_of_the_compiled_run(background, method, output, capsys):

@@ -55,6 +55,7 @@ def test_max_steps_reached_is_reported(single):
     assert r.t[-1] == pytest.approx(10.0)
 
 
+@pytest.mark.xdist_group("dp54_tsit5")  # one worker compiles the DP54 and Tsit5 integrators for all such tests
 def test_step_size_underflow_is_reported(single):
     """An overflowing state makes every error estimate non-finite: the step shrinks to the
     resolution of t and the run stops with that failure instead of returning garbage."""

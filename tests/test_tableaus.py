@@ -120,6 +120,7 @@ def test_generic_template_bodies_agree_with_the_unrolled_ones(method):
     assert "for s in range(1, N_STAGES + 1):" in src and "generic loops" in src
 
 
+@pytest.mark.xdist_group("dp54_tsit5")  # one worker compiles the DP54 and Tsit5 integrators for all such tests
 def test_tsit5_on_the_paper_scene_matches_dop853():
     """Fig. 'numerical': the spin reversal at t = 106.361 and the final state, Tsit5 against DOP853 (an
     independent method of order 8) at rtol 1e-11; Tsit5 needs fewer evaluations than DP54 at equal rtol."""
