@@ -240,7 +240,9 @@ def test_cli_refuses_bad_input_in_one_line(capsys, argv, needle):
 
 def test_cli_takes_the_step_and_the_step_budget(capsys):
     """`--h` and `--max-steps` exist (the RK4 error asks for `h`); a spent budget is a reported failure (exit 1)."""
-    assert main(["simulate", "--method", "RK4", "--h", "0.05", "--t-end", "10"]) == 0
+    # the full single-mode model: its RK4 kernel is the one the other checks compile
+    assert main(["simulate", "--model", "single_mode", "--fidelity", "full", "--method", "RK4", "--h", "0.05",
+                 "--t-end", "10"]) == 0
     out, _ = capsys.readouterr()
     assert "RK4, h=0.05: 200 steps" in out
     assert main(["simulate", "--method", "scipy:RK45", "--t-end", "1e12", "--max-steps", "20"]) == 1
