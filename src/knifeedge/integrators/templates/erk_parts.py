@@ -197,14 +197,25 @@ def arguments(t0, t1, y0, f0, p, *rest) -> tuple:
     q = _constants(p)
     if q.size != NQ:
         raise ValueError(f"constants(p) has {q.size} elements, not the {NQ} this kernel was specialized to")
-    return (parts(), t0, t1, y0, f0, q, p) + rest
+    return (parts(), t0, t1, y0, f0, q, p) + _one_signature(rest)
+
+
+def _one_signature(rest: tuple) -> tuple:
+    """``rest`` (``rtol`` .. ``ev_k``) with ``pair`` read-only, as ``simulate`` passes it: a writable one is
+    another numba type, and the integrator would compile a second time (3-4 s) for it."""
+    pair = rest[8]
+    if pair.flags.writeable:
+        pair = pair.view()
+        pair.flags.writeable = False
+        rest = rest[:8] + (pair,) + rest[9:]
+    return rest
 
 
 def argument_types(args: tuple) -> tuple:
     """numba's types of the integrator's arguments for the arguments ``args`` of :func:`solve` (compiles
     nothing: what a separate process needs to compile the integrator)."""
     t0, t1, y0, f0, p, *rest = args
-    sample = (np.zeros(5, dtype=np.int64), t0, t1, y0, f0, np.zeros(1), p, *rest)
+    sample = (np.zeros(5, dtype=np.int64), t0, t1, y0, f0, np.zeros(1), p, *_one_signature(tuple(rest)))
     return tuple(_driver.solve.typeof_pyval(a) for a in sample)
 
 
