@@ -25,7 +25,8 @@ round-off; the tests call both on one workspace (``tests/test_irparts.py``).
 
 A right-hand side that fails (numba's status nonzero) makes ``attempt``
 return NaN, so the step is rejected and the run ends with the step-size
-failure instead of going on with garbage.
+failure instead of going on with garbage.  (``dense`` has no way to say so:
+its extra stages lie inside a step whose own stages all succeeded.)
 
 The compiled parts are kept in one file per kernel module and machine
 (:func:`cache_file`: numba's serialized object code), so that a second
