@@ -48,7 +48,7 @@ DENSE_ARGS = ("double %t", "double %h", "ptr %ws", "i64 %nq")
 #: the flags of every floating-point operation of the two parts (numba's ``fastmath={"contract"}``)
 FLAGS = "contract"
 #: the version of what this module writes (part of the cache key)
-FORMAT = 1
+FORMAT = 2
 _NAN = "0x7FF8000000000000"
 
 
@@ -250,17 +250,25 @@ def _function(returns: str, name: str, args, w: _Writer) -> str:
     return f'define {returns} @"{name}"({", ".join(args)}) {{\nentry:\n' + "\n".join(w.lines) + "\n}\n"
 
 
-def module_ir(tab: Tableau, n: int, nq: int, names: tuple, rhs: str) -> str:
-    """The IR module of both parts (``names``: the symbols of ``attempt`` and ``dense``) for ``tab`` on
-    ``n`` states and ``nq`` constants, declaring the right-hand side ``rhs``; every call of it is inlined
-    (``alwaysinline``: measured on the two-mode model, a call left in costs 7-9 % per evaluation)."""
+def module_ir(tab: Tableau, n: int, nq: int, names: tuple, rhs: str, rhs_definition: str = "") -> str:
+    """The IR module of both parts (``names``: the symbols of ``attempt`` and ``dense``, and optionally of a
+    C-callable ``rhs`` part) for ``tab`` on ``n`` states and ``nq`` constants, calling the right-hand side
+    ``rhs`` (numba's calling convention): defined by ``rhs_definition`` (its IR, :func:`.irexpr.rhs_ir`), or
+    else declared (numba's compiled ``rhs`` part, linked in).  Every call of it is inlined (``alwaysinline``:
+    measured on the two-mode model, a call left in costs 7-9 % per evaluation)."""
+    from .irexpr import c_wrapper_ir
+
+    lines = rhs_definition.splitlines()
+    declarations = sorted({x for x in lines if x.startswith("declare ")}
+                          | {"declare double @llvm.fabs.f64(double)", "declare double @llvm.sqrt.f64(double)"})
     return "\n".join([
         f"; knifeedge parts of {tab.name}, {n} states, format {FORMAT}",
-        f'declare i32 @"{rhs}"(ptr, ptr, double, ptr, ptr, i64, ptr)',
-        "declare double @llvm.fabs.f64(double)",
-        "declare double @llvm.sqrt.f64(double)",
+        "\n".join(x for x in lines if not x.startswith("declare "))
+        or f'declare i32 @"{rhs}"(ptr, ptr, double, ptr, ptr, i64, ptr)',
+        *declarations,
         attempt_ir(tab, n, nq, names[0], rhs),
         dense_ir(tab, n, nq, names[1], rhs),
+        *([c_wrapper_ir(rhs, names[2])] if len(names) > 2 else []),
         "attributes #0 = { alwaysinline }",
         "",
     ])
@@ -303,18 +311,23 @@ def cache_file(kernel_file) -> Path:
 
 
 def symbols(kernel_file) -> tuple:
-    """The symbols of ``attempt`` and ``dense`` for the kernel module ``kernel_file`` (unique per module)."""
+    """The symbols of ``attempt``, ``dense`` and the C-callable ``rhs`` for the kernel module ``kernel_file``
+    (unique per module)."""
     stem = Path(kernel_file).stem
-    return (f"knifeedge.attempt.{stem}", f"knifeedge.dense.{stem}")
+    return (f"knifeedge.attempt.{stem}", f"knifeedge.dense.{stem}", f"knifeedge.rhs.{stem}")
 
 
-def load_or_compile(kernel_file, tableau: str, n: int, nq: int, rhs_cfunc) -> tuple:
-    """``(library, attempt address, dense address)`` of the kernel module ``kernel_file``'s parts: loaded
-    from :func:`cache_file`, or compiled from :func:`module_ir` with the compiled ``rhs`` part
-    ``rhs_cfunc`` (a ``numba.cfunc``) linked in, and saved there.
+def load_or_compile(kernel_file, tableau: str, n: int, nq: int, rhs_source, rhs_cfunc) -> tuple:
+    """``(library, attempt address, dense address, rhs address)`` of the kernel module ``kernel_file``'s
+    parts: loaded from :func:`cache_file`, or compiled from :func:`module_ir` and saved there.
 
-    A cache file that cannot be read is removed, said in one line on stderr, and compiled again.
+    The right-hand side is ``rhs_source`` (the generated ``rhs_q_into``) written as IR by
+    :func:`.irexpr.rhs_ir`; when that cannot write it, numba's compiled ``rhs`` part (``rhs_cfunc()``, a
+    ``numba.cfunc``) linked in.  A cache file that cannot be read is removed, said in one line on stderr,
+    and compiled again.
     """
+    from .irexpr import Unsupported, rhs_ir
+
     from numba.core.compiler_lock import global_compiler_lock
 
     path = cache_file(kernel_file)
@@ -332,11 +345,18 @@ def load_or_compile(kernel_file, tableau: str, n: int, nq: int, rhs_cfunc) -> tu
         path.unlink(missing_ok=True)
         print(f"knifeedge: discarded a damaged compiled-parts cache file {path} ({problem}); compiling it again",
               file=sys.stderr, flush=True)
-    native = rhs_cfunc.native_name
-    if not native.startswith("cfunc."):
-        raise RuntimeError(f"unexpected symbol of a compiled C callback: {native!r}")
-    text = module_ir(Tableau(tableau), n, nq, names, native[len("cfunc."):])
-    lib = compile_library(text, f"knifeedge_parts_{Path(kernel_file).stem}", [rhs_cfunc._library])
+    native = f"knifeedge.rhs_native.{Path(kernel_file).stem}"
+    try:
+        definition, link = rhs_ir(rhs_source, native), []
+    except Unsupported:
+        compiled = rhs_cfunc()
+        native = compiled.native_name
+        if not native.startswith("cfunc."):
+            raise RuntimeError(f"unexpected symbol of a compiled C callback: {native!r}") from None
+        native = native[len("cfunc."):]
+        definition, link = "", [compiled._library]
+    text = module_ir(Tableau(tableau), n, nq, names, native, definition)
+    lib = compile_library(text, f"knifeedge_parts_{Path(kernel_file).stem}", link)
     addresses = [lib.get_pointer_to_function(x) for x in names]
     try:
         data = pickle.dumps(lib.serialize_using_object_code(), protocol=pickle.HIGHEST_PROTOCOL)

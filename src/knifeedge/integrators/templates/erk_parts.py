@@ -162,19 +162,20 @@ def parts() -> np.ndarray:
     """The addresses of the compiled parts (compiled, or loaded from the cache, at the first call), then
     ``NV``: the ``fns`` argument of the integrator."""
     if not _PARTS:
-        rhs_c = cfunc(RHS_SIG, **_OPTIONS)(rhs)
         events_c = cfunc(EVENTS_SIG, **_OPTIONS)(events)
-        if IR:
-            lib, attempt_address, dense_address = _irparts.load_or_compile(__file__, TABLEAU, N, NQ, rhs_c)
-            kept = (rhs_c, events_c, lib)
+        if IR:  # the right-hand side too, as IR (numba's compiled rhs part if it cannot be written so)
+            lib, attempt_address, dense_address, rhs_address = _irparts.load_or_compile(
+                __file__, TABLEAU, N, NQ, _rhs, lambda: cfunc(RHS_SIG, **_OPTIONS)(rhs))
+            kept = (events_c, lib)
         else:
             # "contract": fused multiply-adds in the stage sums
             fast = dict(_OPTIONS, fastmath={"contract"})
+            rhs_c = cfunc(RHS_SIG, **_OPTIONS)(rhs)
             attempt_c, dense_c = cfunc(ATTEMPT_SIG, **fast)(attempt), cfunc(DENSE_SIG, **fast)(dense)
             kept = (rhs_c, events_c, attempt_c, dense_c)
-            attempt_address, dense_address = attempt_c.address, dense_c.address
+            rhs_address, attempt_address, dense_address = rhs_c.address, attempt_c.address, dense_c.address
         _PARTS.append(kept)  # kept alive: the integrator calls them by address
-        _PARTS.append(np.array([rhs_c.address, attempt_address, dense_address, events_c.address, NV],
+        _PARTS.append(np.array([rhs_address, attempt_address, dense_address, events_c.address, NV],
                                dtype=np.int64))
     return _PARTS[1]
 
@@ -186,7 +187,7 @@ def is_compiled() -> bool:
     if IR:
         if not _irparts.cache_file(__file__).is_file():
             return False
-        return all(cached(f) for f in (rhs, events, _driver.solve))
+        return all(cached(f) for f in (events, _driver.solve))
     return all(cached(f) for f in (rhs, attempt, dense, events, _driver.solve))
 
 
