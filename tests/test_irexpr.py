@@ -54,6 +54,51 @@ def test_generated_right_hand_sides_are_written_and_agree_bit_for_bit(key):
             np.testing.assert_array_equal(ir.view(np.int64), nb.view(np.int64))
 
 
+CONSTANTS = ctypes.CFUNCTYPE(None, _P, _P)
+
+
+@pytest.mark.parametrize("key", sorted(MODULES), ids="_".join)
+def test_generated_constants_are_written_and_agree_bit_for_bit(key):
+    """Every generated module's constants(p) is written as IR (reading exactly the model's parameters) and
+    gives numba's result exactly at random parameters."""
+    mod = importlib.import_module(f"knifeedge.generated.{MODULES[key]}")
+    rng = np.random.default_rng(1 + sum(map(ord, MODULES[key])))
+    nq = mod.constants(rng.uniform(0.5, 2.0, len(mod.PARAM_NAMES))).size
+    text, reads = irexpr.constants_ir(mod.constants, f"test.constants.{MODULES[key]}", nq)
+    assert reads == len(mod.PARAM_NAMES)
+    lib = irparts.compile_library(text, f"test_irexpr_constants_{MODULES[key]}", [])
+    _KEEP.append(lib)
+    fn = CONSTANTS(lib.get_pointer_to_function(f"test.constants.{MODULES[key]}"))
+    for _ in range(3):
+        p = rng.uniform(0.5, 2.0, len(mod.PARAM_NAMES))
+        q = np.full(nq, np.nan)
+        fn(p.ctypes.data, q.ctypes.data)
+        np.testing.assert_array_equal(q.view(np.int64), mod.constants(p).view(np.int64))
+    with pytest.raises(irexpr.Unsupported):  # another size than the one it allocates
+        irexpr.constants_ir(mod.constants, "x", nq + 1)
+
+
+def test_a_kernel_checks_the_parameters_its_ir_constants_read():
+    """The kernel's constants(p) (IR) refuses a parameter vector shorter than what it reads, where reading
+    past its end would give garbage; the stand-in's np.array form is left to numba."""
+    from knifeedge.integrators import specialize
+    from knifeedge.integrators.templates import _stub
+
+    with pytest.raises(irexpr.Unsupported):
+        irexpr.constants_ir(_stub.constants, "x", 2)
+    mod = importlib.import_module("knifeedge.generated.single_mode_full")
+    kernel = specialize.load_kernel("erk", "DOP853", mod, "rhs_q_into", len(mod.STATE_NAMES))
+    p = np.array([1.0, 1.0, 1.0, 1.0])
+    np.testing.assert_array_equal(kernel.constants(p), mod.constants(p))
+    with pytest.raises(ValueError, match="reads 4"):
+        kernel.constants(p[:3])
+    # where the IR divides by zero (an infinite constant), numba's compilation answers: it raises
+    celt = importlib.import_module("knifeedge.generated.celt_reduced")
+    kernel = specialize.load_kernel("erk", "DOP853", celt, "rhs_q_into", len(celt.STATE_NAMES))
+    with pytest.raises(ZeroDivisionError):
+        kernel.constants(np.ones(len(celt.PARAM_NAMES)))
+
+
 def _probe(t, s, q, ds):
     a = s[0]
     b = -s[1] / q[0]

@@ -50,6 +50,7 @@ class _Body:
         self.names = dict(scalars)  # name -> IR value
         self.arrays = arrays  # name -> IR pointer argument
         self.used: set = set()
+        self.extent: dict = {}  # array name -> 1 + its largest index used
 
     def value(self, text: str) -> str:
         self.n += 1
@@ -62,6 +63,8 @@ class _Body:
         index = node.slice
         if not (isinstance(index, ast.Constant) and type(index.value) is int and index.value >= 0):
             raise Unsupported(f"index {ast.unparse(index)}")
+        name = node.value.id
+        self.extent[name] = max(self.extent.get(name, 0), index.value + 1)
         return self.value(f"getelementptr inbounds double, ptr {self.arrays[node.value.id]}, i64 {index.value}")
 
     def expr(self, node) -> str:
@@ -164,6 +167,43 @@ def rhs_ir(func, symbol: str) -> str:
     declarations = [f"declare double @{name}(double{', double' if name == 'llvm.pow.f64' else ''})"
                     for name in sorted(body.used)]
     return head + "\n".join(body.lines + ["  ret i32 0", "}"]) + "\n" + "\n".join(declarations) + "\n"
+
+
+def constants_ir(func, symbol: str, nq: int) -> tuple:
+    """The IR of a generated ``constants(p)`` (``q = np.empty(nq)``, ``q[i] = ...``, ``return q``) as the
+    C-callable ``void symbol(double* p, double* q)`` writing into ``q``, and the number of parameters it
+    reads (``p`` must hold at least that many).  Raises :class:`Unsupported` for anything else."""
+    py = getattr(func, "py_func", func)
+    try:
+        tree = ast.parse(textwrap.dedent(inspect.getsource(py)))
+    except (OSError, TypeError, SyntaxError) as exc:
+        raise Unsupported(f"no source ({exc})") from None
+    fn = tree.body[0]
+    if not isinstance(fn, ast.FunctionDef) or [a.arg for a in fn.args.args] != ["p"] \
+            or fn.args.vararg or fn.args.kwarg or fn.args.kwonlyargs or fn.args.defaults:
+        raise Unsupported("not a function of (p)")
+    body = _Body(arrays={"p": "%p"}, scalars={})
+    out = None
+    statements = list(fn.body)
+    last = statements.pop() if statements else None
+    if not (isinstance(last, ast.Return) and isinstance(last.value, ast.Name)):
+        raise Unsupported("does not end by returning its array")
+    for node in statements:
+        if (isinstance(node, ast.Assign) and len(node.targets) == 1 and isinstance(node.targets[0], ast.Name)
+                and out is None and ast.unparse(node.value) == f"np.empty({nq})"):
+            out = node.targets[0].id
+            body.arrays[out] = "%q"
+            continue
+        body.statement(node)
+    if out is None or last.value.id != out:
+        raise Unsupported(f"does not return its np.empty({nq})")
+    if body.extent.get(out, 0) > nq:
+        raise Unsupported(f"writes beyond its np.empty({nq})")
+    head = f'define void @"{symbol}"(ptr nocapture readonly %p, ptr nocapture %q) {{\nentry:\n'
+    declarations = [f"declare double @{name}(double{', double' if name == 'llvm.pow.f64' else ''})"
+                    for name in sorted(body.used)]
+    text = head + "\n".join(body.lines + ["  ret void", "}"]) + "\n" + "\n".join(declarations) + "\n"
+    return text, body.extent.get("p", 0)
 
 
 def c_wrapper_ir(native: str, symbol: str) -> str:

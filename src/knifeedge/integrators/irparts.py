@@ -250,22 +250,26 @@ def _function(returns: str, name: str, args, w: _Writer) -> str:
     return f'define {returns} @"{name}"({", ".join(args)}) {{\nentry:\n' + "\n".join(w.lines) + "\n}\n"
 
 
-def module_ir(tab: Tableau, n: int, nq: int, names: tuple, rhs: str, rhs_definition: str = "") -> str:
+def module_ir(tab: Tableau, n: int, nq: int, names: tuple, rhs: str, rhs_definition: str = "",
+              extra: str = "") -> str:
     """The IR module of both parts (``names``: the symbols of ``attempt`` and ``dense``, and optionally of a
     C-callable ``rhs`` part) for ``tab`` on ``n`` states and ``nq`` constants, calling the right-hand side
     ``rhs`` (numba's calling convention): defined by ``rhs_definition`` (its IR, :func:`.irexpr.rhs_ir`), or
     else declared (numba's compiled ``rhs`` part, linked in).  Every call of it is inlined (``alwaysinline``:
-    measured on the two-mode model, a call left in costs 7-9 % per evaluation)."""
+    measured on the two-mode model, a call left in costs 7-9 % per evaluation).  ``extra``: more
+    definitions (their declarations of intrinsics merged with the parts')."""
     from .irexpr import c_wrapper_ir
 
     lines = rhs_definition.splitlines()
-    declarations = sorted({x for x in lines if x.startswith("declare ")}
+    more = extra.splitlines()
+    declarations = sorted({x for x in lines + more if x.startswith("declare ")}
                           | {"declare double @llvm.fabs.f64(double)", "declare double @llvm.sqrt.f64(double)"})
     return "\n".join([
         f"; knifeedge parts of {tab.name}, {n} states, format {FORMAT}",
         "\n".join(x for x in lines if not x.startswith("declare "))
         or f'declare i32 @"{rhs}"(ptr, ptr, double, ptr, ptr, i64, ptr)',
         *declarations,
+        *[x for x in more if not x.startswith("declare ")],
         attempt_ir(tab, n, nq, names[0], rhs),
         dense_ir(tab, n, nq, names[1], rhs),
         *([c_wrapper_ir(rhs, names[2])] if len(names) > 2 else []),
@@ -311,22 +315,36 @@ def cache_file(kernel_file) -> Path:
 
 
 def symbols(kernel_file) -> tuple:
-    """The symbols of ``attempt``, ``dense`` and the C-callable ``rhs`` for the kernel module ``kernel_file``
-    (unique per module)."""
+    """The symbols of ``attempt``, ``dense``, the C-callable ``rhs``, then of ``constants``, of the number of
+    parameters it reads and of an ``events`` part that does nothing, for the kernel module ``kernel_file``
+    (unique per module; the first three are in every parts library, the others where they could be written)."""
     stem = Path(kernel_file).stem
-    return (f"knifeedge.attempt.{stem}", f"knifeedge.dense.{stem}", f"knifeedge.rhs.{stem}")
+    return (f"knifeedge.attempt.{stem}", f"knifeedge.dense.{stem}", f"knifeedge.rhs.{stem}",
+            f"knifeedge.constants.{stem}", f"knifeedge.constants_reads.{stem}", f"knifeedge.no_events.{stem}")
 
 
-def load_or_compile(kernel_file, tableau: str, n: int, nq: int, rhs_source, rhs_cfunc) -> tuple:
-    """``(library, attempt address, dense address, rhs address)`` of the kernel module ``kernel_file``'s
-    parts: loaded from :func:`cache_file`, or compiled from :func:`module_ir` and saved there.
+def _extras_ir(names: tuple, constants: str, reads: int) -> str:
+    """``constants`` (its IR, or "") with the function returning ``reads``, and the ``events`` part that
+    does nothing (for a model without event functions: the integrator never calls it)."""
+    text = f'define void @"{names[5]}"(ptr %s, ptr %p, i64 %n_p, ptr %out) {{\nentry:\n  ret void\n}}\n'
+    if constants:
+        text += constants + f'define i64 @"{names[4]}"() {{\nentry:\n  ret i64 {reads}\n}}\n'
+    return text
+
+
+def load_or_compile(kernel_file, tableau: str, n: int, nq: int, rhs_source, rhs_cfunc,
+                    constants_source=None) -> tuple:
+    """``(library, addresses)`` of the kernel module ``kernel_file``'s parts, loaded from :func:`cache_file`,
+    or compiled from :func:`module_ir` and saved there; ``addresses`` are those of :func:`symbols` (0 for
+    ``constants`` and its count where it could not be written as IR).
 
     The right-hand side is ``rhs_source`` (the generated ``rhs_q_into``) written as IR by
     :func:`.irexpr.rhs_ir`; when that cannot write it, numba's compiled ``rhs`` part (``rhs_cfunc()``, a
-    ``numba.cfunc``) linked in.  A cache file that cannot be read is removed, said in one line on stderr,
-    and compiled again.
+    ``numba.cfunc``) linked in.  ``constants_source`` (the generated ``constants``) is written by
+    :func:`.irexpr.constants_ir` when it can.  A cache file that cannot be read is removed, said in one line
+    on stderr, and compiled again.
     """
-    from .irexpr import Unsupported, rhs_ir
+    from .irexpr import Unsupported, constants_ir, rhs_ir
 
     from numba.core.compiler_lock import global_compiler_lock
 
@@ -337,8 +355,8 @@ def load_or_compile(kernel_file, tableau: str, n: int, nq: int, rhs_source, rhs_
             with global_compiler_lock:
                 lib = _codegen().unserialize_library(pickle.loads(path.read_bytes()))
                 addresses = [lib.get_pointer_to_function(x) for x in names]
-            if all(addresses):
-                return (lib, *addresses)
+            if all(addresses[:3]) and addresses[5] and bool(addresses[3]) == bool(addresses[4]):
+                return lib, addresses
             problem = "it lacks the parts' symbols"
         except Exception as exc:  # noqa: BLE001 - any unreadable file is compiled again
             problem = f"{type(exc).__name__}: {exc}"
@@ -355,9 +373,16 @@ def load_or_compile(kernel_file, tableau: str, n: int, nq: int, rhs_source, rhs_
             raise RuntimeError(f"unexpected symbol of a compiled C callback: {native!r}") from None
         native = native[len("cfunc."):]
         definition, link = "", [compiled._library]
-    text = module_ir(Tableau(tableau), n, nq, names, native, definition)
+    constants, reads = "", 0
+    if constants_source is not None:
+        try:
+            constants, reads = constants_ir(constants_source, names[3], nq)
+        except Unsupported:
+            pass
+    text = module_ir(Tableau(tableau), n, nq, names[:3], native, definition, _extras_ir(names, constants, reads))
     lib = compile_library(text, f"knifeedge_parts_{Path(kernel_file).stem}", link)
-    addresses = [lib.get_pointer_to_function(x) for x in names]
+    addresses = [lib.get_pointer_to_function(x) if i < 3 or i == 5 or constants else 0
+                 for i, x in enumerate(names)]
     try:
         data = pickle.dumps(lib.serialize_using_object_code(), protocol=pickle.HIGHEST_PROTOCOL)
         tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
@@ -365,4 +390,4 @@ def load_or_compile(kernel_file, tableau: str, n: int, nq: int, rhs_source, rhs_
         os.replace(tmp, path)
     except OSError as exc:  # a read-only cache: the parts stay compiled for this process only
         print(f"knifeedge: could not keep the compiled parts in {path} ({exc})", file=sys.stderr, flush=True)
-    return (lib, *addresses)
+    return lib, addresses

@@ -21,6 +21,8 @@ their addresses (:mod:`knifeedge.integrators.fnptr`).  :func:`solve` is the
 integrator with this model's parts: it takes the arguments of ``erk.solve``
 without ``fns`` and ``q``.
 """
+import ctypes
+
 import numpy as np
 from numba import carray, cfunc, types
 
@@ -162,22 +164,49 @@ def parts() -> np.ndarray:
     """The addresses of the compiled parts (compiled, or loaded from the cache, at the first call), then
     ``NV``: the ``fns`` argument of the integrator."""
     if not _PARTS:
-        events_c = cfunc(EVENTS_SIG, **_OPTIONS)(events)
-        if IR:  # the right-hand side too, as IR (numba's compiled rhs part if it cannot be written so)
-            lib, attempt_address, dense_address, rhs_address = _irparts.load_or_compile(
-                __file__, TABLEAU, N, NQ, _rhs, lambda: cfunc(RHS_SIG, **_OPTIONS)(rhs))
-            kept = (events_c, lib)
+        constants = None
+        if IR:  # the right-hand side and constants too, as IR (numba's compilation where they cannot be)
+            lib, addresses = _irparts.load_or_compile(__file__, TABLEAU, N, NQ, _rhs,
+                                                      lambda: cfunc(RHS_SIG, **_OPTIONS)(rhs), _constants)
+            attempt_address, dense_address, rhs_address = addresses[:3]
+            if addresses[3]:
+                reads = ctypes.CFUNCTYPE(ctypes.c_int64)(addresses[4])()
+                constants = (ctypes.CFUNCTYPE(None, ctypes.c_void_p, ctypes.c_void_p)(addresses[3]), reads)
+            events_c = None if NV else addresses[5]  # no event functions: never called
+            kept = (lib,)
         else:
             # "contract": fused multiply-adds in the stage sums
             fast = dict(_OPTIONS, fastmath={"contract"})
             rhs_c = cfunc(RHS_SIG, **_OPTIONS)(rhs)
             attempt_c, dense_c = cfunc(ATTEMPT_SIG, **fast)(attempt), cfunc(DENSE_SIG, **fast)(dense)
-            kept = (rhs_c, events_c, attempt_c, dense_c)
+            kept = (rhs_c, attempt_c, dense_c)
             rhs_address, attempt_address, dense_address = rhs_c.address, attempt_c.address, dense_c.address
+            events_c = None
+        if events_c is None:
+            events_c = cfunc(EVENTS_SIG, **_OPTIONS)(events)
+            kept += (events_c,)
+            events_c = events_c.address
         _PARTS.append(kept)  # kept alive: the integrator calls them by address
-        _PARTS.append(np.array([rhs_address, attempt_address, dense_address, events_c.address, NV],
-                               dtype=np.int64))
+        _PARTS.append(np.array([rhs_address, attempt_address, dense_address, events_c, NV], dtype=np.int64))
+        _PARTS.append(constants)
     return _PARTS[1]
+
+
+def constants(p) -> np.ndarray:
+    """``q = constants(p)`` of the right-hand side: the model's, compiled as IR with the parts where it could be
+    written so (``p`` must hold the parameters it reads), else numba's compilation of it."""
+    parts()
+    if _PARTS[2] is None:
+        return _constants(p)
+    fn, reads = _PARTS[2]
+    p = np.ascontiguousarray(p, dtype=np.float64)
+    if p.ndim != 1 or p.size < reads:
+        raise ValueError(f"the parameters have {p.size} elements; constants(p) reads {reads}")
+    q = np.empty(NQ)
+    fn(p.ctypes.data, q.ctypes.data)
+    if not np.isfinite(q).all():  # numba's compilation raises where it divides by zero: say what it says
+        return _constants(p)
+    return q
 
 
 def is_compiled() -> bool:
@@ -187,7 +216,7 @@ def is_compiled() -> bool:
     if IR:
         if not _irparts.cache_file(__file__).is_file():
             return False
-        return all(cached(f) for f in (events, _driver.solve))
+        return all(cached(f) for f in ((events, _driver.solve) if NV else (_driver.solve,)))
     return all(cached(f) for f in (rhs, attempt, dense, events, _driver.solve))
 
 
@@ -195,7 +224,7 @@ def arguments(t0, t1, y0, f0, p, *rest) -> tuple:
     """The integrator's arguments for the arguments of :func:`solve`."""
     if y0.size != N:
         raise ValueError("the initial state does not have the size this kernel was specialized to")
-    q = _constants(p)
+    q = constants(p)
     if q.size != NQ:
         raise ValueError(f"constants(p) has {q.size} elements, not the {NQ} this kernel was specialized to")
     return (parts(), t0, t1, y0, f0, q, p) + _one_signature(rest)
