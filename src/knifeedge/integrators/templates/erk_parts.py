@@ -26,6 +26,7 @@ import ctypes
 import numpy as np
 from numba import carray, cfunc, types
 
+from knifeedge.integrators import fnptr as _fnptr
 from knifeedge.integrators import irparts as _irparts
 from knifeedge.integrators import tableau as _tableau
 from knifeedge.integrators.templates import erk as _driver  # knifeedge:driver
@@ -170,8 +171,7 @@ def parts() -> np.ndarray:
                                                       lambda: cfunc(RHS_SIG, **_OPTIONS)(rhs), _constants)
             attempt_address, dense_address, rhs_address = addresses[:3]
             if addresses[3]:
-                reads = ctypes.CFUNCTYPE(ctypes.c_int64)(addresses[4])()
-                constants = (ctypes.CFUNCTYPE(None, ctypes.c_void_p, ctypes.c_void_p)(addresses[3]), reads)
+                constants = (np.int64(addresses[3]), ctypes.CFUNCTYPE(ctypes.c_int64)(addresses[4])())
             events_c = None if NV else addresses[5]  # no event functions: never called
             kept = (lib,)
         else:
@@ -198,13 +198,13 @@ def constants(p) -> np.ndarray:
     parts()
     if _PARTS[2] is None:
         return _constants(p)
-    fn, reads = _PARTS[2]
-    p = np.ascontiguousarray(p, dtype=np.float64)
+    address, reads = _PARTS[2]
+    if not (type(p) is np.ndarray and p.dtype == np.float64 and p.ndim == 1 and p.flags.c_contiguous):
+        p = np.ascontiguousarray(p, dtype=np.float64)
     if p.ndim != 1 or p.size < reads:
         raise ValueError(f"the parameters have {p.size} elements; constants(p) reads {reads}")
-    q = np.empty(NQ)
-    fn(p.ctypes.data, q.ctypes.data)
-    if not np.isfinite(q).all():  # numba's compilation raises where it divides by zero: say what it says
+    q, finite = _fnptr.constants_at(address, p, NQ)
+    if not finite:  # numba's compilation raises where it divides by zero: say what it says
         return _constants(p)
     return q
 
