@@ -140,8 +140,9 @@ def test_demo_unchanged(capsys, tmp_path):
 
 def test_figures_compile_other_models_parts_while_the_first_integrator_compiles(monkeypatch, tmp_path):
     """figures._schedule: the first integrator compiles alone among the integrators, the other worker
-    compiles the next models' own parts meanwhile (never the first's), each integrator is compiled once,
-    and a scene starts only when every integrator it uses is compiled."""
+    compiles the next models' own parts meanwhile (never the first's; with the drawing functions of the
+    animated ones), each integrator is compiled once, and a scene starts only when every integrator it uses
+    is compiled."""
     import concurrent.futures as cf
     import threading
     import time
@@ -160,8 +161,8 @@ def test_figures_compile_other_models_parts_while_the_first_integrator_compiles(
         record("warm end", key)
         return "/".join(map(str, key))
 
-    def warm_parts(*key):
-        record("parts", key)
+    def warm_parts(*key, drawing=False):
+        record("parts", key, drawing)
         return True
 
     def render(kind):
@@ -182,6 +183,9 @@ def test_figures_compile_other_models_parts_while_the_first_integrator_compiles(
     first_end = min(e[0] for e in log if e[1] == "warm end")
     parts = [e for e in log if e[1] == "parts"]
     assert parts and all(e[0] < first_end and e[2] != warmed[0] for e in parts)
+    # the bodies of the animated scenes' models are drawn: their drawing functions are compiled with the parts
+    drawn = set().union(*(figures._animation_needs(n) for n in order))
+    assert all(e[3] == (e[2] in drawn) for e in parts) and any(e[3] for e in parts)
     assert not [e for e in log if e[1] == "warm start" and e[0] < first_end and e[2] != warmed[0]]
     tasks = [("scene", n, figures._scene_needs(n)) for n in order]
     tasks += [("animation", n, figures._animation_needs(n)) for n in order if n in figures.ANIMATIONS]

@@ -19,9 +19,13 @@ from pathlib import Path
 from .scenes import SCENE_NAMES, get_scene
 from .scenes.base import format_number
 
-#: heaviest first, so that the parallel run ends sooner
-_ORDER = ("numerical2", "knife_edge_rigid", "model_fidelity", "tinversion", "knife_edge_vs_celt", "celt", "table_path", "ellipses",
-          "celt_schoemer", "amplitudes", "numerical")
+#: the tasks, heaviest first (CPU seconds, cold: knife_edge_rigid 4.6-5.3, the GIFs of numerical2, celt and
+#: numerical 3.1, 2.7, 1.7, the scenes tinversion 2.1, numerical2 1.7, ...), so that the parallel run does not
+#: end on a long task started last; a scene's GIF is a task of its own, ("animation", name)
+_ORDER = (("scene", "knife_edge_rigid"), ("animation", "numerical2"), ("animation", "celt"), ("scene", "tinversion"),
+          ("scene", "numerical2"), ("animation", "numerical"), ("scene", "celt"), ("scene", "knife_edge_vs_celt"),
+          ("scene", "model_fidelity"), ("scene", "table_path"), ("scene", "ellipses"), ("scene", "celt_schoemer"),
+          ("scene", "amplitudes"), ("scene", "numerical"), ("scene", "rolling_disk"))
 #: scenes whose run is also animated, with the animation's settings (modest size and frame count)
 ANIMATIONS = {
     "numerical": {"frames": 120, "fps": 12.5, "size": (8.0, 4.5), "dpi": 80},
@@ -95,19 +99,30 @@ def warm(model: str, fidelity: str, pose: bool, method: str) -> str:
     return f"{model}/{fidelity}{'+pose' if pose else ''}/{method}"
 
 
-def warm_parts(model: str, fidelity: str, pose: bool, method: str) -> bool:
+def warm_parts(model: str, fidelity: str, pose: bool, method: str, drawing: bool = False) -> bool:
     """Compile (or load from the cache) only the model's parts of an adaptive method's integrator, not the
-    integrator they plug into; False if the method has no such parts (fixed step) or the model no such form."""
+    integrator they plug into, and with ``drawing`` the functions that draw its body (``body_points``,
+    ``body_outlines``, for the arrays an animation passes them); False if the method has no such parts
+    (fixed step) or the model no such form."""
     from .integrators import kernel_module
     from .models import load
 
     try:
-        module = kernel_module(load(model, fidelity=fidelity, pose=pose), method)
+        m = load(model, fidelity=fidelity, pose=pose)
+        module = kernel_module(m, method)
     except ValueError:
         return False
     if not hasattr(module, "parts"):
         return False
     module.parts()
+    if drawing:
+        from numba import types
+
+        vector = types.float64[::1]
+        for name, n_args in (("body_points", 2), ("body_outlines", 3)):
+            f = getattr(m.module, name, None)
+            if hasattr(f, "compile"):
+                f.compile((vector,) * n_args)
     return True
 
 
@@ -117,19 +132,21 @@ def _schedule(pool, workers: int, order: list, out: Path, report, progress, t0: 
     The first integrator compiles alone (it also compiles the helpers every
     kernel shares, which later processes then load from the cache), while
     the other processes compile the next models' parts of it (each model's
-    own code, which does not need the shared integrator); after that at most
+    own code, which does not need the shared integrator) and the functions
+    that draw the animated bodies; after that at most
     ``workers`` tasks run at once, a scene as soon as all its integrators are
     compiled, otherwise the next compilation, in the order of the first task
     that needs it.
     """
-    needs = {("scene", n): _scene_needs(n) for n in order}
-    needs.update({("animation", n): _animation_needs(n) for n in order if n in ANIMATIONS})
-    # integrators in the order the tasks want them (the scenes' order puts the longest first, so that they
+    tasks = [("scene", n) for n in order] + [("animation", n) for n in order if n in ANIMATIONS]
+    tasks.sort(key=lambda t: _ORDER.index(t) if t in _ORDER else len(_ORDER))  # heaviest first
+    needs = {t: (_scene_needs if t[0] == "scene" else _animation_needs)(t[1]) for t in tasks}
+    # integrators in the order the tasks want them (the tasks' order puts the longest first, so that they
     # do not start last), then those more tasks need
-    tasks = list(needs)
     warms = sorted(set().union(*needs.values()),
                    key=lambda k: (min(i for i, t in enumerate(tasks) if k in needs[t]),
                                   -sum(k in v for v in needs.values())))
+    drawn = set().union(*(needs[t] for t in tasks if t[0] == "animation"))  # their bodies are drawn too
     compiled: set = set()
     parted: set = set()  # integrators whose model parts were compiled, or are, while the first one compiles
     scenes = list(needs)
@@ -150,7 +167,7 @@ def _schedule(pool, workers: int, order: list, out: Path, report, progress, t0: 
             elif not compiled and any(w not in parted for w in warms):
                 k = next(w for w in warms if w not in parted)
                 parted.add(k)
-                running[pool.submit(warm_parts, *k)] = ("parts", k)
+                running[pool.submit(warm_parts, *k, drawing=k in drawn)] = ("parts", k)
             else:
                 break
         done, _ = cf.wait(list(running), return_when=cf.FIRST_COMPLETED)
@@ -183,7 +200,7 @@ def make_figures(out: str | Path, names=None, max_workers: int | None = None, pr
         get_scene(n)  # unknown names fail here, before any work
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
-    order = sorted(names, key=lambda n: _ORDER.index(n) if n in _ORDER else len(_ORDER))
+    order = sorted(names, key=lambda n: _ORDER.index(("scene", n)) if ("scene", n) in _ORDER else len(_ORDER))
     t0 = time.perf_counter()
     records: dict = {}
     workers = max_workers or min(len(order), os.cpu_count() or 1)
