@@ -9,13 +9,17 @@ compiled.
 
 The parts are the right-hand side (:func:`rhs`), the stages of a step with
 the error norm (:func:`attempt`), the interpolant (:func:`dense`) and the
-event functions (:func:`events`).  ``rhs`` and ``events`` are
-``numba.cfunc`` functions; ``attempt`` and ``dense`` are, when ``IR`` is
-true (a specialized kernel), straight-line LLVM IR written from the tableau
-with the state size and coefficients as constants and the right-hand side
-inlined (:mod:`knifeedge.integrators.irparts`), else numba's compilation of
-the loops over the tableau below (the reference the tests compare them
-with).  All are compiled on first use (:func:`parts`) and cached; the
+event functions (:func:`events`).  When ``IR`` is true (a specialized
+kernel), ``attempt`` and ``dense`` are straight-line LLVM IR written from
+the tableau with the state size and coefficients as constants
+(:mod:`knifeedge.integrators.irparts`), and the model's ``rhs_q_into`` and
+``constants`` are written into the same IR module from their Python
+(:mod:`knifeedge.integrators.irexpr`; the right-hand side inlined into the
+stages), numba compiling them only where that cannot be done; ``events`` is
+a ``numba.cfunc`` (a no-op from the IR module for a model without event
+functions).  Otherwise all four are numba's compilation (``attempt`` and
+``dense`` of the loops over the tableau below: the reference the tests
+compare the IR with).  All are compiled on first use (:func:`parts`) and cached; the
 integrator, compiled once per method for every model, calls them through
 their addresses (:mod:`knifeedge.integrators.fnptr`).  :func:`solve` is the
 integrator with this model's parts: it takes the arguments of ``erk.solve``
@@ -172,7 +176,7 @@ def parts() -> np.ndarray:
             attempt_address, dense_address, rhs_address = addresses[:3]
             if addresses[3]:
                 constants = (np.int64(addresses[3]), ctypes.CFUNCTYPE(ctypes.c_int64)(addresses[4])())
-            events_c = None if NV else addresses[5]  # no event functions: never called
+            events_address = None if NV else addresses[5]  # no event functions: a no-op, never called
             kept = (lib,)
         else:
             # "contract": fused multiply-adds in the stage sums
@@ -181,13 +185,13 @@ def parts() -> np.ndarray:
             attempt_c, dense_c = cfunc(ATTEMPT_SIG, **fast)(attempt), cfunc(DENSE_SIG, **fast)(dense)
             kept = (rhs_c, attempt_c, dense_c)
             rhs_address, attempt_address, dense_address = rhs_c.address, attempt_c.address, dense_c.address
-            events_c = None
-        if events_c is None:
+            events_address = None
+        if events_address is None:
             events_c = cfunc(EVENTS_SIG, **_OPTIONS)(events)
             kept += (events_c,)
-            events_c = events_c.address
+            events_address = events_c.address
         _PARTS.append(kept)  # kept alive: the integrator calls them by address
-        _PARTS.append(np.array([rhs_address, attempt_address, dense_address, events_c, NV], dtype=np.int64))
+        _PARTS.append(np.array([rhs_address, attempt_address, dense_address, events_address, NV], dtype=np.int64))
         _PARTS.append(constants)
     return _PARTS[1]
 
