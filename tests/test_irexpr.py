@@ -112,16 +112,18 @@ def _probe(t, s, q, ds):
     ds[1] = a**-3 + abs(b) ** (-3.0 / 2.0)
     ds[2] = math.sqrt(q[1]) * math.sin(a * t) - math.cos(b) / (1 + a * a)
     ds[3] = math.exp(-a) + math.log(q[1]) + +b - (a - b) * (a + b)
+    ds[4] = a ** (2 * 3) + b * (1 / 3) + a ** (1 / 2 + 1) - 3**40 * a * 1e-19
 
 
 def test_powers_negation_and_functions_are_numbas():
     """Powers by integer literals (odd, even, negative), a fractional power, unary minus and plus, abs, sqrt,
-    sin, cos, exp, log and integer literals in float arithmetic: the same bits as numba's compilation."""
+    sin, cos, exp, log, integer literals in float arithmetic, and constant expressions (folded by Python's
+    compiler before numba sees them: 2 * 3 as an integer power, 3**40 as one integer): numba's bits."""
     jit = njit(_probe)
     rng = np.random.default_rng(7)
     for _ in range(20):
         s, q = rng.uniform(-2, 2, 2), rng.uniform(0.1, 3, 2)
-        ir, nb = _both(jit, f"probe_{_}", float(rng.uniform(-3, 3)), s, q, 4)
+        ir, nb = _both(jit, f"probe_{_}", float(rng.uniform(-3, 3)), s, q, 5)
         np.testing.assert_array_equal(ir.view(np.int64), nb.view(np.int64))
 
 

@@ -43,6 +43,23 @@ class Unsupported(ValueError):
     """The function is not straight-line arithmetic this module can write as IR."""
 
 
+def _constant(node):
+    """The value of ``node`` if it is made of numeric constants and arithmetic only (what Python's compiler
+    folds into one constant before numba sees the function), else None."""
+    for sub in ast.walk(node):
+        if not isinstance(sub, (ast.Constant, ast.BinOp, ast.UnaryOp, ast.operator, ast.unaryop)):
+            return None
+        if isinstance(sub, ast.Constant) and type(sub.value) not in (int, float):
+            return None
+    try:
+        value = eval(compile(ast.Expression(body=node), "<constant>", "eval"), {"__builtins__": {}})  # noqa: S307
+    except (ArithmeticError, ValueError, TypeError):
+        raise Unsupported(f"constant expression {ast.unparse(node)}") from None
+    if type(value) not in (int, float) or not math.isfinite(value):
+        raise Unsupported(f"constant expression {ast.unparse(node)} = {value!r}")
+    return value
+
+
 class _Body:
     def __init__(self, arrays: dict, scalars: dict):
         self.lines: list = []
@@ -68,6 +85,10 @@ class _Body:
         return self.value(f"getelementptr inbounds double, ptr {self.arrays[node.value.id]}, i64 {index.value}")
 
     def expr(self, node) -> str:
+        if isinstance(node, (ast.BinOp, ast.UnaryOp)):
+            folded = _constant(node)
+            if folded is not None:  # Python's compiler folds it: numba sees the value
+                return literal(float(folded))
         if isinstance(node, ast.Constant):
             if type(node.value) not in (int, float) or not math.isfinite(node.value):
                 raise Unsupported(f"constant {node.value!r}")
@@ -103,12 +124,8 @@ class _Body:
 
     def power(self, node: ast.BinOp) -> str:
         exponent = node.right
-        if isinstance(exponent, ast.UnaryOp) and isinstance(exponent.op, ast.USub) \
-                and isinstance(exponent.operand, ast.Constant) and type(exponent.operand.value) is int:
-            k = -exponent.operand.value
-        elif isinstance(exponent, ast.Constant) and type(exponent.value) is int:
-            k = exponent.value
-        else:  # a float exponent: numba's llvm.pow
+        k = _constant(exponent)
+        if type(k) is not int:  # a float exponent: numba's llvm.pow
             self.used.add("llvm.pow.f64")
             return self.value(f"call double @llvm.pow.f64(double {self.expr(node.left)}, double {self.expr(exponent)})")
         if abs(k) > 0x10000:
