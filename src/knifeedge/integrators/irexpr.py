@@ -160,20 +160,34 @@ class _Body:
         raise Unsupported(ast.unparse(node))
 
 
-def rhs_ir(func, symbol: str) -> str:
-    """The IR of ``func(t, s, q, ds)`` (a generated ``rhs_q_into``; a numba dispatcher or a Python function),
-    as the function ``symbol`` with numba's native calling convention for the arguments ``(t, s, q, nq, ds)``
-    (``i32 (ptr retptr, ptr excinfo, double, ptr, ptr, i64, ptr)``, returning 0), followed by the declarations
-    of the intrinsics it calls.  Raises :class:`Unsupported` for what it cannot write."""
+def _function_def(func, args: list) -> ast.FunctionDef:
+    """The parsed source of ``func`` (a numba dispatcher or a Python function), whose parameters must be
+    exactly ``args``."""
     py = getattr(func, "py_func", func)
     try:
         tree = ast.parse(textwrap.dedent(inspect.getsource(py)))
     except (OSError, TypeError, SyntaxError) as exc:
         raise Unsupported(f"no source ({exc})") from None
     fn = tree.body[0]
-    if not isinstance(fn, ast.FunctionDef) or [a.arg for a in fn.args.args] != ["t", "s", "q", "ds"] \
+    if not isinstance(fn, ast.FunctionDef) or [a.arg for a in fn.args.args] != args \
             or fn.args.vararg or fn.args.kwarg or fn.args.kwonlyargs or fn.args.defaults:
-        raise Unsupported("not a function of (t, s, q, ds)")
+        raise Unsupported(f"not a function of ({', '.join(args)})")
+    return fn
+
+
+def _text(head: str, body: _Body, ret: str) -> str:
+    """The function ``head`` with ``body``'s instructions and ``ret``, then the intrinsics it calls declared."""
+    declarations = [f"declare double @{name}(double{', double' if name == 'llvm.pow.f64' else ''})"
+                    for name in sorted(body.used)]
+    return head + "\n".join(body.lines + [f"  {ret}", "}"]) + "\n" + "\n".join(declarations) + "\n"
+
+
+def rhs_ir(func, symbol: str) -> str:
+    """The IR of ``func(t, s, q, ds)`` (a generated ``rhs_q_into``; a numba dispatcher or a Python function),
+    as the function ``symbol`` with numba's native calling convention for the arguments ``(t, s, q, nq, ds)``
+    (``i32 (ptr retptr, ptr excinfo, double, ptr, ptr, i64, ptr)``, returning 0), followed by the declarations
+    of the intrinsics it calls.  Raises :class:`Unsupported` for what it cannot write."""
+    fn = _function_def(func, ["t", "s", "q", "ds"])
     body = _Body(arrays={"s": "%s", "q": "%q", "ds": "%ds"}, scalars={"t": "%t"})
     for node in fn.body:
         if isinstance(node, ast.Return) and node.value is None:
@@ -181,24 +195,14 @@ def rhs_ir(func, symbol: str) -> str:
         body.statement(node)
     head = (f'define i32 @"{symbol}"(ptr nocapture %ret, ptr nocapture %exc, double %t, '
             f"ptr nocapture %s, ptr nocapture %q, i64 %nq, ptr nocapture %ds) {{\nentry:\n")
-    declarations = [f"declare double @{name}(double{', double' if name == 'llvm.pow.f64' else ''})"
-                    for name in sorted(body.used)]
-    return head + "\n".join(body.lines + ["  ret i32 0", "}"]) + "\n" + "\n".join(declarations) + "\n"
+    return _text(head, body, "ret i32 0")
 
 
 def constants_ir(func, symbol: str, nq: int) -> tuple:
     """The IR of a generated ``constants(p)`` (``q = np.empty(nq)``, ``q[i] = ...``, ``return q``) as the
     C-callable ``void symbol(double* p, double* q)`` writing into ``q``, and the number of parameters it
     reads (``p`` must hold at least that many).  Raises :class:`Unsupported` for anything else."""
-    py = getattr(func, "py_func", func)
-    try:
-        tree = ast.parse(textwrap.dedent(inspect.getsource(py)))
-    except (OSError, TypeError, SyntaxError) as exc:
-        raise Unsupported(f"no source ({exc})") from None
-    fn = tree.body[0]
-    if not isinstance(fn, ast.FunctionDef) or [a.arg for a in fn.args.args] != ["p"] \
-            or fn.args.vararg or fn.args.kwarg or fn.args.kwonlyargs or fn.args.defaults:
-        raise Unsupported("not a function of (p)")
+    fn = _function_def(func, ["p"])
     body = _Body(arrays={"p": "%p"}, scalars={})
     out = None
     statements = list(fn.body)
@@ -217,10 +221,7 @@ def constants_ir(func, symbol: str, nq: int) -> tuple:
     if body.extent.get(out, 0) > nq:
         raise Unsupported(f"writes beyond its np.empty({nq})")
     head = f'define void @"{symbol}"(ptr nocapture readonly %p, ptr nocapture %q) {{\nentry:\n'
-    declarations = [f"declare double @{name}(double{', double' if name == 'llvm.pow.f64' else ''})"
-                    for name in sorted(body.used)]
-    text = head + "\n".join(body.lines + ["  ret void", "}"]) + "\n" + "\n".join(declarations) + "\n"
-    return text, body.extent.get("p", 0)
+    return _text(head, body, "ret void"), body.extent.get("p", 0)
 
 
 def c_wrapper_ir(native: str, symbol: str) -> str:
