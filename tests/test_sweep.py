@@ -236,6 +236,23 @@ def test_row_checksums_are_those_of_earlier_versions():
     for r in ({**row, "reversal_times": None}, {**row, "reversal_times": [4.0]}, {**row, "reversal_times": None}):
         assert checksum(r, tuple(r)) == definition(r, tuple(r))
 
+    # a sweep's rows: the text of the inputs its runs share written once (RowChecksum), the same checksums
+    from knifeedge.store import RowChecksum
+
+    fixed_sets = [("model", "method", "rtol", "t0"), ("model", "zeta"), (), tuple(row)]
+    for fixed_names in fixed_sets:
+        base = {**row, "zeta": math.nan, "%d": "100%", "a{b}": -0.0}
+        sums = RowChecksum(tuple(base), {k: base[k] for k in fixed_names if k in base})
+        for change in ({}, {"mean_interval": 2.5}, {"zeta": math.nan} if "zeta" not in fixed_names else {},
+                       {"message": "x=nan\x1f=nan", "status": "error", "nfev": 0}, {"reversal_times": []},
+                       {"reversal_times": [math.nan, 1.0]}, {"first_reversal": math.nan, "seconds": math.inf},
+                       {"seconds": np.float64(0.5)}, {"nfev": True}, {"reversal_times": (1.0, 2.0)},
+                       {"reversal_times": [1, 2.0]}, {"nfev": None}, {"first_reversal": -math.inf}):
+            r = {**base, **{k: v for k, v in change.items() if k not in fixed_names}}
+            assert sums(r) == definition(r, tuple(r)), (fixed_names, change)
+    last_nan = RowChecksum(("a", "z"), {"a": 1.0})  # the last column's NaN
+    assert last_nan({"a": 1.0, "z": math.nan}) == definition({"a": 1.0, "z": None}, ("a", "z"))
+
 
 def test_sweeping_a_model_needs_params_state_and_span():
     m = ke.load("single_mode", "reduced")

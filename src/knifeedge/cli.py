@@ -465,7 +465,7 @@ def _sweep_args(sub: argparse.ArgumentParser) -> None:
     sub.add_argument("--set", nargs="+", action="extend", default=[], metavar="NAME=VALUE",
                      help="change the base run (parameters, initial state, rtol, atol, t_end)")
     sub.add_argument("--out", type=Path,
-                     help="results store: NAME.sqlite (SQLite, one row per run, committed as each run finishes), or "
+                     help="results store: NAME.sqlite (SQLite, one row per run, committed as runs finish), or "
                           "NAME.csv / NAME.jsonl (a text export of the rows, kept in NAME.sqlite); an existing store "
                           "is resumed, and sweeps running at once on one store share the work")
     sub.add_argument("--fresh", action="store_true", help="recompute the runs already in --out (and replace them)")

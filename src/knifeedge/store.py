@@ -14,8 +14,10 @@ shell, ``pandas.read_sql``, DB browsers).
   the run (``seconds``), when it finished, the full run as JSON (``spec``)
   and a ``checksum`` of the row: a row edited by hand or damaged is detected,
   reported (file and run) and recomputed, never trusted.
-* **Transactions, WAL journal**: rows are committed as they arrive; a sweep
-  killed at any instant leaves every committed row intact and readable.
+* **Transactions, WAL journal**: rows are committed as they arrive (a sweep
+  gathers what arrives within half a second into one transaction, with its
+  next claim); a sweep killed at any instant leaves every committed row intact
+  and readable.
 * **Claims with a lease**: before a run is computed, the sweep claims it in
   the ``claims`` table (one transaction).  A second sweep on the same file
   skips runs claimed by a live sweep and computes the others, then waits for
@@ -57,6 +59,7 @@ INT_COLUMNS = frozenset({"nfev", "n_reversals"})
 STORE_SUFFIXES = (".sqlite", ".sqlite3", ".db")
 TEXT_SUFFIXES = (".csv", ".jsonl", ".ndjson", ".json")
 SCHEMA_VERSION = 1
+_NONE: Mapping = {}
 _RESERVED = frozenset(INPUT_COLUMNS + RESULT_COLUMNS + ("spec", "finished_at", "checksum"))
 
 
@@ -107,15 +110,52 @@ def _checksum(row: Mapping, order: Sequence[str]) -> str:
     ``None`` and a missing value are written ``None``, a NaN float too; a list or tuple as a list of floats;
     anything else by its ``repr``.
     """
-    parts = []
-    for c in order:
-        v = row.get(c)
-        if isinstance(v, float) and v != v:
-            v = None
-        elif isinstance(v, (list, tuple)):
-            v = [float(x) for x in v]
-        parts.append(f"{c}={v!r}")
-    return hashlib.blake2b("\x1f".join(parts).encode(), digest_size=8).hexdigest()
+    return hashlib.blake2b("\x1f".join(_segment(c, row.get(c)) for c in order).encode(), digest_size=8).hexdigest()
+
+
+class RowChecksum:
+    """:func:`checksum` over ``columns`` of rows whose values in ``fixed`` are those given (the inputs a sweep's
+    runs share): the text of the fixed values is written once, the others by one ``%`` format.
+
+    The caller vouches that a row's ``fixed`` columns hold those values and that it has exactly ``columns``; a
+    value of another type than a float, str, int, ``None`` or a list of floats takes the general rule.
+    """
+
+    __slots__ = ("columns", "format", "get", "ends")
+
+    def __init__(self, columns: Sequence[str], fixed: Mapping):
+        self.columns = tuple(columns)
+        order = sorted(self.columns)
+        holes = [c for c in order if c not in fixed]
+        self.format = "\x1f".join(c.replace("%", "%%") + "=%r" if c not in fixed
+                                   else _segment(c, fixed[c]).replace("%", "%%") for c in order)
+        self.get = itemgetter(*holes) if len(holes) > 1 else (lambda r: (r[holes[0]],)) if holes else (lambda r: ())
+        self.ends = order[-1] not in fixed if order else False  # the last segment may be a NaN
+
+    def __call__(self, row: Mapping) -> str:
+        values = self.get(row)
+        kinds = set(map(type, values))
+        if not kinds <= _PLAIN or (list in kinds and not all(all(type(x) is float for x in v) for v in values
+                                                              if type(v) is list)):
+            return checksum(row, self.columns)
+        text = self.format % values  # %r writes a float, str, int, None or list of floats as the definition does
+        if "=nan" in text:  # NaN is written None (a str's repr is quoted, a list's NaN follows "[" or ", ")
+            text = text.replace("=nan\x1f", "=None\x1f")
+            if self.ends and text.endswith("=nan"):
+                text = text[:-3] + "None"
+        return hashlib.blake2b(text.encode(), digest_size=8).hexdigest()
+
+
+_PLAIN = frozenset({float, str, int, list, type(None)})
+
+
+def _segment(column: str, v) -> str:
+    """One ``name=text`` piece of :func:`_checksum`."""
+    if isinstance(v, float) and v != v:
+        v = None
+    elif isinstance(v, (list, tuple)):
+        v = [float(x) for x in v]
+    return f"{column}={v!r}"
 
 
 def _coerce(column: str, value, where: str):
@@ -205,6 +245,7 @@ class ResultStore:
         self._mine: set = set()
         self._sql: dict = {}
         self._last_renew = 0.0
+        self._depth = 0  # transactions open (see transaction)
         self.path.parent.mkdir(parents=True, exist_ok=True)
         try:
             self.db = sqlite3.connect(str(self.path), timeout=60.0, isolation_level=None, check_same_thread=False)
@@ -244,18 +285,38 @@ class ResultStore:
         self.columns = tuple(r[1] for r in self.db.execute("PRAGMA table_info(runs)"))
 
     class _Tx:
-        def __init__(self, db):
-            self.db = db
+        """``BEGIN IMMEDIATE`` ... ``COMMIT`` (``ROLLBACK`` on an exception); one opened inside another is part
+        of it."""
+
+        def __init__(self, store):
+            self.store = store
 
         def __enter__(self):
-            self.db.execute("BEGIN IMMEDIATE")
-            return self.db
+            st = self.store
+            if st._depth == 0:
+                st.db.execute("BEGIN IMMEDIATE")
+            st._depth += 1
+            return st.db
 
         def __exit__(self, kind, exc, tb):
-            self.db.execute("COMMIT" if kind is None else "ROLLBACK")
+            st = self.store
+            st._depth -= 1
+            if st._depth == 0:
+                if kind is not None:
+                    st.db.execute("ROLLBACK")
+                    return
+                try:
+                    st.db.execute("COMMIT")
+                except BaseException:  # a failed commit (a full disk) leaves the transaction open
+                    if st.db.in_transaction:
+                        st.db.execute("ROLLBACK")
+                    raise
 
-    def _transaction(self):
-        return self._Tx(self.db)
+    def transaction(self):
+        """A context in which every write of this store is one transaction (committed at its end)."""
+        return self._Tx(self)
+
+    _transaction = transaction
 
     # -- reading ------------------------------------------------------------------
     def read(self, run_ids: Sequence[str], since: float | None = None) -> tuple[dict, list]:
@@ -369,18 +430,24 @@ class ResultStore:
             self._mine.difference_update(ids)
 
     # -- writing ------------------------------------------------------------------
-    def write(self, rows: Sequence[Mapping], specs: Mapping[str, str] | None = None) -> None:
-        """Insert (or replace) finished rows and drop their claims, in one transaction."""
+    def write(self, rows: Sequence[Mapping], specs: Mapping[str, str] | None = None,
+              checksums: Mapping[str, str] | None = None) -> None:
+        """Insert (or replace) finished rows and drop their claims, in one transaction.
+
+        ``specs``: the JSON text of each run's spec, by run id; ``checksums``: the :func:`checksum` of rows
+        the caller has computed (by a :class:`RowChecksum`), by run id.
+        """
         if not rows:
             return
         now = time.time()
         with self._transaction():
-            self._insert(rows, now, specs or {})
+            self._insert(rows, now, specs or {}, checksums or {})
             self.db.executemany("DELETE FROM claims WHERE run_id = ? AND owner = ?",
                                 [(r["run_id"], self.owner) for r in rows])
         self._mine.difference_update(r["run_id"] for r in rows)
 
-    def _insert(self, rows: Sequence[Mapping], finished_at: float | None, specs: Mapping[str, str]) -> None:
+    def _insert(self, rows: Sequence[Mapping], finished_at: float | None, specs: Mapping[str, str],
+                sums: Mapping[str, str] = _NONE) -> None:
         groups: dict = {}
         for row in rows:
             groups.setdefault(tuple(row), []).append(row)
@@ -399,7 +466,8 @@ class ResultStore:
             for row in group:
                 v = list(get(row))
                 v[rt] = _times_json(v[rt])
-                v += (finished_at, specs.get(row["run_id"]), checksum(row, names))
+                rid = row["run_id"]
+                v += (finished_at, specs.get(rid), sums.get(rid) or checksum(row, names))
                 values.append(v)
             self.db.executemany(sql, values)
 

@@ -4,7 +4,8 @@ One row per run (its inputs, its spin reversals, its status).  Runs execute
 in local worker processes (default), on any :class:`concurrent.futures.Executor`
 (a Dask cluster through ``distributed.Client(...).get_executor()``), or in
 this process; their rows are committed to an SQLite results store
-(:mod:`knifeedge.store`) as they finish.  So a sweep
+(:mod:`knifeedge.store`) as they finish (within half a second, together with
+the next claim of runs).  So a sweep
 
 * killed at any instant keeps every row it committed, and the same sweep run
   again computes only the rest (*resume*);
@@ -19,6 +20,8 @@ this process; their rows are committed to an SQLite results store
 from __future__ import annotations
 
 import concurrent.futures as cf
+import contextlib
+import gc
 import hashlib
 import itertools
 import json
@@ -31,6 +34,7 @@ import time
 import warnings
 from collections import deque
 from collections.abc import Callable, Iterable, Mapping, Sequence
+from operator import itemgetter
 from pathlib import Path
 from typing import Any
 
@@ -40,11 +44,12 @@ from . import _validate
 from .runspec import RUN_SETTINGS, RunSpec
 from .simulate import METHODS, check_inputs
 from .store import (INPUT_COLUMNS, INT_COLUMNS, RESULT_COLUMNS, STATUSES, STORE_SUFFIXES, TEXT_COLUMNS, TEXT_SUFFIXES,
-                    ResultStore, read_text, write_text)
+                    ResultStore, RowChecksum, read_text, write_text)
 from .workers import ExecutorPool, LocalPool, SerialPool, WorkerLost, _can_fork
 
 __all__ = ["sweep", "SweepTable", "run_one", "run_batch", "RESULT_COLUMNS", "STATUSES"]
 
+_RESULT_KEYS = frozenset(RESULT_COLUMNS)
 #: status of a row that has no result (its run was lost to the infrastructure and is computed on resume)
 MISSING = "missing"
 #: attempts of a run whose worker keeps dying before it is left without a result
@@ -54,6 +59,9 @@ MAX_ATTEMPTS = 3
 TASK_SECONDS = 0.25
 #: most runs in one task (a task whose worker dies is retried run by run); ``ExecutorPool.max_chunk`` for an executor
 MAX_CHUNK = 256
+#: the longest a finished run's row waits to be written to the store (rows are written with the next claim, else
+#: after this long: a sweep killed outright loses at most this much work; an interrupted one loses none)
+WRITE_SECONDS = 0.5
 
 
 # -- one run ------------------------------------------------------------------
@@ -352,12 +360,13 @@ def _expand(run: RunSpec, points: list) -> list:
 
 class _Run:
     """One run of a sweep: ``spec`` (``RunSpec.to_dict`` form), ``inputs`` (its input columns, ``run_id``
-    first) and ``text`` (``spec`` as JSON, for the store)."""
+    first), ``text`` (``spec`` as JSON, for the store) and ``checksum`` (a :class:`~knifeedge.store.RowChecksum`
+    of its row, shared with the runs of its base)."""
 
-    __slots__ = ("spec", "inputs", "text")
+    __slots__ = ("spec", "inputs", "text", "checksum")
 
-    def __init__(self, spec: dict, inputs: dict, text: str):
-        self.spec, self.inputs, self.text = spec, inputs, text
+    def __init__(self, spec: dict, inputs: dict, text: str, checksum=None):
+        self.spec, self.inputs, self.text, self.checksum = spec, inputs, text, checksum
 
     @property
     def run_id(self) -> str:
@@ -371,8 +380,8 @@ _HOLE = _HOLE_MARK + "{}@"
 class _Base:
     """A run checked whole, and the runs that differ from it only in the values of parameters, initial states
     and ``t_end``: their spec, input columns, run id and JSON text, written as :func:`_inputs` and
-    ``json.dumps`` write them, by filling the values into the base run's JSON (a float is written by its
-    ``repr`` either way)."""
+    ``json.dumps`` write them, by filling the text of the values into the base run's JSON (a float is written
+    by its ``repr`` either way)."""
 
     def __init__(self, run: RunSpec, model, names: Sequence[str]):
         if not isinstance(run.method, str) or run.method not in METHODS:
@@ -389,6 +398,9 @@ class _Base:
         self.spec = run.to_dict()
         self.inputs = _inputs(run)
         self.y0_varying = any(n in run.y0 for n in self.names)
+        varying = {"run_id", *("t1" if n == "t_end" else n for n in self.names)}
+        self.checksum = RowChecksum(tuple(self.inputs) + RESULT_COLUMNS,
+                                    {k: v for k, v in self.inputs.items() if k not in varying})
         self.key_format = self.text_format = None
         if not self.names:
             self.text = json.dumps(self.spec)
@@ -416,13 +428,15 @@ class _Base:
             inputs["t1"] = values["t_end"]
         inputs.update((n, v) for n, v in values.items() if n != "t_end")
         if not self.names:
-            return _Run(spec, inputs, self.text)
+            return _Run(spec, inputs, self.text, self.checksum)
         if self.key_format is None:  # the slow way, for a base whose JSON the template cannot hold
             inputs["run_id"] = _inputs(RunSpec.from_dict(spec))["run_id"]
-            return _Run(spec, inputs, json.dumps(spec))
-        v = [values[n] for n in self.names]
-        inputs["run_id"] = hashlib.sha1(self.key_format.format(*v).encode()).hexdigest()[:16]
-        return _Run(spec, inputs, self.text_format.format(*v))
+            return _Run(spec, inputs, json.dumps(spec), self.checksum)
+        texts = tuple([repr(values[n]) for n in self.names])  # each value written once, for both texts
+        key, pick = self.key_format
+        inputs["run_id"] = hashlib.sha1((key % pick(texts)).encode()).hexdigest()[:16]
+        text, pick = self.text_format
+        return _Run(spec, inputs, text % pick(texts), self.checksum)
 
 
 def _with_values(spec: dict, values: Mapping) -> dict:
@@ -439,17 +453,16 @@ def _with_values(spec: dict, values: Mapping) -> dict:
     return d
 
 
-def _template(text: str, n: int) -> str | None:
-    """``text`` (JSON with the strings of ``_HOLE`` in the places of ``n`` floats) as a ``str.format`` of the
-    floats (``{i!r}`` writes a float as ``json.dumps`` does); None unless each hole is there once."""
+def _template(text: str, n: int) -> tuple | None:
+    """``text`` (JSON with the strings of ``_HOLE`` in the places of ``n`` floats) as a ``%`` format of the
+    floats' texts (a float's ``repr`` is what ``json.dumps`` writes), and the getter that puts a tuple of the
+    ``n`` texts in the order of the holes; None unless each hole is there once."""
     pieces = re.split(r'"@knifeedge-sweep-value-(\d+)@"', text)
-    if sorted(int(i) for i in pieces[1::2]) != list(range(n)):
+    order = [int(i) for i in pieces[1::2]]
+    if sorted(order) != list(range(n)):
         return None
-    out = [pieces[0].replace("{", "{{").replace("}", "}}")]
-    for i, piece in zip(pieces[1::2], pieces[2::2]):
-        out.append(f"{{{int(i)}!r}}")
-        out.append(piece.replace("{", "{{").replace("}", "}}"))
-    return "".join(out)
+    fmt = "%s".join(p.replace("%", "%%") for p in pieces[0::2])
+    return fmt, (itemgetter(*order) if n > 1 else lambda texts: texts)
 
 
 def _columns(run: RunSpec) -> tuple:
@@ -604,7 +617,7 @@ def sweep(
     max_workers : number of local worker processes.
     out : path, optional
         The results store.  ``.sqlite`` (or ``.sqlite3``, ``.db``): an SQLite
-        file, one row per run, each committed as it finishes.  ``.csv`` or
+        file, one row per run, each committed within half a second of finishing.  ``.csv`` or
         ``.jsonl``: the store is the file of the same name ending in
         ``.sqlite`` and this file is a text export of the sweep's rows,
         rewritten when the sweep ends (a text file written by an earlier
@@ -652,10 +665,30 @@ def sweep(
     columns = _columns(run)
     store, export = _open_store(out, (*run.params, *run.y0))
     try:
-        return _Sweep(runs, columns, store, export, executor, max_workers, resume, progress, chunksize).run()
+        with _heap_frozen():
+            return _Sweep(runs, columns, store, export, executor, max_workers, resume, progress, chunksize).run()
     finally:
         if store is not None:
             store.close()
+
+
+@contextlib.contextmanager
+def _heap_frozen():
+    """The objects alive at the start of a sweep (the modules, the kernels, the grid's runs) left out of the cyclic
+    garbage collector's passes until it ends (:func:`gc.freeze`).
+
+    A full pass over them cost the sweep's process 0.1 s of CPU each (numba and SciPy hold some 10^5 objects),
+    once per few thousand rows; and local workers, forked from this process, would walk them too, copying the
+    pages they share with it.  Nothing is done if the collector is off or something else froze objects already.
+    """
+    if not gc.isenabled() or gc.get_freeze_count():
+        yield
+        return
+    gc.freeze()
+    try:
+        yield
+    finally:
+        gc.unfreeze()
 
 
 class _Sweep:
@@ -677,10 +710,17 @@ class _Sweep:
         self.n_computed = 0
         self.n_retried = 0
         self.times: deque = deque(maxlen=64)
+        self.pending: list = []  # (rows, run ids, outcomes) of the tasks received and not written yet
+        self.written_at = time.monotonic()
 
     # -- helpers ------------------------------------------------------------------
     def _row(self, rid: str, outcome: Mapping) -> dict:
         return {**self.inputs[self.by_id[rid]], **outcome}
+
+    def _checksums(self, ids: list, out: list, rows: list) -> dict:
+        """The checksum of each row (by its base's template) whose outcome has exactly the result columns."""
+        spec_of = self.spec_of
+        return {rid: spec_of[rid].checksum(row) for rid, o, row in zip(ids, out, rows) if o.keys() == _RESULT_KEYS}
 
     def _record(self, rows: list, computed: bool) -> None:
         for row in rows:
@@ -763,48 +803,56 @@ class _Sweep:
             raise
         attempts: dict = {}
         others: dict = {}  # run_id -> who holds it
+        ready: deque = deque()  # runs claimed, not handed out yet
         inflight: dict = {}  # task id -> run ids
         task_ids = itertools.count()
         interrupted = False
         last_poll = 0.0
         try:
-            while todo or inflight or others:
+            while todo or ready or inflight or others:
                 # hand out work while the pool has room
-                while todo and pool.free():
-                    k = 1 if todo[0] in attempts else self._chunk(len(todo), n_workers, pool)
-                    ids = [todo.popleft() for _ in range(min(k, len(todo)))]
-                    ids = self._claim(ids, others)
-                    if ids:
-                        t = next(task_ids)
-                        inflight[t] = ids
-                        pool.submit(t, [self.spec_of[r].spec for r in ids])
+                while (ready or todo) and pool.free():
+                    head = ready[0] if ready else todo[0]
+                    k = 1 if head in attempts else self._chunk(len(ready) + len(todo), n_workers, pool)
+                    if len(ready) < k and todo:  # claim this task's runs and the next task's at once
+                        ids = [todo.popleft() for _ in range(min(2 * k - len(ready), len(todo)))]
+                        ready.extend(self._claim(ids, others))
+                        continue
+                    ids = [ready.popleft() for _ in range(min(k, len(ready)))]
+                    t = next(task_ids)
+                    inflight[t] = ids
+                    pool.submit(t, [self.spec_of[r].spec for r in ids])
                 # collect finished tasks
                 for t, out in pool.wait(0.5 if (inflight or not others) else 1.0):
                     ids = inflight.pop(t)
                     if isinstance(out, WorkerLost):
-                        self._lost(ids, str(out), attempts, todo)
+                        self._lost(ids, str(out), attempts, ready)
                         continue
                     rows = [self._row(rid, o) for rid, o in zip(ids, out)]
                     self.times.extend(o["seconds"] for o in out)
                     if self.store is not None:
-                        self.store.write(rows, {r: self.spec_of[r].text for r in ids})
+                        self.pending.append((rows, ids, out))
                     self._record(rows, computed=True)
                 broken = getattr(pool, "broken", None)
-                if broken and not inflight and todo:  # an executor that takes no more work
-                    for rid in todo:
+                if broken and not inflight and (todo or ready):  # an executor that takes no more work
+                    for rid in itertools.chain(ready, todo):
                         self.missing[rid] = f"not computed: the executor is broken ({broken})"
-                    self.bar.missing += len(todo)
+                    self.bar.missing += len(todo) + len(ready)
                     if self.store is not None:
-                        self.store.release(list(todo))
+                        self.store.release(list(ready))
                     todo.clear()
+                    ready.clear()
                 if self.store is not None:
-                    self.store.renew()
                     now = time.monotonic()
-                    if others and not todo and now - last_poll > 0.5:  # another sweep's runs: done yet?
+                    if self.pending and now - self.written_at >= WRITE_SECONDS:
+                        with self.store.transaction():
+                            self._write()
+                    self.store.renew()
+                    if others and not todo and not ready and now - last_poll > 0.5:  # another sweep's runs: done?
                         last_poll = now
                         waiting = list(others)
                         others.clear()
-                        todo.extend(self._claim(waiting, others))
+                        ready.extend(self._claim(waiting, others))
                     self.bar.postfix(waiting=len(others))
         except BaseException:
             interrupted = True
@@ -813,8 +861,12 @@ class _Sweep:
             if pool is not None:
                 pool.shutdown()
             if self.store is not None:
-                # runs handed out but unfinished: not results; free them for a resume or another sweep
-                self.store.release()
+                try:  # the rows received and not written yet
+                    with self.store.transaction():
+                        self._write()
+                finally:
+                    # runs handed out but unfinished, or claimed and not handed out: not results; free them
+                    self.store.release()
             self.bar.close()
             rows = [self.results.get(inp["run_id"]) or _missing_row(inp, self.missing.get(
                 inp["run_id"], "not computed: the sweep was interrupted")) for inp in self.inputs]
@@ -835,11 +887,28 @@ class _Sweep:
                           "run the same sweep again to compute them", RuntimeWarning, stacklevel=3)
         return table
 
+    def _write(self) -> None:
+        """Write the rows received since the last write (inside the store's transaction the caller opened)."""
+        if not self.pending:
+            return
+        rows, specs, sums = [], {}, {}
+        for task_rows, ids, out in self.pending:
+            rows += task_rows
+            spec_of = self.spec_of
+            specs.update((r, spec_of[r].text) for r in ids)
+            sums.update(self._checksums(ids, out, task_rows))
+        self.store.write(rows, specs, sums)
+        self.pending = []  # the caller's transaction may yet fail: then the rows are lost with it, as a crash would
+        self.written_at = time.monotonic()
+
     def _claim(self, ids: list, others: dict) -> list:
-        """Claim ``ids`` in the store; record rows found written, note runs held by another sweep."""
+        """Claim ``ids`` in the store, and write the rows waiting, in one transaction; record rows found written,
+        note runs held by another sweep."""
         if self.store is None:
             return ids
-        claimed, done, busy, damaged = self.store.claim(ids, self.since)
+        with self.store.transaction():
+            self._write()
+            claimed, done, busy, damaged = self.store.claim(ids, self.since)
         for msg in damaged:
             if msg not in self.damaged:
                 self.damaged.append(msg)
@@ -850,7 +919,7 @@ class _Sweep:
         others.update(busy)
         return claimed
 
-    def _lost(self, ids: list, reason: str, attempts: dict, todo: deque) -> None:
+    def _lost(self, ids: list, reason: str, attempts: dict, ready: deque) -> None:
         """Runs of a task lost to the infrastructure: retry each alone, up to MAX_ATTEMPTS."""
         retry = []
         for rid in ids:
@@ -864,6 +933,6 @@ class _Sweep:
             self.store.release([r for r in ids if r not in retry])
         # retried first, one run per task, so that a run that kills its worker is isolated
         self.n_retried += len(retry)
-        for rid in reversed(retry):
-            todo.appendleft(rid)
+        for rid in reversed(retry):  # still claimed by this sweep
+            ready.appendleft(rid)
         self.bar.postfix()
