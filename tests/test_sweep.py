@@ -447,7 +447,8 @@ class _FlakyExecutor(cf.Executor):
         self.pool = cf.ThreadPoolExecutor(2)
         self.poison, self.cancelled = poison, False
 
-    def submit(self, fn, runs):
+    def submit(self, fn, *args):
+        runs = args[-1]  # the task
         if any(r["y0"]["phi_dot"] in self.poison for r in runs):
             fut = cf.Future()
             fut.set_exception(BrokenProcessPool("A process in the process pool was terminated abruptly"))
@@ -457,7 +458,7 @@ class _FlakyExecutor(cf.Executor):
             fut = cf.Future()
             fut.cancel()
             return fut
-        return self.pool.submit(fn, runs)
+        return self.pool.submit(fn, *args)
 
     def shutdown(self, wait=True, **kw):
         self.pool.shutdown(wait)
@@ -558,6 +559,23 @@ def test_a_task_is_opaque_to_dask_and_has_a_key_of_its_own():
     plain = _Task([{"phi_dot": 0.1}])
     again = pickle.loads(pickle.dumps(plain))
     assert list(again) == [{"phi_dot": 0.1}] and tokenize(again) == tokenize(plain)
+
+
+def test_a_tasks_outcomes_cross_dask_as_one_object():
+    """Dask's wire format writes a list of dicts as one frame per dict (a task's outcomes: hundreds); the task's
+    outcomes go back wrapped as one object, whole after the trip."""
+    core = pytest.importorskip("distributed.protocol.core")
+    to_serialize = pytest.importorskip("distributed.protocol").to_serialize
+    from knifeedge.workers import _run_task
+
+    outcomes = [{"status": "ok", "nfev": i, "first_reversal": math.nan if i == 7 else 0.5 * i,
+                 "reversal_times": [1.0, 2.0 * i]} for i in range(200)]
+    wrapped = _run_task(lambda task: list(task), outcomes)
+    assert wrapped.outcomes == outcomes
+    frames = core.dumps({"op": "get_data", "data": {"k": to_serialize(wrapped)}})
+    assert len(frames) <= 4 < 200 < len(core.dumps({"op": "get_data", "data": {"k": to_serialize(outcomes)}}))
+    back = core.loads(frames)["data"]["k"].outcomes
+    assert back[:7] == outcomes[:7] and back[8:] == outcomes[8:] and math.isnan(back[7]["first_reversal"])
 
 
 def test_local_workers_are_forked_with_the_kernel_loaded():

@@ -660,33 +660,34 @@ def sweep(
         raise TypeError("`progress` must be True, False or a callable(done, total, row)")
     if not isinstance(resume, bool):
         raise TypeError(f"`resume` must be True or False, got {resume!r}")
-    run = _base_run(scene_or_model, params, y0, t_span, method, rtol, atol)
-    runs = _expand(run, _grid_points(grid))
-    columns = _columns(run)
-    store, export = _open_store(out, (*run.params, *run.y0))
-    try:
-        with _heap_frozen():
+    with _heap_frozen() as freeze:
+        run = _base_run(scene_or_model, params, y0, t_span, method, rtol, atol)
+        runs = _expand(run, _grid_points(grid))
+        freeze()  # the grid's runs too: they live as long as the sweep
+        columns = _columns(run)
+        store, export = _open_store(out, (*run.params, *run.y0))
+        try:
             return _Sweep(runs, columns, store, export, executor, max_workers, resume, progress, chunksize).run()
-    finally:
-        if store is not None:
-            store.close()
+        finally:
+            if store is not None:
+                store.close()
 
 
 @contextlib.contextmanager
 def _heap_frozen():
-    """The objects alive at the start of a sweep (the modules, the kernels, the grid's runs) left out of the cyclic
-    garbage collector's passes until it ends (:func:`gc.freeze`).
+    """The objects alive at the start of a sweep (the modules, the kernels) left out of the cyclic garbage
+    collector's passes until it ends (:func:`gc.freeze`); the context's value freezes those alive when called.
 
     A full pass over them cost the sweep's process 0.1 s of CPU each (numba and SciPy hold some 10^5 objects),
     once per few thousand rows; and local workers, forked from this process, would walk them too, copying the
     pages they share with it.  Nothing is done if the collector is off or something else froze objects already.
     """
     if not gc.isenabled() or gc.get_freeze_count():
-        yield
+        yield lambda: None
         return
     gc.freeze()
     try:
-        yield
+        yield gc.freeze
     finally:
         gc.unfreeze()
 

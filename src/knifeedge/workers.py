@@ -351,7 +351,7 @@ class ExecutorPool:
 
     def submit(self, task_id, runs: list) -> None:
         try:
-            self.futures[self.executor.submit(self.fn, _Task(runs))] = task_id
+            self.futures[self.executor.submit(_run_task, self.fn, _Task(runs))] = task_id
         except Exception as exc:  # a broken or shut-down executor takes no more work  # noqa: BLE001
             self.broken = f"{type(exc).__name__}: {exc}"
             self.futures[_failed(exc)] = task_id
@@ -368,7 +368,7 @@ class ExecutorPool:
         for fut in finished:
             task_id = self.futures.pop(fut)
             try:
-                done.append((task_id, fut.result()))
+                done.append((task_id, fut.result().outcomes))
             except BaseException as exc:  # noqa: BLE001 - a dead worker, a broken pool, a cancelled future
                 if isinstance(exc, KeyboardInterrupt):
                     raise
@@ -406,6 +406,31 @@ class _Task:
 
     def __setstate__(self, state):
         self.runs, self.token = state
+
+
+def _run_task(fn: Callable, task: _Task) -> _Outcomes:
+    """``fn`` on a task's runs (in an executor's worker), its list of outcomes wrapped as one object."""
+    return _Outcomes(fn(task))
+
+
+class _Outcomes:
+    """The outcomes of a task's runs, one object to an executor.  A Dask worker serializes a list of dicts element
+    by element, with a header each (13 ms for a task of 666 runs, against 0.5 ms for this object), and its
+    client reads them back the same way."""
+
+    __slots__ = ("outcomes",)
+
+    def __init__(self, outcomes: list):
+        self.outcomes = outcomes
+
+    def __sizeof__(self) -> int:  # what Dask counts in a worker's memory: the list and its rows (shallow)
+        return object.__sizeof__(self) + sys.getsizeof(self.outcomes) + sum(map(sys.getsizeof, self.outcomes))
+
+    def __getstate__(self):
+        return self.outcomes
+
+    def __setstate__(self, state):
+        self.outcomes = state
 
 
 def _failed(exc: BaseException) -> cf.Future:
