@@ -5,7 +5,9 @@ spent outside integration (scheduling, serialization, writing rows).
 
 The sweep: first-reversal runs of the two-mode ``full`` model (the ``tinversion`` scene's run: ``ell/L = 1/2``,
 ``D/ell = 1/2``, ``alpha = pi/4``, tilts 1e-3, DOP853 at rtol 1e-10), ``phi_dot`` from 0.05 to 0.4, each run's
-span the scene's bound on its first reversal (``_t_end``); every row committed to an SQLite store.
+span the scene's bound on its first reversal (``_t_end``); every row committed to an SQLite store.  On Dask
+twice: with its default configuration, and with the lighter one of ``DASK_LIGHT_CONFIG`` (no profiler in the
+workers, slower watchdogs), which a sweep's user may choose.
 
 Two measures of the time spent outside integration, for each configuration with ``w`` workers:
 
@@ -52,6 +54,11 @@ from knifeedge.sweep import run_one
 
 
 _SWEEP = importlib.import_module("knifeedge.sweep")
+#: a Dask cluster with less bookkeeping of its own: no statistical profiler in the workers (a stack sample of the
+#: running task every 10 ms), its event-loop watchdog every 1 s (20 ms) and its CPU/memory monitor every 5 s (0.5 s)
+DASK_LIGHT = "dask LocalCluster, 2 workers, light config"
+DASK_LIGHT_CONFIG = {"distributed.worker.profile.enabled": False, "distributed.admin.tick.interval": "1s",
+                     "distributed.admin.system-monitor.interval": "5s"}
 _RUN_ONE = _SWEEP.run_one
 #: CPU seconds inside run_one of each local worker forked from this process, one slot each, written without a lock
 #: (a lock shared by the workers stalls one whenever the other is preempted holding it); None in a Dask worker
@@ -220,6 +227,7 @@ def main(argv=None) -> int:
     configs = [("local, 1 worker", 1), ("local, 2 workers", 2)]
     if not args.skip_dask:
         configs.append(("dask LocalCluster, 2 workers", 2))
+        configs.append((DASK_LIGHT, 2))
     integration = []
     # the local sweeps first: once a Dask cluster has run in this process its threads stay, and local workers are
     # then new interpreters rather than forks of this process
@@ -234,9 +242,11 @@ def main(argv=None) -> int:
                   f"{len(points)} runs (load {os.getloadavg()[0]:.2f})", flush=True)
             for name, w in todo:
                 if phase == "dask":
+                    import dask
                     from distributed import Client, LocalCluster
 
-                    with LocalCluster(n_workers=w, threads_per_worker=1, processes=True, dashboard_address=None) \
+                    with dask.config.set(DASK_LIGHT_CONFIG if name == DASK_LIGHT else {}), \
+                            LocalCluster(n_workers=w, threads_per_worker=1, processes=True, dashboard_address=None) \
                             as cluster, Client(cluster) as client:
                         # before the clock starts, as for local workers (forks of this warmed-up process): each
                         # worker imports knifeedge and loads the kernel (CPU time reported as worker_warmup_cpu_s)

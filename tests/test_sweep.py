@@ -254,6 +254,24 @@ def test_row_checksums_are_those_of_earlier_versions():
     assert last_nan({"a": 1.0, "z": math.nan}) == definition({"a": 1.0, "z": None}, ("a", "z"))
 
 
+def test_a_sweep_leaves_the_garbage_collector_as_it_found_it():
+    """During a sweep the objects alive at its start are left out of the collector's passes (``gc.freeze``); after
+    it, they are given back; objects frozen by someone else stay so, and are not given back by the sweep."""
+    import gc
+
+    seen = []
+    grid = {"phi_dot": QUICK["phi_dot"][:2]}
+    ke.sweep(_quick(), grid, executor="serial", progress=lambda done, total, row: seen.append(gc.get_freeze_count()))
+    assert len(seen) == 2 and min(seen) > 0 and gc.get_freeze_count() == 0
+    gc.freeze()
+    try:
+        mine, seen = gc.get_freeze_count(), []
+        ke.sweep(_quick(), grid, executor="serial", progress=lambda done, total, row: seen.append(gc.get_freeze_count()))
+        assert seen == [mine, mine] and gc.get_freeze_count() == mine
+    finally:
+        gc.unfreeze()
+
+
 def test_sweeping_a_model_needs_params_state_and_span():
     m = ke.load("single_mode", "reduced")
     with pytest.raises(ValueError, match="`params`"):

@@ -779,6 +779,7 @@ class _Sweep:
         per_run = max(statistics.median(self.times), 1e-5)
         k = int(getattr(pool, "task_seconds", TASK_SECONDS) / per_run)
         k = min(k, getattr(pool, "max_chunk", MAX_CHUNK), max(1, remaining // (4 * n_workers)))  # a balanced tail
+        k = max(k, int(getattr(pool, "min_task_seconds", 0.0) / per_run))  # ... of tasks worth their own cost
         return max(1, k)
 
     # -- the loop -----------------------------------------------------------------

@@ -336,6 +336,9 @@ class ExecutorPool:
     #: milliseconds of CPU between them, so tasks are longer than on local workers
     task_seconds = 1.0
     max_chunk = 1024
+    #: the shortest task the sweep's balanced tail makes (on local workers it goes down to one run): 5 ms of a
+    #: Dask client's and scheduler's CPU per task is 2.5 % of a task this long
+    min_task_seconds = 0.2
 
     def __init__(self, executor: cf.Executor, fn: Callable, slots: int):
         self.executor, self.fn, self.slots_ = executor, fn, max(1, int(slots))
