@@ -267,7 +267,8 @@ def test_a_sweep_leaves_the_garbage_collector_as_it_found_it():
     try:
         mine, seen = gc.get_freeze_count(), []
         ke.sweep(_quick(), grid, executor="serial", progress=lambda done, total, row: seen.append(gc.get_freeze_count()))
-        assert seen == [mine, mine] and gc.get_freeze_count() == mine
+        # (frozen objects that die leave the count: it may only fall)
+        assert len(seen) == 2 and 0 < min(seen) and max(seen) <= mine and 0 < gc.get_freeze_count() <= mine
     finally:
         gc.unfreeze()
 
