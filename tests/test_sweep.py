@@ -440,6 +440,40 @@ def _workers_of(pid: int) -> list:
             or "knifeedge.workers" in " ".join(c.cmdline())]
 
 
+def test_rows_received_before_an_interruption_are_written(tmp_path, monkeypatch):
+    """Rows wait up to half a second to be written with the next claim; an exception (here Ctrl-C in a progress
+    callback) writes the ones received before claims are freed.  If writing them fails too, the interruption is
+    still what the caller gets, with a warning naming the rows lost."""
+    from knifeedge.store import ResultStore
+
+    def stop_at(n):
+        seen = []
+
+        def progress(done, total, row):
+            seen.append(row["run_id"])
+            if len(seen) == n:
+                raise KeyboardInterrupt
+
+        return progress
+
+    out = tmp_path / "runs.sqlite"
+    with pytest.raises(KeyboardInterrupt):
+        ke.sweep(_quick(), QUICK, executor="serial", out=out, progress=stop_at(3), chunksize=2)
+    assert len(_rows(out)) == 4  # both tasks received: the one whose third row was being reported, and the first
+    with sqlite3.connect(out) as con:
+        assert con.execute("SELECT count(*) FROM claims").fetchone()[0] == 0
+
+    def broken_disk(self, rows, *args):
+        raise sqlite3.OperationalError("disk I/O error")
+
+    monkeypatch.setattr(ResultStore, "write", broken_disk)
+    with pytest.warns(RuntimeWarning, match=r"2 finished run\(s\) could not be written .*disk I/O error"):
+        with pytest.raises(KeyboardInterrupt):
+            ke.sweep(_quick(), QUICK, executor="serial", out=out, progress=stop_at(1), chunksize=2)
+    with sqlite3.connect(out) as con:
+        assert con.execute("SELECT count(*) FROM claims").fetchone()[0] == 0
+
+
 def test_a_worker_killed_mid_sweep_costs_no_result(tmp_path, quick_table):
     """SIGKILL one worker (as the out-of-memory killer does): its runs are sent again, none becomes an error."""
     out = tmp_path / "runs.sqlite"

@@ -856,6 +856,9 @@ class _Sweep:
                         others.clear()
                         ready.extend(self._claim(waiting, others))
                     self.bar.postfix(waiting=len(others))
+            if self.store is not None:
+                with self.store.transaction():
+                    self._write()
         except BaseException:
             interrupted = True
             raise
@@ -863,12 +866,7 @@ class _Sweep:
             if pool is not None:
                 pool.shutdown()
             if self.store is not None:
-                try:  # the rows received and not written yet
-                    with self.store.transaction():
-                        self._write()
-                finally:
-                    # runs handed out but unfinished, or claimed and not handed out: not results; free them
-                    self.store.release()
+                self._write_last(interrupted)
             self.bar.close()
             rows = [self.results.get(inp["run_id"]) or _missing_row(inp, self.missing.get(
                 inp["run_id"], "not computed: the sweep was interrupted")) for inp in self.inputs]
@@ -902,6 +900,23 @@ class _Sweep:
         self.store.write(rows, specs, sums)
         self.pending = []  # the caller's transaction may yet fail: then the rows are lost with it, as a crash would
         self.written_at = time.monotonic()
+
+    def _write_last(self, interrupted: bool) -> None:
+        """At the end (or on the way out of an exception): write the rows received and not written yet, then free
+        the runs handed out but unfinished, or claimed and not handed out (not results).  A failure to write is
+        raised, unless the sweep is already on its way out of another exception (then it is a warning)."""
+        try:
+            with self.store.transaction():
+                self._write()
+        except Exception as exc:  # noqa: BLE001
+            if not interrupted:
+                raise
+            lost = sum(len(rows) for rows, _, _ in self.pending)
+            warnings.warn(f"sweep: {lost} finished run(s) could not be written to {self.store.path} "
+                          f"({type(exc).__name__}: {exc}); they are computed again on resume", RuntimeWarning,
+                          stacklevel=4)
+        finally:
+            self.store.release()
 
     def _claim(self, ids: list, others: dict) -> list:
         """Claim ``ids`` in the store, and write the rows waiting, in one transaction; record rows found written,
