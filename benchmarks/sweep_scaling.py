@@ -19,6 +19,10 @@ Two measures of the time spent outside integration, for each configuration with 
   themselves, measured in its workers as they run (the thread time of each ``run_one``), ``cpu_total`` the CPU
   time the sweep used -- its own process (scheduling, the store, unpickling rows) plus its workers (start-up
   included).  Both are measured in the same sweep, under the same load.
+* ``overhead_cpu_sweep_own``: the part of it that is the sweep's own work -- the CPU time of the sweep's main
+  thread (its code, and a Dask client's ``submit``) plus, on local workers, theirs outside the runs -- over the
+  same ``cpu_total``; the rest is a Dask cluster's: the threads of its scheduler, client loop and nannies in the
+  sweep's process, and its workers outside the runs.
 * ``overhead_cpu = 1 - cpu_integration / cpu_total``: ``cpu_integration`` is the CPU time of the same runs
   integrated one after another in this process (``run_one``, measured first); ``cpu_total`` the CPU time the
   sweep used -- its own process (scheduling, the store, unpickling rows) plus its workers (start-up included).
@@ -159,6 +163,11 @@ def _measure(name: str, n_workers: int, points: list, cpu_integration: float, ex
     cpu_total = row["cpu_parent_s"] + row["cpu_workers_s"]
     row["cpu_in_runs_s"] = in_runs
     row["overhead_cpu_direct"] = 1.0 - in_runs / cpu_total
+    # the sweep's own share: its main thread (the sweep's code, and a Dask client's submit) and its local workers
+    # outside the runs; the rest is the threads of a Dask scheduler, client loop and nannies, and Dask's workers
+    # outside the runs
+    own = row["cpu_parent_main_thread_s"] + (0.0 if client is not None else row["cpu_workers_s"] - in_runs)
+    row["overhead_cpu_sweep_own"] = own / cpu_total
     return row
 
 
@@ -168,12 +177,14 @@ def _sweep(name: str, n_workers: int, points: list, cpu_integration: float, exec
         store = Path(d) / "runs.sqlite"
         load0 = os.getloadavg()[0]
         c_self, c_children, c_desc = time.process_time(), _children_cpu(), _descendants_cpu()
+        c_main = time.thread_time()
         t0 = time.time()
         w0 = time.perf_counter()
         table = ke.sweep(run, points, executor=executor if executor is not None else "processes",
                          max_workers=n_workers, out=store, progress=False)
         wall = time.perf_counter() - w0
         cpu_parent = time.process_time() - c_self
+        cpu_main = time.thread_time() - c_main
         cpu_workers = (_children_cpu() - c_children) + (_descendants_cpu() - c_desc)
         with sqlite3.connect(store) as con:
             first = min(r[0] for r in con.execute("SELECT finished_at FROM runs")) - t0
@@ -183,7 +194,8 @@ def _sweep(name: str, n_workers: int, points: list, cpu_integration: float, exec
     return {
         "config": name, "workers": n_workers, "runs": len(points), "wall_s": wall, "busy_s": busy,
         "overhead_wall": 1.0 - busy / (n_workers * wall),
-        "cpu_integration_s": cpu_integration, "cpu_parent_s": cpu_parent, "cpu_workers_s": cpu_workers,
+        "cpu_integration_s": cpu_integration, "cpu_parent_s": cpu_parent, "cpu_parent_main_thread_s": cpu_main,
+        "cpu_workers_s": cpu_workers,
         "overhead_cpu": 1.0 - cpu_integration / cpu_total,
         "start_to_first_row_s": first, "runs_per_s": len(points) / wall, "mean_run_ms": 1e3 * busy / len(points),
         "ok": int(np.sum(table.ok)), "local_workers_forked": forked, "load_avg_1min_before": load0,
@@ -191,9 +203,9 @@ def _sweep(name: str, n_workers: int, points: list, cpu_integration: float, exec
     }
 
 
-_MEDIAN_KEYS = ("wall_s", "busy_s", "overhead_wall", "cpu_integration_s", "cpu_parent_s", "cpu_workers_s",
-                "overhead_cpu", "cpu_in_runs_s", "overhead_cpu_direct", "start_to_first_row_s", "runs_per_s",
-                "mean_run_ms")
+_MEDIAN_KEYS = ("wall_s", "busy_s", "overhead_wall", "cpu_integration_s", "cpu_parent_s", "cpu_parent_main_thread_s",
+                "cpu_workers_s", "overhead_cpu", "cpu_in_runs_s", "overhead_cpu_direct", "overhead_cpu_sweep_own",
+                "start_to_first_row_s", "runs_per_s", "mean_run_ms")
 
 
 def _median_row(rows: list) -> dict:
@@ -270,7 +282,8 @@ def main(argv=None) -> int:
     results["load_avg_1min_end"] = os.getloadavg()[0]
     for r in results["rows"]:
         print(f"{r['config']:30s} wall {r['wall_s']:6.2f} s  overhead: wall {100 * r['overhead_wall']:5.1f} %, "
-              f"CPU {100 * r['overhead_cpu_direct']:5.1f} % ({100 * r['overhead_cpu']:5.1f} % against the runs alone)"
+              f"CPU {100 * r['overhead_cpu_direct']:5.1f} % ({100 * r['overhead_cpu']:5.1f} % against the runs alone; "
+              f"the sweep's own {100 * r['overhead_cpu_sweep_own']:.1f} %)"
               f"  (sweep process {r['cpu_parent_s']:.2f} CPU s, workers {r['cpu_workers_s']:.2f}, in runs "
               f"{r['cpu_in_runs_s']:.2f}; median of {r['repeats']})")
     print(f"speed-up of 2 local workers over 1: {results['speedup_2_vs_1']:.2f}x (medians), "
