@@ -303,7 +303,8 @@ class ResultStore:
             st._depth -= 1
             if st._depth == 0:
                 if kind is not None:
-                    st.db.execute("ROLLBACK")
+                    if st.db.in_transaction:  # (SQLite ends it itself after some errors)
+                        st.db.execute("ROLLBACK")
                     return
                 try:
                     st.db.execute("COMMIT")
