@@ -442,8 +442,9 @@ def _workers_of(pid: int) -> list:
 
 def test_rows_received_before_an_interruption_are_written(tmp_path, monkeypatch):
     """Rows wait up to half a second to be written with the next claim; an exception (here Ctrl-C in a progress
-    callback) writes the ones received before claims are freed.  If writing them fails too, the interruption is
-    still what the caller gets, with a warning naming the rows lost."""
+    callback, then a claim that fails and rolls back the rows written in its transaction) writes the ones received
+    before claims are freed.  If writing them fails too, the interruption is still what the caller gets, with a
+    warning counting the rows lost."""
     from knifeedge.store import ResultStore
 
     def stop_at(n):
@@ -462,6 +463,25 @@ def test_rows_received_before_an_interruption_are_written(tmp_path, monkeypatch)
     assert len(_rows(out)) == 4  # both tasks received: the one whose third row was being reported, and the first
     with sqlite3.connect(out) as con:
         assert con.execute("SELECT count(*) FROM claims").fetchone()[0] == 0
+
+    # rows are written in the transaction of the next claim: if the claim fails, they are rolled back with it,
+    # and written on the way out
+    out = tmp_path / "claims-fail.sqlite"
+    claim = ResultStore.claim
+    calls = []
+
+    def claim_fails_the_second_time(self, *args):
+        calls.append(1)
+        if len(calls) == 2:
+            raise sqlite3.OperationalError("database is locked")
+        return claim(self, *args)
+
+    monkeypatch.setattr(ResultStore, "claim", claim_fails_the_second_time)
+    with pytest.raises(sqlite3.OperationalError, match="locked"):
+        ke.sweep(_quick(), QUICK, executor="serial", out=out, progress=False, chunksize=2)
+    assert len(calls) == 2 and len(_rows(out)) == 4  # the two tasks claimed by the first call
+    monkeypatch.setattr(ResultStore, "claim", claim)
+    out = tmp_path / "runs.sqlite"
 
     def broken_disk(self, rows, *args):
         raise sqlite3.OperationalError("disk I/O error")

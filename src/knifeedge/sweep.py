@@ -847,8 +847,7 @@ class _Sweep:
                 if self.store is not None:
                     now = time.monotonic()
                     if self.pending and now - self.written_at >= WRITE_SECONDS:
-                        with self.store.transaction():
-                            self._write()
+                        self._write_now()
                     self.store.renew()
                     if others and not todo and not ready and now - last_poll > 0.5:  # another sweep's runs: done?
                         last_poll = now
@@ -857,8 +856,7 @@ class _Sweep:
                         ready.extend(self._claim(waiting, others))
                     self.bar.postfix(waiting=len(others))
             if self.store is not None:
-                with self.store.transaction():
-                    self._write()
+                self._write_now()
         except BaseException:
             interrupted = True
             raise
@@ -887,27 +885,36 @@ class _Sweep:
                           "run the same sweep again to compute them", RuntimeWarning, stacklevel=3)
         return table
 
-    def _write(self) -> None:
-        """Write the rows received since the last write (inside the store's transaction the caller opened)."""
+    def _write(self) -> int:
+        """Write the rows received since the last write, inside the store's transaction the caller opened; returns
+        how many tasks' rows it wrote, to pass to :meth:`_written` once that transaction has committed (until
+        then they stay waiting: a transaction that fails takes them with it, and they are written again)."""
         if not self.pending:
-            return
+            return 0
         rows, specs, sums = [], {}, {}
+        spec_of = self.spec_of
         for task_rows, ids, out in self.pending:
             rows += task_rows
-            spec_of = self.spec_of
             specs.update((r, spec_of[r].text) for r in ids)
             sums.update(self._checksums(ids, out, task_rows))
         self.store.write(rows, specs, sums)
-        self.pending = []  # the caller's transaction may yet fail: then the rows are lost with it, as a crash would
+        return len(self.pending)
+
+    def _written(self, n: int) -> None:
+        del self.pending[:n]
         self.written_at = time.monotonic()
+
+    def _write_now(self) -> None:
+        with self.store.transaction():
+            n = self._write()
+        self._written(n)
 
     def _write_last(self, interrupted: bool) -> None:
         """At the end (or on the way out of an exception): write the rows received and not written yet, then free
         the runs handed out but unfinished, or claimed and not handed out (not results).  A failure to write is
         raised, unless the sweep is already on its way out of another exception (then it is a warning)."""
         try:
-            with self.store.transaction():
-                self._write()
+            self._write_now()
         except Exception as exc:  # noqa: BLE001
             if not interrupted:
                 raise
@@ -924,8 +931,9 @@ class _Sweep:
         if self.store is None:
             return ids
         with self.store.transaction():
-            self._write()
+            n = self._write()
             claimed, done, busy, damaged = self.store.claim(ids, self.since)
+        self._written(n)
         for msg in damaged:
             if msg not in self.damaged:
                 self.damaged.append(msg)
