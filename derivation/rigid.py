@@ -54,8 +54,10 @@ symbolically, so the derivation takes seconds.
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
+import numpy as np
 import sympy as sp
 
 from .engine import ModelSpec, ReducedSystem
@@ -124,7 +126,7 @@ class Sphere:
 class Circle:
     """Circle (edge of a disk) of radius ``radius`` centred at ``centre`` in the plane normal to ``axis``.
 
-    ``axis`` is a unit vector (body axes).  Lowest point:
+    ``axis`` is the disk's normal (body axes), normalized when it is built (a zero axis is refused).  Lowest point:
     ``centre - radius (n - (n.k) k) / |n - (n.k) k|``; undefined when the
     disk lies flat (``n`` parallel to ``k``).
     """
@@ -132,6 +134,14 @@ class Circle:
     radius: sp.Expr
     axis: tuple = (0, 0, 1)
     centre: tuple = (0, 0, 0)
+
+    def __post_init__(self):
+        k = _vec(self.axis)
+        norm2 = sp.simplify(k.dot(k))
+        if norm2.is_zero or (norm2.is_number and not float(norm2) > 0):
+            raise ValueError(f"`axis` of a Circle must be a non-zero vector (the normal of the disk), got {self.axis}")
+        if sp.simplify(norm2 - 1) != 0:  # a direction: normalized, so that the lowest point is on the circle
+            object.__setattr__(self, "axis", tuple(sp.simplify(c / sp.sqrt(norm2)) for c in k))
 
     def lowest_point(self, n: sp.Matrix) -> sp.Matrix:
         k = _vec(self.axis)
@@ -167,6 +177,15 @@ class RigidBody:
     defaults : default parameter values (the CLI's) -- by default the first preset -- and
         ``default_state``: ``{"n0": ..., "omega0": ...}`` for ``initial_state``.
     source : name of the module that defines the body (its text enters the input hash).
+    hangs : the centre of mass may lie below the contact (a body balanced on an edge over a narrow support,
+        as the paper's knife edge); otherwise it must be above the table.
+
+    :meth:`check` (run by :func:`derive`) refuses a body that cannot exist: a mass that is not positive, an
+    inertia with a negative principal moment or whose principal moments break the triangle inequality
+    ``I1 + I2 >= I3`` (a zero moment only for mass on a line), a centre of mass at or below the table at the
+    rest orientation (``default_state["n0"]``, else upright), a parameter without a unit, an ``n0`` that is
+    not three real numbers.  Numbers are checked at every preset and at ``defaults``, and symbolically where
+    SymPy can decide the sign.
     """
 
     name: str
@@ -186,6 +205,7 @@ class RigidBody:
     source: str = ""
     defaults: dict = field(default_factory=dict)
     default_state: dict = field(default_factory=dict)
+    hangs: bool = False
 
     def check(self) -> None:
         """Collect every problem of the description and raise one ``ValueError``."""
@@ -214,8 +234,68 @@ class RigidBody:
             extra = [p for p in values if p not in names]
             if missing or extra:
                 problems.append(f"preset {preset!r}: missing {missing}, unknown {extra}")
+        no_unit = [p for p in names if p not in {str(k) for k in self.param_units}]
+        if no_unit:
+            problems.append(f"parameters without a unit in `param_units`: {no_unit} (e.g. {{{no_unit[0]!r}: 'm'}}; "
+                            f"'1' for a dimensionless one)")
+        if not problems:
+            problems += _physical_problems(self, inertia)
         if problems:
             raise ValueError(f"{self.name}: " + "; ".join(problems))
+
+
+def _rest_vertical(body: RigidBody, problems: list):
+    """``default_state["n0"]`` as a unit 3-vector of floats (upright if absent); ``None`` after a problem."""
+    n0 = body.default_state.get("n0", (0.0, 0.0, 1.0))
+    try:
+        ok = not isinstance(n0, (str, bytes)) and len(n0) == 3 and all(
+            isinstance(sp.sympify(c), sp.Expr) and sp.sympify(c).is_extended_real and sp.sympify(c).is_finite
+            for c in n0)
+    except (TypeError, sp.SympifyError):
+        ok = False
+    norm = math.sqrt(sum(float(c) ** 2 for c in n0)) if ok else 0.0
+    if not norm > 0:
+        problems.append(f"`default_state['n0']` must be three finite real numbers, not all zero (the upward "
+                        f"vertical in body axes), got {n0!r}")
+        return None
+    return sp.Matrix([float(c) / norm for c in n0])
+
+
+def _physical_problems(body: RigidBody, inertia: sp.Matrix) -> list:
+    """What makes ``body`` impossible (see :class:`RigidBody`), at each numeric parameter set and symbolically."""
+    problems: list = []
+    n0 = _rest_vertical(body, problems)
+    height = None if n0 is None else sp.sympify(-body.shape.lowest_point(n0).dot(n0))
+    mass = sp.sympify(body.mass)
+    sets = [(f"preset {k!r}", v) for k, v in sorted(body.presets.items())]
+    sets += [("`defaults`", body.defaults)] if body.defaults else []
+    if not sets and not inertia.free_symbols | mass.free_symbols:
+        sets = [("its numbers", {})]
+    for label, values in sets:
+        at = {q: float(values[str(q)]) for q in body.params if str(q) in values}
+        m = mass.subs(at)
+        if m.is_number and not float(m) > 0:
+            problems.append(f"`mass` must be positive, got {float(m):g} at {label}")
+        I = inertia.subs(at)
+        if not I.free_symbols:
+            moments = np.linalg.eigvalsh(np.array(I.tolist(), dtype=float))
+            tol = 1e-9 * max(abs(moments).max(), 1e-300)
+            if moments[0] < -tol:
+                problems.append(f"`inertia` must be positive definite; its principal moments at {label} are "
+                                f"{', '.join(f'{x:.6g}' for x in moments)}")
+            elif moments[0] + moments[1] < moments[2] - tol:
+                problems.append(f"the principal moments of `inertia` at {label} ({', '.join(f'{x:.6g}' for x in moments)}) "
+                                f"break the triangle inequality I1 + I2 >= I3: no mass distribution has them")
+        z = height.subs(at) if height is not None else None
+        if z is not None and z.is_number and not body.hangs and not float(z) > 0:
+            problems.append(f"the centre of mass is {-float(z):g} below the table at the rest orientation "
+                            f"n0 = {tuple(float(c) for c in n0)} at {label}: the shape must enclose it "
+                            f"(or set `hangs=True` for a body balanced on an edge over a support)")
+    if mass.is_nonpositive:
+        problems.append(f"`mass` must be positive, got {mass}")
+    if height is not None and not body.hangs and height.is_nonpositive:
+        problems.append(f"the centre of mass is below the table at the rest orientation (height {height})")
+    return problems
 
 
 @dataclass

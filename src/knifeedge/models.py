@@ -18,7 +18,7 @@ from pathlib import Path
 
 import numpy as np
 
-from . import _validate
+from . import _validate, modulecheck
 from .generated import MODULES
 
 MODEL_NAMES = tuple(sorted({m for m, _ in MODULES}))
@@ -372,7 +372,15 @@ _CACHE: dict = {}
 
 
 def _module_from_path(folder: Path, name: str, fidelity: str):
-    """Import ``folder/<name>_<fidelity>.py`` under a name unique to its content; returns (module, path)."""
+    """Import ``folder/<name>_<fidelity>.py`` under a name unique to its content; returns (module, path).
+
+    The name and fidelity are confined to ``folder``; the module's content hash and sizes are verified
+    (:func:`knifeedge.modulecheck.check`) before it runs.
+    """
+    for what, v in (("name", name), ("fidelity", fidelity)):
+        if any(c in v for c in "/\\\0:") or v.startswith(".") or v != v.strip():
+            raise ValueError(f"model `{what}` {v!r} must be a plain name (no path separators, no leading dot): "
+                             f"models are files of the folder `path`")
     path = (folder / f"{name}_{fidelity}.py").resolve()
     if not path.is_file():
         have = sorted(p.stem for p in folder.glob("*_*.py"))
@@ -380,6 +388,7 @@ def _module_from_path(folder: Path, name: str, fidelity: str):
                          f"(expected {path.name}); it holds {', '.join(have) or 'no generated modules'}. "
                          f"Write it with: knifeedge derive MODEL_FILE.py --out {folder}")
     data = path.read_bytes()
+    modulecheck.check(data, str(path), f"knifeedge derive MODEL_FILE.py --out {folder}")
     digest = hashlib.sha256(data).hexdigest()[:16]
     # a flat name (kernels import the right-hand side by it) that changes with the content
     mod_name = f"knifeedge_model_{name}_{fidelity}_{digest}"
@@ -458,6 +467,9 @@ def load(name: str, fidelity: str = "full", pose: bool = False, path: str | Path
         raise ValueError(f"unknown `fidelity` {fidelity!r} for {name}; accepted: {', '.join(accepted)}")
     key = (name, fidelity, bool(pose))
     if key not in _CACHE:
-        module = importlib.import_module(f"{__package__}.generated.{MODULES[(name, fidelity)]}")
+        module_name = f"{__package__}.generated.{MODULES[(name, fidelity)]}"
+        origin = Path(importlib.util.find_spec(module_name).origin)
+        modulecheck.check(origin.read_bytes(), str(origin), "make derive in the source tree, or reinstall knifeedge")
+        module = importlib.import_module(module_name)
         _CACHE[key] = Model(module, bool(pose))
     return _CACHE[key]
