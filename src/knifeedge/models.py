@@ -388,12 +388,12 @@ def _module_from_path(folder: Path, name: str, fidelity: str):
                          f"(expected {path.name}); it holds {', '.join(have) or 'no generated modules'}. "
                          f"Write it with: knifeedge derive MODEL_FILE.py --out {folder}")
     data = path.read_bytes()
-    modulecheck.check(data, str(path), f"knifeedge derive MODEL_FILE.py --out {folder}")
     digest = hashlib.sha256(data).hexdigest()[:16]
     # a flat name (kernels import the right-hand side by it) that changes with the content
     mod_name = f"knifeedge_model_{name}_{fidelity}_{digest}"
     module = sys.modules.get(mod_name)
-    if module is None:
+    if module is None:  # checked before it runs (a module of the same content was checked when imported)
+        modulecheck.check(data, str(path), f"knifeedge derive MODEL_FILE.py --out {folder}")
         spec = importlib.util.spec_from_file_location(mod_name, path)
         module = importlib.util.module_from_spec(spec)
         sys.modules[mod_name] = module
