@@ -167,10 +167,12 @@ def derive_specs(specs, check: bool = True, log=None) -> dict:
 
 
 def _package_folders() -> set:
-    """The package's own ``generated/`` folders (source tree and installed package), resolved."""
-    folders = {ROOT / "generated"}
-    found = importlib.util.find_spec("knifeedge.generated")
-    folders |= {Path(f) for f in (found.submodule_search_locations or ())} if found is not None else set()
+    """The package's own folders (``knifeedge``, its ``generated/`` and ``derive/``, as installed and in the source
+    tree), resolved."""
+    folders = {ROOT / "generated", ROOT / "derivation", ROOT / "src" / "knifeedge"}
+    for name in ("knifeedge", "knifeedge.generated", "knifeedge.derive"):
+        found = importlib.util.find_spec(name)
+        folders |= {Path(f) for f in (found.submodule_search_locations or ())} if found is not None else set()
     return {f.resolve() for f in folders}
 
 
@@ -188,10 +190,11 @@ def written_by_knifeedge(path: Path) -> bool:
 def check_out(out: Path, keys) -> None:
     """Refuse to write the modules ``keys`` ((name, fidelity) pairs) into the package's own ``generated/`` or over
     a file knifeedge did not write; nothing is written when one of them is refused."""
-    out = Path(out)
-    if out.resolve() in _package_folders():
-        raise DeriveError(f"--out {out} is the package's own generated/ folder, whose built-in models only "
-                          f"`make derive` writes; choose a folder of your own (e.g. --out my_models)")
+    out, package = Path(out), _package_folders()
+    if any(f == out.resolve() or f in out.resolve().parents for f in package):
+        raise DeriveError(f"--out {out} is inside the package's own folders (its generated/ folder holds the "
+                          f"built-in models, which only `make derive` writes); choose a folder of your own "
+                          f"(e.g. --out my_models)")
     for key in keys:
         try:
             path = emit.module_path(out, *key)

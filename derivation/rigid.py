@@ -180,12 +180,12 @@ class RigidBody:
     hangs : the centre of mass may lie below the contact (a body balanced on an edge over a narrow support,
         as the paper's knife edge); otherwise it must be above the table.
 
-    :meth:`check` (run by :func:`derive`) refuses a body that cannot exist: a mass that is not positive, an
-    inertia with a negative principal moment or whose principal moments break the triangle inequality
-    ``I1 + I2 >= I3`` (a zero moment only for mass on a line), a centre of mass at or below the table at the
-    rest orientation (``default_state["n0"]``, else upright), a parameter without a unit, an ``n0`` that is
-    not three real numbers.  Numbers are checked at every preset and at ``defaults``, and symbolically where
-    SymPy can decide the sign.
+    :meth:`check` (run by :func:`derive`) refuses a body that cannot exist: a mass or gravity that is not
+    positive, a negative ``sigma``, an inertia with a negative principal moment or whose principal moments
+    break the triangle inequality ``I1 + I2 >= I3`` (a zero moment only for mass on a line), a centre of
+    mass at or below the table at the rest orientation (``default_state["n0"]``, else upright), a parameter
+    without a unit, an ``n0`` that is not three real numbers.  Numbers are checked at every preset and at
+    ``defaults``, and symbolically where SymPy can decide the sign.
     """
 
     name: str
@@ -272,10 +272,16 @@ def _physical_problems(body: RigidBody, inertia: sp.Matrix) -> list:
     if not sets and not inertia.free_symbols | mass.free_symbols:
         sets = [("its numbers", {})]
     for label, values in sets:
-        at = {q: float(values[str(q)]) for q in body.params if str(q) in values}
-        m = mass.subs(at)
-        if m.is_number and not float(m) > 0:
-            problems.append(f"`mass` must be positive, got {float(m):g} at {label}")
+        try:
+            at = {q: float(values[str(q)]) for q in body.params if str(q) in values}
+        except (TypeError, ValueError):
+            problems.append(f"the values of {label} must be real numbers, got {values!r}")
+            continue
+        for what, e, sign in (("mass", mass, "positive"), ("gravity", body.gravity, "positive"),
+                              ("sigma", body.sigma or 0, "nonnegative")):
+            v = sp.sympify(e).subs(at)
+            if v.is_number and not (float(v) > 0 if sign == "positive" else float(v) >= 0):
+                problems.append(f"`{what}` must be {sign}, got {float(v):g} at {label}")
         I = inertia.subs(at)
         if not I.free_symbols:
             moments = np.linalg.eigvalsh(np.array(I.tolist(), dtype=float))
@@ -284,8 +290,9 @@ def _physical_problems(body: RigidBody, inertia: sp.Matrix) -> list:
                 problems.append(f"`inertia` must be positive definite; its principal moments at {label} are "
                                 f"{', '.join(f'{x:.6g}' for x in moments)}")
             elif moments[0] + moments[1] < moments[2] - tol:
-                problems.append(f"the principal moments of `inertia` at {label} ({', '.join(f'{x:.6g}' for x in moments)}) "
-                                f"break the triangle inequality I1 + I2 >= I3: no mass distribution has them")
+                listed = ", ".join(f"{x:.6g}" for x in moments)
+                problems.append(f"the principal moments of `inertia` at {label} ({listed}) break the triangle "
+                                f"inequality I1 + I2 >= I3: no mass distribution has them")
         z = height.subs(at) if height is not None else None
         if z is not None and z.is_number and not body.hangs and not float(z) > 0:
             problems.append(f"the centre of mass is {-float(z):g} below the table at the rest orientation "

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/rigid_emit.py (make derive) from the rigid body 'two_mode_rigid'
 through derivation/rigid.py (Lagrange-d'Alembert in body quasi-velocities).
-SymPy 1.14.0; input hash sha256:6571b4d34f45383665ab3dd2edc6b3339ea0a87d995d0d24365018f262dde3e9
+SymPy 1.14.0; input hash sha256:fb25878e7534e0bf4e56d61d145bcd8e47ac66906aaa736e1b89e6e5e4eddffa
 
 Chiral knife edge of the paper's section III as the real rigid body: massless inverted-U bar of half-length L, masses M/2 a distance ell below its ends, contact at the lowest point of a circle of radius D in a vertical plane at the chiral angle alpha to the bar; per unit mass, exact in the tilts.
 
@@ -72,7 +72,7 @@ PRESETS = {}
 PRESET_SOURCES = {}
 #: the model file the body comes from
 SOURCE = 'knifeedge.derive.rigid_knife_edge'
-INPUT_HASH = '6571b4d34f45383665ab3dd2edc6b3339ea0a87d995d0d24365018f262dde3e9'
+INPUT_HASH = 'fb25878e7534e0bf4e56d61d145bcd8e47ac66906aaa736e1b89e6e5e4eddffa'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 253, 'constants': 25, 'rhs_q': 221, 'rhs_pose': 293, 'rhs_pose_q': 261, 'pose_rates': 73, 'energy': 56, 'multipliers': 267}
@@ -960,4 +960,4 @@ def body_outlines(s, p, uu):
         out[0, j, 2] = _c16*_c23 - _c16*(-_c16*_c31 + _c22) + _c21*_c24 + _c24*_c30*_c31 + _c27*_c29*_c31 + _c27*_c8
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '008b3372b3c77fe810ca121bd6c7f5a3095e909431b3efbf28ef52820fd2122e'
+MODULE_SHA256 = 'f23e400f1b3e420bc301b224a96b4123693b050d22490b27a2940b65fe72b526'

@@ -73,12 +73,21 @@ def test_root3_a_model_module_is_what_its_header_says_sizes_checked_before_it_ru
     assert not hasattr(builtins, "ran")
 
 
+def test_root3_a_model_module_is_what_its_header_says_renamed_file_refused_before_it_runs(user_folder, tmp_path):
+    folder = tmp_path / "renamed"
+    folder.mkdir()
+    shutil.copy(user_folder / "damped_sleigh_full.py", folder / "other_full.py")
+    with pytest.raises(ValueError, match="declares model 'damped_sleigh' at fidelity 'full', not 'other'"):
+        ke.load("other", path=folder)
+    assert not any(k.startswith("knifeedge_model_other_") for k in sys.modules)
+
+
 def test_root3_a_model_module_is_what_its_header_says_every_builtin_sealed(monkeypatch):
     """Every built-in module verifies; load checks a built-in's file before importing it."""
     for (name, fidelity), stem in kmodels.MODULES.items():
         modulecheck.check((ROOT / "generated" / f"{stem}.py").read_bytes(), stem, "make derive")
     seen = []
-    monkeypatch.setattr(kmodels.modulecheck, "check", lambda data, where, remedy: seen.append(where))
+    monkeypatch.setattr(kmodels.modulecheck, "check", lambda data, where, *args: seen.append(where))
     monkeypatch.setattr(kmodels, "_CACHE", {})
     kmodels.load("two_mode", fidelity="reduced")
     assert seen and seen[0].endswith("two_mode_reduced.py")
@@ -100,12 +109,14 @@ def test_root3_a_model_module_is_what_its_header_says_names_confined(user_folder
 def test_root3_a_model_module_is_what_its_header_says_derive_refuses_the_package_folder():
     from knifeedge.derive import DeriveError, derive_files
     before = {p.name: p.read_bytes() for p in (ROOT / "generated").glob("*.py")}
-    with pytest.raises(DeriveError, match="package's own generated"):
-        derive_files([USER_MODEL], ROOT / "generated")
+    for folder in (ROOT / "generated", ROOT / "generated" / "sub", ROOT / "src" / "knifeedge"):
+        with pytest.raises(DeriveError, match="inside the package's own folders"):
+            derive_files([USER_MODEL], folder)
     assert before == {p.name: p.read_bytes() for p in (ROOT / "generated").glob("*.py")}
     r = subprocess.run([sys.executable, "-m", "knifeedge", "derive", str(USER_MODEL), "--out",
                         str(ROOT / "generated")], capture_output=True, text=True)
-    assert r.returncode != 0 and "package's own generated" in r.stderr
+    assert r.returncode != 0 and "inside the package's own folders" in r.stderr
+    assert not (ROOT / "generated" / "sub").exists()
 
 
 def test_root3_a_model_module_is_what_its_header_says_users_file_not_overwritten(user_folder, tmp_path):
@@ -244,6 +255,7 @@ def _body(preset=None, **changes):
     ({"I1": -2e-4}, "positive definite"),
     ({"m": -1.0}, "`mass` must be positive"),
     ({"h": 0.05}, "below the table"),                                       # centre of mass 3 cm under the bottom
+    ({"g": -9.81}, "`gravity` must be positive"),
 ])
 def test_root5_a_rigid_body_is_physical_or_refused(preset, match):
     _body().check()  # the same body with the Kane-Levinson numbers (docs/rigid-bodies.md) is accepted

@@ -393,7 +393,7 @@ def _module_from_path(folder: Path, name: str, fidelity: str):
     mod_name = f"knifeedge_model_{name}_{fidelity}_{digest}"
     module = sys.modules.get(mod_name)
     if module is None:  # checked before it runs (a module of the same content was checked when imported)
-        modulecheck.check(data, str(path), f"knifeedge derive MODEL_FILE.py --out {folder}")
+        modulecheck.check(data, str(path), f"knifeedge derive MODEL_FILE.py --out {folder}", (name, fidelity))
         spec = importlib.util.spec_from_file_location(mod_name, path)
         module = importlib.util.module_from_spec(spec)
         sys.modules[mod_name] = module
@@ -469,7 +469,8 @@ def load(name: str, fidelity: str = "full", pose: bool = False, path: str | Path
     if key not in _CACHE:
         module_name = f"{__package__}.generated.{MODULES[(name, fidelity)]}"
         origin = Path(importlib.util.find_spec(module_name).origin)
-        modulecheck.check(origin.read_bytes(), str(origin), "make derive in the source tree, or reinstall knifeedge")
+        modulecheck.check(origin.read_bytes(), str(origin), "make derive in the source tree, or reinstall knifeedge",
+                          (name, fidelity))
         module = importlib.import_module(module_name)
         _CACHE[key] = Model(module, bool(pose))
     return _CACHE[key]

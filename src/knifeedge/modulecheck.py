@@ -41,17 +41,24 @@ def sealed_ok(data: bytes) -> bool:
     return match is not None and hashlib.sha256(data[:start]).hexdigest() == match.group(1).decode()
 
 
-def check(data: bytes, where: str, remedy: str) -> None:
+def check(data: bytes, where: str, remedy: str, expect: tuple | None = None) -> None:
     """Raise ``ValueError`` unless ``data`` is a sealed generated module whose declared sizes fit its functions.
 
-    ``where`` names the file in the message, ``remedy`` says how to regenerate it.
+    ``where`` names the file in the message, ``remedy`` says how to regenerate it; ``expect``: the
+    ``(MODEL, FIDELITY)`` the module must declare.
     """
     if not sealed_ok(data):
         raise ValueError(
             f"generated module {where} does not match its own content hash (MODULE_SHA256, its last line): it was "
             f"edited after knifeedge wrote it, or written by an older knifeedge or by something else. knifeedge does "
             f"not run it. Regenerate it ({remedy})")
-    problems = size_problems(data.decode("utf-8"))
+    text = data.decode("utf-8")
+    declared = tuple(_literals(text[:text.find("\ndef ")]).get(k) for k in ("MODEL", "FIDELITY"))
+    if expect is not None and declared != tuple(expect):
+        raise ValueError(f"{where} declares model {declared[0]!r} at fidelity {declared[1]!r}, not {expect[0]!r} at "
+                         f"{expect[1]!r}: a module is loaded under the name it was written for; knifeedge does not "
+                         f"run it")
+    problems = size_problems(text)
     if problems:
         raise ValueError(f"generated module {where} is inconsistent ({'; '.join(problems)}); knifeedge does not run "
                          f"it. Regenerate it ({remedy})")
