@@ -57,8 +57,9 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-import numpy as np
 import sympy as sp
+
+from knifeedge import bodies
 
 from .engine import ModelSpec, ReducedSystem
 
@@ -262,14 +263,16 @@ def _rest_vertical(body: RigidBody, problems: list):
 
 
 def _physical_problems(body: RigidBody, inertia: sp.Matrix) -> list:
-    """What makes ``body`` impossible (see :class:`RigidBody`), at each numeric parameter set and symbolically."""
+    """What makes ``body`` impossible (:func:`knifeedge.bodies.problems`), at each numeric parameter set, and
+    symbolically where SymPy can tell the sign."""
     problems: list = []
     n0 = _rest_vertical(body, problems)
-    height = None if n0 is None else sp.sympify(-body.shape.lowest_point(n0).dot(n0))
-    mass = sp.sympify(body.mass)
+    height = None if n0 is None or body.hangs else sp.sympify(-body.shape.lowest_point(n0).dot(n0))
+    scalars = [sp.sympify(body.mass), sp.sympify(body.gravity), sp.sympify(body.sigma or 0)]
     sets = [(f"preset {k!r}", v) for k, v in sorted(body.presets.items())]
     sets += [("`defaults`", body.defaults)] if body.defaults else []
-    if not sets and not inertia.free_symbols | mass.free_symbols:
+    free = set().union(inertia.free_symbols, *(e.free_symbols for e in scalars))
+    if not sets and not free | (height.free_symbols if height is not None else set()):
         sets = [("its numbers", {})]
     for label, values in sets:
         try:
@@ -277,32 +280,27 @@ def _physical_problems(body: RigidBody, inertia: sp.Matrix) -> list:
         except (TypeError, ValueError):
             problems.append(f"the values of {label} must be real numbers, got {values!r}")
             continue
-        for what, e, sign in (("mass", mass, "positive"), ("gravity", body.gravity, "positive"),
-                              ("sigma", body.sigma or 0, "nonnegative")):
-            v = sp.sympify(e).subs(at)
-            if v.is_number and not (float(v) > 0 if sign == "positive" else float(v) >= 0):
-                problems.append(f"`{what}` must be {sign}, got {float(v):g} at {label}")
-        I = inertia.subs(at)
-        if not I.free_symbols:
-            moments = np.linalg.eigvalsh(np.array(I.tolist(), dtype=float))
-            tol = 1e-9 * max(abs(moments).max(), 1e-300)
-            if moments[0] < -tol:
-                problems.append(f"`inertia` must be positive definite; its principal moments at {label} are "
-                                f"{', '.join(f'{x:.6g}' for x in moments)}")
-            elif moments[0] + moments[1] < moments[2] - tol:
-                listed = ", ".join(f"{x:.6g}" for x in moments)
-                problems.append(f"the principal moments of `inertia` at {label} ({listed}) break the triangle "
-                                f"inequality I1 + I2 >= I3: no mass distribution has them")
-        z = height.subs(at) if height is not None else None
-        if z is not None and z.is_number and not body.hangs and not float(z) > 0:
-            problems.append(f"the centre of mass is {-float(z):g} below the table at the rest orientation "
-                            f"n0 = {tuple(float(c) for c in n0)} at {label}: the shape must enclose it "
-                            f"(or set `hangs=True` for a body balanced on an edge over a support)")
-    if mass.is_nonpositive:
-        problems.append(f"`mass` must be positive, got {mass}")
-    if height is not None and not body.hangs and height.is_nonpositive:
-        problems.append(f"the centre of mass is below the table at the rest orientation (height {height})")
+        numbers = [e.subs(at) for e in scalars] + [inertia.subs(at)] + ([height.subs(at)] if height is not None else [])
+        if any(e.free_symbols for e in numbers):
+            continue
+        found = bodies.problems(*(float(e) for e in numbers[:3]), numbers[3].tolist(),
+                                float(numbers[4]) if height is not None else None)
+        hint = " (the shape must enclose it, or set `hangs=True` for a body balanced on an edge over a support)"
+        problems += [f"{p} at {label}" + (hint if "centre of mass" in p else "") for p in found]
+    if scalars[0].is_nonpositive:
+        problems.append(f"`mass` must be positive, got {scalars[0]}")
+    if height is not None and height.is_nonpositive:
+        problems.append(f"the centre of mass must be above the table at rest (height {height})")
     return problems
+
+
+def body_values(body: RigidBody) -> tuple:
+    """``(mass, gravity, sigma, inertia, height)`` as expressions of the parameters (``height``: of the centre of
+    mass at the rest orientation; ``None`` for a body that hangs): what :func:`knifeedge.bodies.problems` checks,
+    written into every rigid module as ``body_values(p)``."""
+    n0 = _rest_vertical(body, [])
+    height = None if body.hangs or n0 is None else -body.shape.lowest_point(n0).dot(n0)
+    return body.mass, body.gravity, body.sigma or sp.S.Zero, sp.Matrix(body.inertia), height
 
 
 @dataclass

@@ -102,6 +102,28 @@ def initial_state(n0=(0.0, 0.0, 1.0), omega0=(0.0, 0.0, 0.0), pose=None):
 '''
 
 
+def body_values_source(body: rigid.RigidBody, params) -> str:
+    """``body_values(p)``: the numbers :func:`knifeedge.bodies.problems` checks, at a parameter vector ``p`` of the
+    parameters ``params`` (those of the body a fidelity leaves out are zero); plain Python, in every rigid module:
+    the runtime checks every parameter set with it."""
+    mass, gravity, sigma, inertia, height = rigid.body_values(body)
+    dropped = {q: 0 for q in body.params if q not in params}
+    exprs = [sp.sympify(e).subs(dropped) for e in (mass, gravity, sigma, *inertia, height if height is not None else 0)]
+    lines, _ = _cse_block(exprs, [f"out[{i}]" for i in range(len(exprs))], set(params))
+    nl = "\n"
+    return f'''
+
+def body_values(p):
+    """``(mass, gravity, sigma, inertia, height)`` of the body at the parameters ``p``: what
+    ``knifeedge.bodies.problems`` checks (``height``: of the centre of mass above the table at rest; ``None`` for
+    a body that hangs below the edge it balances on)."""
+    out = [0.0] * {len(exprs)}
+{nl.join(_unpack([str(q) for q in params], "p"))}
+{nl.join(lines)}
+    return (out[0], out[1], out[2], (out[3:6], out[6:9], out[9:12]), {"out[12]" if height is not None else "None"})
+'''
+
+
 def module_source(system: rigid.RollingSystem, fidelity: str) -> str:
     """Source of the generated module of a derived rigid body."""
     if fidelity != "full":  # small-tilt fidelities (derivation/rigid_small.py)
@@ -257,4 +279,5 @@ def multipliers(s, p):
 {nl.join(unpack_p)}
 {nl.join(lam_lines)}
     return out
-{_INITIAL_STATE.format(n=n, n_pose=n + npose, VERTICAL=VERTICAL_CHECK)}''' + drawing.module_source(system)
+{_INITIAL_STATE.format(n=n, n_pose=n + npose, VERTICAL=VERTICAL_CHECK)}''' + body_values_source(body, spec.params) \
+        + drawing.module_source(system)

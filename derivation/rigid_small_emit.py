@@ -251,4 +251,4 @@ SYMPY_VERSION = {sp.__version__!r}
 OP_COUNTS = {ops!r}
 
 
-{rhs_src}{extra}{initial}'''
+{rhs_src}{extra}{initial}''' + rigid_emit.body_values_source(body, spec.params)

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/rigid_emit.py (make derive) from the rigid body 'two_mode_rigid'
 through derivation/rigid.py (Lagrange-d'Alembert in body quasi-velocities).
-SymPy 1.14.0; input hash sha256:fb25878e7534e0bf4e56d61d145bcd8e47ac66906aaa736e1b89e6e5e4eddffa
+SymPy 1.14.0; input hash sha256:945011d3c1d2d259abd630d1190f35e96c0198ec7fdd2610f3ebc54f298ca366
 
 Chiral knife edge of the paper's section III as the real rigid body: massless inverted-U bar of half-length L, masses M/2 a distance ell below its ends, contact at the lowest point of a circle of radius D in a vertical plane at the chiral angle alpha to the bar; per unit mass, exact in the tilts.
 
@@ -72,7 +72,7 @@ PRESETS = {}
 PRESET_SOURCES = {}
 #: the model file the body comes from
 SOURCE = 'knifeedge.derive.rigid_knife_edge'
-INPUT_HASH = 'fb25878e7534e0bf4e56d61d145bcd8e47ac66906aaa736e1b89e6e5e4eddffa'
+INPUT_HASH = '945011d3c1d2d259abd630d1190f35e96c0198ec7fdd2610f3ebc54f298ca366'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 253, 'constants': 25, 'rhs_q': 221, 'rhs_pose': 293, 'rhs_pose_q': 261, 'pose_rates': 73, 'energy': 56, 'multipliers': 267}
@@ -808,6 +808,33 @@ def initial_state(n0=(0.0, 0.0, 1.0), omega0=(0.0, 0.0, 0.0), pose=None):
     return np.concatenate([s, pose])
 
 
+def body_values(p):
+    """``(mass, gravity, sigma, inertia, height)`` of the body at the parameters ``p``: what
+    ``knifeedge.bodies.problems`` checks (``height``: of the centre of mass above the table at rest; ``None`` for
+    a body that hangs below the edge it balances on)."""
+    out = [0.0] * 13
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+    _c0 = (L*L)
+    out[0] = 1
+    out[1] = g
+    out[2] = 0
+    out[3] = 0
+    out[4] = 0
+    out[5] = 0
+    out[6] = 0
+    out[7] = _c0
+    out[8] = 0
+    out[9] = 0
+    out[10] = 0
+    out[11] = _c0
+    out[12] = 0
+    return (out[0], out[1], out[2], (out[3:6], out[6:9], out[9:12]), None)
+
+
 
 #: how to draw the body (derivation/drawing.py): names of the rows of ``body_points``,
 #: segments between them, the contact point, the point masses, the tilts a picture may
@@ -960,4 +987,4 @@ def body_outlines(s, p, uu):
         out[0, j, 2] = _c16*_c23 - _c16*(-_c16*_c31 + _c22) + _c21*_c24 + _c24*_c30*_c31 + _c27*_c29*_c31 + _c27*_c8
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'f23e400f1b3e420bc301b224a96b4123693b050d22490b27a2940b65fe72b526'
+MODULE_SHA256 = 'b6aa2106749c29dcc25e7df906633e3bdec77d46152ccb27003c7435479c9435'

@@ -254,7 +254,7 @@ def _body(preset=None, **changes):
     ({"I1": 1e-4, "I2": 1e-4, "I3": 1.7e-3}, "triangle inequality"),      # 1e-4 + 1e-4 < 1.7e-3
     ({"I1": -2e-4}, "positive definite"),
     ({"m": -1.0}, "`mass` must be positive"),
-    ({"h": 0.05}, "below the table"),                                       # centre of mass 3 cm under the bottom
+    ({"h": 0.05}, "above the table at rest"),                               # centre of mass 3 cm under the bottom
     ({"g": -9.81}, "`gravity` must be positive"),
 ])
 def test_root5_a_rigid_body_is_physical_or_refused(preset, match):
@@ -295,3 +295,22 @@ def test_root5_a_rigid_body_is_physical_or_refused_n0_named(n0, error):
     m = ke.load("celt")
     with pytest.raises(error, match="`n0`"):
         m.initial_state(n0=n0, omega0=(0.0, 0.0, 1.0))
+
+
+@pytest.mark.parametrize("fidelity", ["full", "reduced"])
+@pytest.mark.parametrize("change, match", [
+    ({"I_xx": 1e-4, "I_yy": 1e-4}, "triangle inequality"),   # 1e-4 + 1e-4 < 1.7e-3 (I_zz)
+    ({"I_xy": 5e-3}, "positive definite"),                   # |I_xy| > sqrt(I_xx I_yy)
+    ({"h": 0.05}, "above the table at rest"),                # c = 0.02: centre of mass 3 cm under the bottom
+])
+def test_root5_a_rigid_body_is_physical_or_refused_at_every_parameter_set(fidelity, change, match):
+    """The built-in celt (docs/rigid-bodies.md: Kane & Levinson's numbers) given an impossible body at run time."""
+    import numpy as np
+    m = ke.load("celt", fidelity=fidelity)
+    good = m.preset("kane_levinson_1982")
+    assert np.array_equal(m.check_params(good), good)
+    bad = dict(zip(m.param_names, good), **change)
+    with pytest.raises(ValueError, match=match):
+        m.params(bad)
+    with pytest.raises(ValueError, match=match):
+        m.check_params(np.array([bad[k] for k in m.param_names]))

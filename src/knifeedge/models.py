@@ -18,7 +18,7 @@ from pathlib import Path
 
 import numpy as np
 
-from . import _validate, modulecheck
+from . import _validate, bodies, modulecheck
 from .generated import MODULES
 
 MODEL_NAMES = tuple(sorted({m for m, _ in MODULES}))
@@ -165,7 +165,15 @@ class Model:
                 raise ValueError(f"parameter `{n}` must be positive, got {values[n]!r}")
             if self._nonnegative[i] and not out[i] >= 0:
                 raise ValueError(f"parameter `{n}` must be nonnegative, got {values[n]!r}")
-        return out
+        return self._physical(out)
+
+    def _physical(self, p: np.ndarray) -> np.ndarray:
+        """``p``, if the module (a rigid body's: ``body_values``) says it describes a body that can exist."""
+        values = getattr(self.module, "body_values", None)
+        problems = bodies.problems(*values(p)) if values is not None else ()
+        if problems:
+            raise ValueError(f"parameters `p` of {self.name} describe no rigid body: {'; '.join(problems)}")
+        return p
 
     def preset(self, name: str, /, **overrides) -> np.ndarray:
         """Validated parameter vector of a named parameter set the module ships; keywords override.
@@ -214,7 +222,7 @@ class Model:
         for positive, nonneg, v in zip(self._positive, self._nonnegative, values):
             if not math.isfinite(v) or (positive and not v > 0) or (nonneg and not v >= 0):
                 return self.params(dict(zip(self.param_names, values)))  # raises, naming the parameter
-        return np.array(values)
+        return self._physical(np.array(values))
 
     def state(self, values: Mapping | None = None, /, **kwargs) -> np.ndarray:
         """Validated float64 state vector in the order of :attr:`state_names`.
