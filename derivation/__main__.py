@@ -14,7 +14,7 @@ import tempfile
 import time
 from pathlib import Path
 
-from .cli import MANIFEST, ROOT, DeriveError, derive_specs, load_specs, manifest_text, project_specs
+from .cli import MANIFEST, ROOT, DeriveError, derive_files, derive_specs, manifest_text, project_specs
 from .emit import write_all
 
 
@@ -32,12 +32,12 @@ def main(argv=None) -> int:
             status = main([*map(str, args.files), "--out", tmp])
             return status or compare(args.out, Path(tmp))
     start = time.perf_counter()
-    if args.files:
-        specs = [s for f in args.files for s in load_specs(f)]
+    log = lambda s: print(s, file=sys.stderr)  # noqa: E731
+    if args.files:  # a user's models: as `knifeedge derive` (never into the package's generated/)
+        written = derive_files(args.files, args.out, log=log)
     else:
-        specs = project_specs()
-    systems = derive_specs(specs, check=bool(args.files), log=lambda s: print(s, file=sys.stderr))
-    for path in write_all(args.out, systems, registry=not args.files):
+        written = write_all(args.out, derive_specs(project_specs(), check=False, log=log))
+    for path in written:
         print(f"wrote {path}", file=sys.stderr)
     if not args.files:  # the package's models: what they were derived from, checked by the tests without deriving
         manifest = args.out / MANIFEST

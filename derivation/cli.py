@@ -20,12 +20,18 @@ import sys
 import traceback
 from pathlib import Path
 
+from knifeedge import modulecheck
+
 from . import emit, engine, models
 from .engine import ModelSpec, ModelSpecError
 
 ROOT = Path(__file__).resolve().parent.parent
 #: model files of the source tree's examples/ derived into generated/ with the package's models (``make derive``)
 EXAMPLE_MODELS = ("examples/rolling_disk.py",)
+
+
+#: a user's model file runs as the module ``<prefix><file stem>`` (a RigidBody's ``source=__name__`` names it)
+USER_MODULE_PREFIX = "knifeedge_user_spec_"
 
 
 class DeriveError(ValueError):
@@ -46,7 +52,7 @@ def load_specs(path: str | Path) -> list:
     path = Path(path)
     if not path.is_file():
         raise DeriveError(f"model file {str(path)!r} does not exist")
-    name = f"knifeedge_user_spec_{path.stem}"
+    name = f"{USER_MODULE_PREFIX}{path.stem}"
     spec = importlib.util.spec_from_file_location(name, path)
     if spec is None:
         raise DeriveError(f"{path} is not a Python file")
@@ -56,6 +62,9 @@ def load_specs(path: str | Path) -> list:
         spec.loader.exec_module(module)
     except ModelSpecError as exc:
         raise DeriveError(str(exc)) from None
+    except SystemExit as exc:  # the file's own exit is not the end of `knifeedge derive`, nor a success
+        raise DeriveError(f"{_user_line(exc, path)}: the model file called sys.exit({exc.code!r}) while it ran: "
+                          f"nothing was derived; a model file defines MODEL and must not exit") from None
     except Exception as exc:  # noqa: BLE001 -- reported with the user's line
         raise DeriveError(f"{_user_line(exc, path)}: running the model file failed: "
                           f"{type(exc).__name__}: {exc}") from None
@@ -157,12 +166,56 @@ def derive_specs(specs, check: bool = True, log=None) -> dict:
     return out
 
 
+def _package_folders() -> set:
+    """The package's own folders (``knifeedge``, its ``generated/`` and ``derive/``, as installed and in the source
+    tree), resolved."""
+    folders = {ROOT / "generated", ROOT / "derivation", ROOT / "src" / "knifeedge"}
+    for name in ("knifeedge", "knifeedge.generated", "knifeedge.derive"):
+        found = importlib.util.find_spec(name)
+        folders |= {Path(f) for f in (found.submodule_search_locations or ())} if found is not None else set()
+    return {f.resolve() for f in folders}
+
+
+def written_by_knifeedge(path: Path) -> bool:
+    """True if the file ``path`` is a module knifeedge wrote and nobody changed since (or one an older knifeedge
+    wrote, before modules carried ``MODULE_SHA256``)."""
+    data = path.read_bytes()
+    if modulecheck.sealed_ok(data):
+        return True
+    head = data[:600]
+    return (head.startswith(b'"""') and b"GENERATED FILE -- DO NOT EDIT BY HAND." in head
+            and b"\nINPUT_HASH = " in data and b"\nMODULE_SHA256 = " not in data)
+
+
+def check_out(out: Path, keys) -> None:
+    """Refuse to write the modules ``keys`` ((name, fidelity) pairs) into the package's own ``generated/`` or over
+    a file knifeedge did not write; nothing is written when one of them is refused."""
+    out, package = Path(out), _package_folders()
+    if any(f == out.resolve() or f in out.resolve().parents for f in package):
+        raise DeriveError(f"--out {out} is inside the package's own folders (its generated/ folder holds the "
+                          f"built-in models, which only `make derive` writes); choose a folder of your own "
+                          f"(e.g. --out my_models)")
+    for key in keys:
+        try:
+            path = emit.module_path(out, *key)
+        except ValueError as exc:
+            raise DeriveError(str(exc)) from None
+        if path.is_symlink() or (path.exists() and not (path.is_file() and written_by_knifeedge(path))):
+            raise DeriveError(f"{path} exists and is not a module knifeedge wrote (or it was edited since): not "
+                              f"overwritten. Move it away or delete it, or choose another --out")
+
+
 def derive_files(files, out: str | Path, check: bool = True, log=None) -> list:
-    """Derive the models of ``files`` into the folder ``out``; returns the paths written."""
+    """Derive the models of ``files`` into the folder ``out``; returns the paths written.
+
+    Refuses (:func:`check_out`) the package's own ``generated/`` and files of ``out`` knifeedge did not write.
+    """
     specs = [s for f in files for s in load_specs(f)]
     names = [s.name for s in specs]
     dup = sorted({n for n in names if names.count(n) > 1})
     if dup:
         raise DeriveError(f"several models are named {dup} across {', '.join(map(str, files))}")
+    check_out(Path(out), [])
     systems = derive_specs(specs, check=check, log=log)
+    check_out(Path(out), systems)
     return emit.write_all(Path(out), systems, registry=False)

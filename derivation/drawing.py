@@ -37,6 +37,7 @@ from __future__ import annotations
 
 import inspect
 from dataclasses import dataclass, field
+from pathlib import Path
 
 import sympy as sp
 
@@ -349,16 +350,34 @@ DRAWINGS: dict = {"single_mode": single_mode(), "two_mode": two_mode(), "chaplyg
                   "celt": celt(), "two_mode_rigid": two_mode_rigid()}
 
 
+#: names given a drawing by :func:`register` (the other entries of DRAWINGS are the package's models')
+_REGISTERED: set = set()
+
+
 def register(name: str, drawing: Drawing) -> None:
     """Declare the drawing of model ``name`` (for models defined outside ``derivation/models.py``)."""
     if not isinstance(drawing, Drawing):
         raise TypeError(f"`drawing` must be a derivation.drawing.Drawing, got {type(drawing).__name__}")
     DRAWINGS[name] = drawing
+    _REGISTERED.add(name)
 
 
-def drawing_of(spec) -> Drawing | None:
-    """The drawing of a model: ``spec.drawing`` if it has one, else :data:`DRAWINGS` by name, else ``None``."""
-    return getattr(spec, "drawing", None) or DRAWINGS.get(spec.name)
+def _from_package(system) -> bool:
+    """True if the model of ``system`` is one of the package's (defined under ``derivation/``)."""
+    body = getattr(system, "body", None)
+    if body is not None:
+        return (body.source or "").startswith(("knifeedge.derive.", "derivation."))
+    where = getattr(system.spec, "defined_at", "").rsplit(":", 1)[0]
+    return bool(where) and Path(where).resolve().parent == Path(__file__).resolve().parent
+
+
+def drawing_of(spec, package: bool = True) -> Drawing | None:
+    """The drawing of a model: ``spec.drawing`` if it has one, else :data:`DRAWINGS` by name (the package's
+    models' only when ``package``: a user's model named like a built-in one is not drawn as it), else ``None``."""
+    own = getattr(spec, "drawing", None)
+    if own is not None or not (package or spec.name in _REGISTERED):
+        return own
+    return DRAWINGS.get(spec.name)
 
 
 def source_text() -> str:
@@ -376,7 +395,7 @@ def module_source(system) -> str:
     spec = system.spec
     if not spec.pose:
         return ""
-    drawing = drawing_of(spec)
+    drawing = drawing_of(spec, package=_from_package(system))
     if drawing is None and getattr(system, "body", None) is not None:  # a rigid body without its own drawing
         drawing = rigid_body(system.body)
     if drawing is None:

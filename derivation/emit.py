@@ -18,6 +18,8 @@ from pathlib import Path
 import sympy as sp
 from sympy.printing.pycode import PythonCodePrinter
 
+from knifeedge.modulecheck import seal
+
 from . import averaging, drawing, engine, models, truncation
 from .averaging import AmplitudeSystem
 from .fidelities import FIDELITIES
@@ -69,10 +71,15 @@ def source_label(spec: engine.ModelSpec) -> str:
         return path.name
 
 
-def regenerate_hint(spec: engine.ModelSpec) -> str:
-    """How to regenerate a module: ``make derive`` for the package's models, ``knifeedge derive`` for a user's."""
-    label = source_label(spec)
-    if label.startswith(("derivation/", "examples/")):
+def regenerate_hint(spec) -> str:
+    """How to regenerate a module: ``make derive`` for the package's models, ``knifeedge derive`` for a user's.
+
+    ``spec``: a :class:`ModelSpec`, or the :func:`source_label` of the file that defines the model.
+    """
+    from .cli import EXAMPLE_MODELS
+
+    label = spec if isinstance(spec, str) else source_label(spec)
+    if label.startswith("derivation/") or label in EXAMPLE_MODELS:
         return "Run ``make derive`` to regenerate."
     return f"Run ``knifeedge derive {label} --out DIR`` to regenerate."
 
@@ -649,19 +656,31 @@ MODULES = {{
 '''
 
 
+def module_path(out_dir: Path, name: str, fidelity: str) -> Path:
+    """``out_dir/<name>_<fidelity>.py``; ``ValueError`` if the name or fidelity would leave ``out_dir``."""
+    file = f"{name}_{fidelity}.py"
+    if any(c in file for c in "/\\\0:") or file.startswith("."):
+        raise ValueError(f"model {name!r} at fidelity {fidelity!r}: a model's name and fidelity must be plain names "
+                         f"(no path separators, no leading dot); they name the file {file!r}")
+    return out_dir / file
+
+
 def write_all(out_dir: Path, systems: dict | None = None, registry: bool = True) -> list[Path]:
-    """Write every module (and, with ``registry``, the package registry ``__init__.py``) into ``out_dir``."""
+    """Write every module (and, with ``registry``, the package registry ``__init__.py``) into ``out_dir``.
+
+    Every module is sealed (:func:`knifeedge.modulecheck.seal`: its last line is the SHA-256 of its content,
+    which ``knifeedge.load`` verifies before running it).
+    """
     systems = systems if systems is not None else build_all()
+    paths = {key: module_path(out_dir, *key) for key in sorted(systems)}
     out_dir.mkdir(parents=True, exist_ok=True)
-    paths = []
-    for (name, fidelity), system in sorted(systems.items()):
-        path = out_dir / f"{name}_{fidelity}.py"
+    for (name, fidelity), path in paths.items():
         amp = systems.get((name, "amplitude"))
         freq = amp.frequencies if amp is not None and fidelity != "amplitude" else None
-        path.write_text(module_source(system, fidelity, frequencies=freq))
-        paths.append(path)
+        path.write_text(seal(module_source(systems[(name, fidelity)], fidelity, frequencies=freq)), encoding="utf-8")
+    paths = list(paths.values())
     if registry:
         reg = out_dir / "__init__.py"
-        reg.write_text(registry_source(systems))
+        reg.write_text(seal(registry_source(systems)), encoding="utf-8")
         paths.append(reg)
     return paths

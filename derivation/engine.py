@@ -160,12 +160,21 @@ class ModelSpec:
     def __post_init__(self):
         set_ = lambda k, v: object.__setattr__(self, k, v)  # noqa: E731 (frozen dataclass)
         set_("defined_at", _caller_location())
+        kinds = []
         for k in ("coordinates", "velocities", "constraints", "dependent", "params", "accelerations",
                   "constraint_labels", "small", "pose", "reversal_events", "forces", "quasi_velocities",
                   "state_order", "exports"):
             v = getattr(self, k)
             if isinstance(v, (list, sp.Matrix)):
                 set_(k, tuple(v))
+            elif not isinstance(v, tuple):
+                one = f"; for one entry write `{k}=({v},)`" if isinstance(v, sp.Basic) else ""
+                kinds.append(f"`{k}` must be a tuple or a list, got {type(v).__name__} {v!r}{one}")
+        kinds += [f"`{k}` must be a dict, got {type(getattr(self, k)).__name__} {getattr(self, k)!r}"
+                  for k in ("cyclic", "units", "param_domains", "defaults", "events", "validity")
+                  if not isinstance(getattr(self, k), dict)]
+        if kinds:
+            raise ModelSpecError(self.error_message(kinds))
         if not self.accelerations and all(isinstance(q, sp.Symbol) for q in self.coordinates):
             set_("accelerations", tuple(sp.Symbol(f"{q}_ddot", real=True) for q in self.coordinates))
         if not self.constraint_labels:
@@ -301,6 +310,10 @@ def _contract_problems(spec: ModelSpec) -> list:
     elif len(spec.dependent) != len(spec.constraints):
         problems.append(f"`dependent` must name one coordinate per constraint ({len(spec.constraints)}), "
                         f"got {len(spec.dependent)}")
+    elif not spec.independent:
+        problems.append(f"every velocity is constrained ({len(spec.constraints)} constraints on {n} coordinates, "
+                        f"all `dependent`): nothing is left to move; a model needs at least one independent "
+                        f"coordinate (fewer constraints than coordinates)")
     if not isinstance(spec.cyclic, dict):
         problems.append("`cyclic` must be a mapping {coordinate: representative value}")
     else:

@@ -54,9 +54,12 @@ symbolically, so the derivation takes seconds.
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import sympy as sp
+
+from knifeedge import bodies
 
 from .engine import ModelSpec, ReducedSystem
 
@@ -124,7 +127,7 @@ class Sphere:
 class Circle:
     """Circle (edge of a disk) of radius ``radius`` centred at ``centre`` in the plane normal to ``axis``.
 
-    ``axis`` is a unit vector (body axes).  Lowest point:
+    ``axis`` is the disk's normal (body axes), normalized when it is built (a zero axis is refused).  Lowest point:
     ``centre - radius (n - (n.k) k) / |n - (n.k) k|``; undefined when the
     disk lies flat (``n`` parallel to ``k``).
     """
@@ -132,6 +135,14 @@ class Circle:
     radius: sp.Expr
     axis: tuple = (0, 0, 1)
     centre: tuple = (0, 0, 0)
+
+    def __post_init__(self):
+        k = _vec(self.axis)
+        norm2 = sp.simplify(k.dot(k))
+        if norm2.is_zero or (norm2.is_number and not float(norm2) > 0):
+            raise ValueError(f"`axis` of a Circle must be a non-zero vector (the normal of the disk), got {self.axis}")
+        if sp.simplify(norm2 - 1) != 0:  # a direction: normalized, so that the lowest point is on the circle
+            object.__setattr__(self, "axis", tuple(sp.simplify(c / sp.sqrt(norm2)) for c in k))
 
     def lowest_point(self, n: sp.Matrix) -> sp.Matrix:
         k = _vec(self.axis)
@@ -167,6 +178,15 @@ class RigidBody:
     defaults : default parameter values (the CLI's) -- by default the first preset -- and
         ``default_state``: ``{"n0": ..., "omega0": ...}`` for ``initial_state``.
     source : name of the module that defines the body (its text enters the input hash).
+    hangs : the centre of mass may lie below the contact (a body balanced on an edge over a narrow support,
+        as the paper's knife edge); otherwise it must be above the table.
+
+    :meth:`check` (run by :func:`derive`) refuses a body that cannot exist: a mass or gravity that is not
+    positive, a negative ``sigma``, an inertia with a negative principal moment or whose principal moments
+    break the triangle inequality ``I1 + I2 >= I3`` (a zero moment only for mass on a line), a centre of
+    mass at or below the table at the rest orientation (``default_state["n0"]``, else upright), a parameter
+    without a unit, an ``n0`` that is not three real numbers.  Numbers are checked at every preset and at
+    ``defaults``, and symbolically where SymPy can decide the sign.
     """
 
     name: str
@@ -186,6 +206,7 @@ class RigidBody:
     source: str = ""
     defaults: dict = field(default_factory=dict)
     default_state: dict = field(default_factory=dict)
+    hangs: bool = False
 
     def check(self) -> None:
         """Collect every problem of the description and raise one ``ValueError``."""
@@ -214,8 +235,72 @@ class RigidBody:
             extra = [p for p in values if p not in names]
             if missing or extra:
                 problems.append(f"preset {preset!r}: missing {missing}, unknown {extra}")
+        no_unit = [p for p in names if p not in {str(k) for k in self.param_units}]
+        if no_unit:
+            problems.append(f"parameters without a unit in `param_units`: {no_unit} (e.g. {{{no_unit[0]!r}: 'm'}}; "
+                            f"'1' for a dimensionless one)")
+        if not problems:
+            problems += _physical_problems(self, inertia)
         if problems:
             raise ValueError(f"{self.name}: " + "; ".join(problems))
+
+
+def _rest_vertical(body: RigidBody, problems: list):
+    """``default_state["n0"]`` as a unit 3-vector of floats (upright if absent); ``None`` after a problem."""
+    n0 = body.default_state.get("n0", (0.0, 0.0, 1.0))
+    try:
+        ok = not isinstance(n0, (str, bytes)) and len(n0) == 3 and all(
+            isinstance(sp.sympify(c), sp.Expr) and sp.sympify(c).is_extended_real and sp.sympify(c).is_finite
+            for c in n0)
+    except (TypeError, sp.SympifyError):
+        ok = False
+    norm = math.sqrt(sum(float(c) ** 2 for c in n0)) if ok else 0.0
+    if not norm > 0:
+        problems.append(f"`default_state['n0']` must be three finite real numbers, not all zero (the upward "
+                        f"vertical in body axes), got {n0!r}")
+        return None
+    return sp.Matrix([float(c) / norm for c in n0])
+
+
+def _physical_problems(body: RigidBody, inertia: sp.Matrix) -> list:
+    """What makes ``body`` impossible (:func:`knifeedge.bodies.problems`), at each numeric parameter set, and
+    symbolically where SymPy can tell the sign."""
+    problems: list = []
+    n0 = _rest_vertical(body, problems)
+    height = None if n0 is None or body.hangs else sp.sympify(-body.shape.lowest_point(n0).dot(n0))
+    scalars = [sp.sympify(body.mass), sp.sympify(body.gravity), sp.sympify(body.sigma or 0)]
+    sets = [(f"preset {k!r}", v) for k, v in sorted(body.presets.items())]
+    sets += [("`defaults`", body.defaults)] if body.defaults else []
+    free = set().union(inertia.free_symbols, *(e.free_symbols for e in scalars))
+    if not sets and not free | (height.free_symbols if height is not None else set()):
+        sets = [("its numbers", {})]
+    for label, values in sets:
+        try:
+            at = {q: float(values[str(q)]) for q in body.params if str(q) in values}
+        except (TypeError, ValueError):
+            problems.append(f"the values of {label} must be real numbers, got {values!r}")
+            continue
+        numbers = [e.subs(at) for e in scalars] + [inertia.subs(at)] + ([height.subs(at)] if height is not None else [])
+        if any(e.free_symbols for e in numbers):
+            continue
+        found = bodies.problems(*(float(e) for e in numbers[:3]), numbers[3].tolist(),
+                                float(numbers[4]) if height is not None else None)
+        hint = " (the shape must enclose it, or set `hangs=True` for a body balanced on an edge over a support)"
+        problems += [f"{p} at {label}" + (hint if "centre of mass" in p else "") for p in found]
+    if scalars[0].is_nonpositive:
+        problems.append(f"`mass` must be positive, got {scalars[0]}")
+    if height is not None and height.is_nonpositive:
+        problems.append(f"the centre of mass must be above the table at rest (height {height})")
+    return problems
+
+
+def body_values(body: RigidBody) -> tuple:
+    """``(mass, gravity, sigma, inertia, height)`` as expressions of the parameters (``height``: of the centre of
+    mass at the rest orientation; ``None`` for a body that hangs): what :func:`knifeedge.bodies.problems` checks,
+    written into every rigid module as ``body_values(p)``."""
+    n0 = _rest_vertical(body, [])
+    height = None if body.hangs or n0 is None else -body.shape.lowest_point(n0).dot(n0)
+    return body.mass, body.gravity, body.sigma or sp.S.Zero, sp.Matrix(body.inertia), height
 
 
 @dataclass

@@ -38,9 +38,29 @@ def input_hash(system: rigid.RollingSystem, fidelity: str) -> str:
     return h.hexdigest()
 
 
+def source_label(body: rigid.RigidBody) -> str:
+    """The file that defines ``body``, as the header names it: ``derivation/celt.py`` or the user's file name."""
+    from .cli import USER_MODULE_PREFIX
+
+    source = body.source or ""
+    if source.startswith(("knifeedge.derive.", "derivation.")):
+        return f"derivation/{source.rsplit('.', 1)[1]}.py"
+    if source.startswith(USER_MODULE_PREFIX):
+        return source[len(USER_MODULE_PREFIX):] + ".py"
+    return "MODEL_FILE.py"
+
+
 #: lines of a generated ``initial_state`` that check ``n0`` and ``omega0`` and normalize ``n0`` (every rigid
 #: module's, whatever its state)
-VERTICAL_CHECK = '''    n0 = np.array(n0, dtype=float)
+VERTICAL_CHECK = '''    for name, value in (("n0", n0), ("omega0", omega0)):
+        try:  # no strings, complex numbers (their imaginary part would be lost), bools or other objects
+            items = [] if isinstance(value, (str, bytes)) else np.asarray(value, dtype=object).ravel().tolist()
+        except (TypeError, ValueError):  # ragged
+            items = []
+        if not items or not all(isinstance(x, (int, float, np.integer, np.floating))
+                                and not isinstance(x, (bool, np.bool_)) for x in items):
+            raise TypeError(f"`{name}` must be 3 real numbers, got {value!r}")
+    n0 = np.array(n0, dtype=float)
     omega0 = np.array(omega0, dtype=float)
     if n0.shape != (3,) or not np.isfinite(n0).all():
         raise ValueError(f"`n0` must be 3 finite numbers (the upward vertical in body axes), got {n0!r}")
@@ -79,6 +99,28 @@ def initial_state(n0=(0.0, 0.0, 1.0), omega0=(0.0, 0.0, 0.0), pose=None):
     if pose.shape != (3,) or not np.isfinite(pose).all():
         raise ValueError(f"`pose` must be 3 finite numbers (psi, x, y), got {{pose!r}}")
     return np.concatenate([s, pose])
+'''
+
+
+def body_values_source(body: rigid.RigidBody, params) -> str:
+    """``body_values(p)``: the numbers :func:`knifeedge.bodies.problems` checks, at a parameter vector ``p`` of the
+    parameters ``params`` (those of the body a fidelity leaves out are zero); plain Python, in every rigid module:
+    the runtime checks every parameter set with it."""
+    mass, gravity, sigma, inertia, height = rigid.body_values(body)
+    dropped = {q: 0 for q in body.params if q not in params}
+    exprs = [sp.sympify(e).subs(dropped) for e in (mass, gravity, sigma, *inertia, height if height is not None else 0)]
+    lines, _ = _cse_block(exprs, [f"out[{i}]" for i in range(len(exprs))], set(params))
+    nl = "\n"
+    return f'''
+
+def body_values(p):
+    """``(mass, gravity, sigma, inertia, height)`` of the body at the parameters ``p``: what
+    ``knifeedge.bodies.problems`` checks (``height``: of the centre of mass above the table at rest; ``None`` for
+    a body that hangs below the edge it balances on)."""
+    out = [0.0] * {len(exprs)}
+{nl.join(_unpack([str(q) for q in params], "p"))}
+{nl.join(lines)}
+    return (out[0], out[1], out[2], (out[3:6], out[6:9], out[9:12]), {"out[12]" if height is not None else "None"})
 '''
 
 
@@ -139,7 +181,7 @@ def power_dissipated(s, p):
         ops["power_dissipated"] = power_ops
     return f'''"""{spec.name}, fidelity {fidelity}: rigid body rolling without slipping, nothing dropped.
 
-GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
+GENERATED FILE -- DO NOT EDIT BY HAND.  {emit.regenerate_hint(source_label(body))}
 Produced by derivation/rigid_emit.py (make derive) from the rigid body {spec.name!r}
 through derivation/rigid.py (Lagrange-d'Alembert in body quasi-velocities).
 SymPy {sp.__version__}; input hash sha256:{digest}
@@ -237,4 +279,5 @@ def multipliers(s, p):
 {nl.join(unpack_p)}
 {nl.join(lam_lines)}
     return out
-{_INITIAL_STATE.format(n=n, n_pose=n + npose, VERTICAL=VERTICAL_CHECK)}''' + drawing.module_source(system)
+{_INITIAL_STATE.format(n=n, n_pose=n + npose, VERTICAL=VERTICAL_CHECK)}''' + body_values_source(body, spec.params) \
+        + drawing.module_source(system)

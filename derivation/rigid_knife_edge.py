@@ -55,6 +55,7 @@ def knife_edge_body() -> RigidBody:
         source=__name__,
         defaults={"g": 1.0, "ell": 1.0, "L": 2.0, "D": 0.5, "alpha": 0.7853981633974483},
         default_state={"n0": (-0.01, 0.01, 1.0), "omega0": (-0.001, 0.001, 0.1)},
+        hangs=True,  # the masses hang a distance ell below the edge it balances on
     )
 
 

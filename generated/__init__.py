@@ -20,3 +20,5 @@ MODULES = {
     ('two_mode', 'reduced'): 'two_mode_reduced',
     ('two_mode_rigid', 'full'): 'two_mode_rigid_full',
 }
+#: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
+MODULE_SHA256 = '7fc18b0f4714471765b220e8fba854143fd64e83ba7c0b76a026fee060da44ec'

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/rigid_emit.py (make derive) from the rigid body 'celt'
 through derivation/rigid.py (Lagrange-d'Alembert in body quasi-velocities).
-SymPy 1.14.0; input hash sha256:e81e7df36780a737851bea54b1cd0cb5ab96dc32c97cb1f0bdd54b269c44d448
+SymPy 1.14.0; input hash sha256:57dab0c721aaf8db08335697d2538697380124d5dedcd508dec6a7a032e3f005
 
 Classical rattleback (celt): a rigid body with an ellipsoidal bottom (semi-axes a, b, c along the body axes x, y, z; centre of mass a distance h below the ellipsoid's centre), inertia tensor about the centre of mass with entries I_xx..I_yz in body axes, rolling without slipping on a horizontal table under gravity g, dissipation torque -sigma*omega.  State: upward vertical n and angular velocity omega in body axes, vertical spin omega_n = omega.n; pose: heading psi of the body x axis, centre of mass (x, y).
 
@@ -81,7 +81,7 @@ PRESETS = {'kane_levinson_1982': {'a': 0.2, 'b': 0.03, 'c': 0.02, 'h': 0.01, 'm'
 PRESET_SOURCES = {'kane_levinson_1982': 'Kane & Levinson, Int. J. Non-Linear Mech. 17 (1982) 175-186', 'schoemer': "E. Schoemer's rattleback (golden-ratio ellipsoid)"}
 #: the model file the body comes from
 SOURCE = 'knifeedge.derive.celt'
-INPUT_HASH = 'e81e7df36780a737851bea54b1cd0cb5ab96dc32c97cb1f0bdd54b269c44d448'
+INPUT_HASH = '57dab0c721aaf8db08335697d2538697380124d5dedcd508dec6a7a032e3f005'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 247, 'constants': 23, 'rhs_q': 250, 'rhs_pose': 285, 'rhs_pose_q': 286, 'pose_rates': 71, 'energy': 72, 'multipliers': 265, 'power_dissipated': 6}
@@ -875,6 +875,14 @@ def initial_state(n0=(0.0, 0.0, 1.0), omega0=(0.0, 0.0, 0.0), pose=None):
     ndarray of shape (7,) (or (10,) with ``pose``) in the order of
     ``STATE_NAMES`` (+ ``POSE_NAMES``); ``omega_n = omega0 . n0``.
     """
+    for name, value in (("n0", n0), ("omega0", omega0)):
+        try:  # no strings, complex numbers (their imaginary part would be lost), bools or other objects
+            items = [] if isinstance(value, (str, bytes)) else np.asarray(value, dtype=object).ravel().tolist()
+        except (TypeError, ValueError):  # ragged
+            items = []
+        if not items or not all(isinstance(x, (int, float, np.integer, np.floating))
+                                and not isinstance(x, (bool, np.bool_)) for x in items):
+            raise TypeError(f"`{name}` must be 3 real numbers, got {value!r}")
     n0 = np.array(n0, dtype=float)
     omega0 = np.array(omega0, dtype=float)
     if n0.shape != (3,) or not np.isfinite(n0).all():
@@ -892,6 +900,44 @@ def initial_state(n0=(0.0, 0.0, 1.0), omega0=(0.0, 0.0, 0.0), pose=None):
     if pose.shape != (3,) or not np.isfinite(pose).all():
         raise ValueError(f"`pose` must be 3 finite numbers (psi, x, y), got {pose!r}")
     return np.concatenate([s, pose])
+
+
+def body_values(p):
+    """``(mass, gravity, sigma, inertia, height)`` of the body at the parameters ``p``: what
+    ``knifeedge.bodies.problems`` checks (``height``: of the centre of mass above the table at rest; ``None`` for
+    a body that hangs below the edge it balances on)."""
+    out = [0.0] * 13
+    a = p[0]
+    b = p[1]
+    c = p[2]
+    h = p[3]
+    m = p[4]
+    g = p[5]
+    I_xx = p[6]
+    I_yy = p[7]
+    I_zz = p[8]
+    I_xy = p[9]
+    I_xz = p[10]
+    I_yz = p[11]
+    sigma = p[12]
+    _c0 = 7.61465737367355e-5*(a*a)
+    _c1 = 7.61518095472372e-5*(b*b)
+    _c2 = 0.999847701616716*(c*c)
+    _c3 = 1/math.sqrt(_c0 + _c1 + _c2)
+    out[0] = m
+    out[1] = g
+    out[2] = sigma
+    out[3] = I_xx
+    out[4] = I_xy
+    out[5] = I_xz
+    out[6] = I_xy
+    out[7] = I_yy
+    out[8] = I_yz
+    out[9] = I_xz
+    out[10] = I_yz
+    out[11] = I_zz
+    out[12] = _c0*_c3 + _c1*_c3 + _c2*_c3 - 0.999923847908788*h
+    return (out[0], out[1], out[2], (out[3:6], out[6:9], out[9:12]), out[12])
 
 
 
@@ -1109,3 +1155,5 @@ def body_outlines(s, p, uu):
         out[2, j, 1] = _c30*_c45 + _c43
         out[2, j, 2] = _c33*_c45 + _c44
     return out
+#: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
+MODULE_SHA256 = '8704c8ebed1901a174c3b84eb733c6220992b3785dd9c47922a3798d6fc09446'

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/rigid_small_emit.py (make derive) from the rigid body 'celt'
 through derivation/rigid.py and derivation/rigid_small.py.
-SymPy 1.14.0; input hash sha256:5f41c80439d9765dc28f70f8b31762c1bd5fb3593fc47425083813cee0f7b751
+SymPy 1.14.0; input hash sha256:530a55e867dc08d292aa2302871b086d52aa844710c1c343316582cee769272a
 
 Classical rattleback (celt): a rigid body with an ellipsoidal bottom (semi-axes a, b, c along the body axes x, y, z; centre of mass a distance h below the ellipsoid's centre), inertia tensor about the centre of mass with entries I_xx..I_yz in body axes, rolling without slipping on a horizontal table under gravity g, dissipation torque -sigma*omega.  State: upward vertical n and angular velocity omega in body axes, vertical spin omega_n = omega.n; pose: heading psi of the body x axis, centre of mass (x, y).
 
@@ -65,7 +65,7 @@ EXPORTS = ('PRESETS', 'PRESET_SOURCES', 'initial_state')
 PRESETS = {'kane_levinson_1982': {'a': 0.2, 'b': 0.03, 'c': 0.02, 'h': 0.01, 'm': 1.0, 'g': 9.81, 'I_xx': 0.0002, 'I_yy': 0.0016, 'I_zz': 0.0017, 'I_xy': 2e-05, 'sigma': 0.0}, 'schoemer': {'a': 1.618033988749895, 'b': 1.0, 'c': 1.0, 'h': 0.1875, 'm': 0.2, 'g': 9.81, 'I_xx': 0.05796875, 'I_yy': 0.09032943, 'I_zz': 0.12236068, 'I_xy': -0.025, 'sigma': 0.0}}
 PRESET_SOURCES = {'kane_levinson_1982': 'Kane & Levinson, Int. J. Non-Linear Mech. 17 (1982) 175-186', 'schoemer': "E. Schoemer's rattleback (golden-ratio ellipsoid)"}
 SOURCE = 'knifeedge.derive.celt'
-INPUT_HASH = '5f41c80439d9765dc28f70f8b31762c1bd5fb3593fc47425083813cee0f7b751'
+INPUT_HASH = '530a55e867dc08d292aa2302871b086d52aa844710c1c343316582cee769272a'
 SYMPY_VERSION = '1.14.0'
 OP_COUNTS = {'rhs': 606, 'constants': 511, 'rhs_q': 108, 'energy': 85, 'power_dissipated': 6}
 
@@ -556,6 +556,14 @@ def initial_state(n0=(0.0, 0.0, 1.0), omega0=(0.0, 0.0, 0.0)):
     ``n0``: upward vertical in body axes (normalized here; ``n_z`` is not a state of this fidelity);
     ``omega0``: angular velocity in body axes [rad/s].
     """
+    for name, value in (("n0", n0), ("omega0", omega0)):
+        try:  # no strings, complex numbers (their imaginary part would be lost), bools or other objects
+            items = [] if isinstance(value, (str, bytes)) else np.asarray(value, dtype=object).ravel().tolist()
+        except (TypeError, ValueError):  # ragged
+            items = []
+        if not items or not all(isinstance(x, (int, float, np.integer, np.floating))
+                                and not isinstance(x, (bool, np.bool_)) for x in items):
+            raise TypeError(f"`{name}` must be 3 real numbers, got {value!r}")
     n0 = np.array(n0, dtype=float)
     omega0 = np.array(omega0, dtype=float)
     if n0.shape != (3,) or not np.isfinite(n0).all():
@@ -567,3 +575,41 @@ def initial_state(n0=(0.0, 0.0, 1.0), omega0=(0.0, 0.0, 0.0)):
         raise ValueError("`n0` must not be the zero vector")
     n0 = n0 / norm
     return np.array([n0[0], n0[1], omega0[0], omega0[1], omega0[2]])
+
+
+def body_values(p):
+    """``(mass, gravity, sigma, inertia, height)`` of the body at the parameters ``p``: what
+    ``knifeedge.bodies.problems`` checks (``height``: of the centre of mass above the table at rest; ``None`` for
+    a body that hangs below the edge it balances on)."""
+    out = [0.0] * 13
+    a = p[0]
+    b = p[1]
+    c = p[2]
+    h = p[3]
+    m = p[4]
+    g = p[5]
+    I_xx = p[6]
+    I_yy = p[7]
+    I_zz = p[8]
+    I_xy = p[9]
+    sigma = p[10]
+    _c0 = 7.61465737367355e-5*(a*a)
+    _c1 = 7.61518095472372e-5*(b*b)
+    _c2 = 0.999847701616716*(c*c)
+    _c3 = 1/math.sqrt(_c0 + _c1 + _c2)
+    out[0] = m
+    out[1] = g
+    out[2] = sigma
+    out[3] = I_xx
+    out[4] = I_xy
+    out[5] = 0
+    out[6] = I_xy
+    out[7] = I_yy
+    out[8] = 0
+    out[9] = 0
+    out[10] = 0
+    out[11] = I_zz
+    out[12] = _c0*_c3 + _c1*_c3 + _c2*_c3 - 0.999923847908788*h
+    return (out[0], out[1], out[2], (out[3:6], out[6:9], out[9:12]), out[12])
+#: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
+MODULE_SHA256 = 'c53b2f49add7a65c7796acafab7bb334b2a8af1e0976072b9cc96120864414db'

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/rigid_emit.py (make derive) from the rigid body 'two_mode_rigid'
 through derivation/rigid.py (Lagrange-d'Alembert in body quasi-velocities).
-SymPy 1.14.0; input hash sha256:a5e05347b5a644d0e738358dadd1a94191a8f9dc6e2cfae6918ed60fa3873d1f
+SymPy 1.14.0; input hash sha256:945011d3c1d2d259abd630d1190f35e96c0198ec7fdd2610f3ebc54f298ca366
 
 Chiral knife edge of the paper's section III as the real rigid body: massless inverted-U bar of half-length L, masses M/2 a distance ell below its ends, contact at the lowest point of a circle of radius D in a vertical plane at the chiral angle alpha to the bar; per unit mass, exact in the tilts.
 
@@ -72,7 +72,7 @@ PRESETS = {}
 PRESET_SOURCES = {}
 #: the model file the body comes from
 SOURCE = 'knifeedge.derive.rigid_knife_edge'
-INPUT_HASH = 'a5e05347b5a644d0e738358dadd1a94191a8f9dc6e2cfae6918ed60fa3873d1f'
+INPUT_HASH = '945011d3c1d2d259abd630d1190f35e96c0198ec7fdd2610f3ebc54f298ca366'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 253, 'constants': 25, 'rhs_q': 221, 'rhs_pose': 293, 'rhs_pose_q': 261, 'pose_rates': 73, 'energy': 56, 'multipliers': 267}
@@ -781,6 +781,14 @@ def initial_state(n0=(0.0, 0.0, 1.0), omega0=(0.0, 0.0, 0.0), pose=None):
     ndarray of shape (7,) (or (10,) with ``pose``) in the order of
     ``STATE_NAMES`` (+ ``POSE_NAMES``); ``omega_n = omega0 . n0``.
     """
+    for name, value in (("n0", n0), ("omega0", omega0)):
+        try:  # no strings, complex numbers (their imaginary part would be lost), bools or other objects
+            items = [] if isinstance(value, (str, bytes)) else np.asarray(value, dtype=object).ravel().tolist()
+        except (TypeError, ValueError):  # ragged
+            items = []
+        if not items or not all(isinstance(x, (int, float, np.integer, np.floating))
+                                and not isinstance(x, (bool, np.bool_)) for x in items):
+            raise TypeError(f"`{name}` must be 3 real numbers, got {value!r}")
     n0 = np.array(n0, dtype=float)
     omega0 = np.array(omega0, dtype=float)
     if n0.shape != (3,) or not np.isfinite(n0).all():
@@ -798,6 +806,33 @@ def initial_state(n0=(0.0, 0.0, 1.0), omega0=(0.0, 0.0, 0.0), pose=None):
     if pose.shape != (3,) or not np.isfinite(pose).all():
         raise ValueError(f"`pose` must be 3 finite numbers (psi, x, y), got {pose!r}")
     return np.concatenate([s, pose])
+
+
+def body_values(p):
+    """``(mass, gravity, sigma, inertia, height)`` of the body at the parameters ``p``: what
+    ``knifeedge.bodies.problems`` checks (``height``: of the centre of mass above the table at rest; ``None`` for
+    a body that hangs below the edge it balances on)."""
+    out = [0.0] * 13
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+    _c0 = (L*L)
+    out[0] = 1
+    out[1] = g
+    out[2] = 0
+    out[3] = 0
+    out[4] = 0
+    out[5] = 0
+    out[6] = 0
+    out[7] = _c0
+    out[8] = 0
+    out[9] = 0
+    out[10] = 0
+    out[11] = _c0
+    out[12] = 0
+    return (out[0], out[1], out[2], (out[3:6], out[6:9], out[9:12]), None)
 
 
 
@@ -951,3 +986,5 @@ def body_outlines(s, p, uu):
         out[0, j, 1] = _c14*_c9 + _c21*(_c0*_c19 - _c11*_c26) + _c23*(_c0*_c25 - _c18*_c26) + y
         out[0, j, 2] = _c16*_c23 - _c16*(-_c16*_c31 + _c22) + _c21*_c24 + _c24*_c30*_c31 + _c27*_c29*_c31 + _c27*_c8
     return out
+#: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
+MODULE_SHA256 = 'b6aa2106749c29dcc25e7df906633e3bdec77d46152ccb27003c7435479c9435'

@@ -196,7 +196,8 @@ def test_front_end_sphere_closed_form():
     """
     m_, R, g_ = sp.symbols("m R g", positive=True)
     body = rigid.RigidBody(name="ball", mass=m_, inertia=sp.Rational(2, 5) * m_ * R**2 * sp.eye(3),
-                           shape=rigid.Sphere(R), gravity=g_, params=(m_, R, g_))
+                           shape=rigid.Sphere(R), gravity=g_, params=(m_, R, g_),
+                           param_units={"m": "kg", "R": "m", "g": "m/s^2"})
     system = rigid.derive(body)
     pt = {**dict(zip(rigid.N_VEC, (0.36, 0.48, 0.8))), **dict(zip(rigid.OMEGA, (1.0, -2.0, 0.5))),
           m_: 2.0, R: 0.3, g_: 9.81}

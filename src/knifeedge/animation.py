@@ -202,7 +202,6 @@ def motion(source, frames: int = 240) -> Motion:
     with the pose; a :class:`~knifeedge.SimulationResult` with the pose is
     interpolated (cubic spline through its samples).
     """
-    from .models import load
     from .simulate import simulate
 
     spec, label = _run_spec_of(source)
@@ -210,13 +209,13 @@ def motion(source, frames: int = 240) -> Motion:
         return _motion_of_result(source, frames)
     fidelity = spec.fidelity
     note = []
-    if not _has_pose(spec.model, fidelity):
-        fidelity = "reduced" if _has_pose(spec.model, "reduced") else "full"
+    if not _has_pose(spec.model, fidelity, spec.path):
+        fidelity = "reduced" if _has_pose(spec.model, "reduced", spec.path) else "full"
         note.append(f"fidelity {spec.fidelity} has no pose: drawn at {fidelity}")
-    if not _has_drawing(spec.model, fidelity):
+    if not _has_drawing(spec.model, fidelity, spec.path):
         raise ValueError(f"model {spec.model} has no drawing (DRAWING in its generated module); "
                          "see derivation/drawing.py")
-    m = load(spec.model, fidelity=fidelity, pose=True)
+    m = _load(spec.model, fidelity, True, spec.path)
     y0 = dict(spec.y0)
     kw = dict(method=spec.method, rtol=spec.rtol, atol=spec.atol)
     if not spec.pose:
@@ -256,17 +255,17 @@ def _closed_state_tolerances(m, rtol: float, atol: float) -> dict:
 def _motion_of_result(result, frames: int) -> Motion:
     from scipy.interpolate import CubicSpline
 
-    from .models import load
     from .simulate import simulate
 
     m = result.model
+    path = m.source_path.parent if m.source_path is not None else None  # a user's model: the same module
     if result.t.size < 2:
         raise ValueError("`source` holds fewer than two samples: nothing to animate")
     if not m.pose:
-        if not _has_pose(m.name, m.fidelity):
+        if not _has_pose(m.name, m.fidelity, path):
             raise ValueError(f"{m.name} at fidelity {m.fidelity!r} has no pose to draw; simulate a fidelity with "
                              "one (reduced or full)")
-        mp = load(m.name, fidelity=m.fidelity, pose=True)
+        mp = _load(m.name, m.fidelity, True, path)
         y0 = np.concatenate([result.y[:, 0], np.zeros(len(mp.pose_names))])
         t_span = (float(result.t[0]), float(result.t[-1]))
         first = simulate(mp, y0, t_span, result.p)
@@ -277,7 +276,7 @@ def _motion_of_result(result, frames: int) -> Motion:
         return Motion(mp, r.p, r.t, r.y, first.reversal_times, t_span, first.t, first.y,
                       f"{m.name} ({m.fidelity} + pose), DOP853 at the default tolerances, a re-run of the "
                       "result's initial state with the pose from (phi, x, y) = 0")
-    if not _has_drawing(m.name, m.fidelity):
+    if not _has_drawing(m.name, m.fidelity, path):
         raise ValueError(f"model {m.name} has no drawing (DRAWING in its generated module)")
     times = frame_times(result.t, result.y, m, result.reversal_times, frames)
     y = CubicSpline(result.t, result.y, axis=1)(times)
@@ -296,20 +295,23 @@ def gauge_name(model) -> str:
     return name
 
 
-def _has_pose(name: str, fidelity: str) -> bool:
-    from .generated import MODULES
+def _load(name: str, fidelity: str, pose: bool = False, path=None):
+    """The model ``name`` at ``fidelity``: built in, or from the folder ``path`` (a user's model)."""
+    from .models import load
 
-    if (name, fidelity) not in MODULES:
+    return load(name, fidelity=fidelity, pose=pose) if path is None else load(name, fidelity, pose, path=path)
+
+
+def _has_pose(name: str, fidelity: str, path=None) -> bool:
+    from .models import available
+
+    if (name, fidelity) not in available(path):
         return False
-    from .models import load
-
-    return bool(load(name, fidelity=fidelity).pose_names)
+    return bool(_load(name, fidelity, path=path).pose_names)
 
 
-def _has_drawing(name: str, fidelity: str) -> bool:
-    from .models import load
-
-    return getattr(load(name, fidelity=fidelity).module, "DRAWING", None) is not None
+def _has_drawing(name: str, fidelity: str, path=None) -> bool:
+    return getattr(_load(name, fidelity, path=path).module, "DRAWING", None) is not None
 
 
 def oscillation_period(t: np.ndarray, y: np.ndarray, model, window=None) -> float | None:

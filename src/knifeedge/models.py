@@ -18,7 +18,7 @@ from pathlib import Path
 
 import numpy as np
 
-from . import _validate
+from . import _validate, bodies, modulecheck
 from .generated import MODULES
 
 MODEL_NAMES = tuple(sorted({m for m, _ in MODULES}))
@@ -165,7 +165,15 @@ class Model:
                 raise ValueError(f"parameter `{n}` must be positive, got {values[n]!r}")
             if self._nonnegative[i] and not out[i] >= 0:
                 raise ValueError(f"parameter `{n}` must be nonnegative, got {values[n]!r}")
-        return out
+        return self._physical(out)
+
+    def _physical(self, p: np.ndarray) -> np.ndarray:
+        """``p``, if the module (a rigid body's: ``body_values``) says it describes a body that can exist."""
+        values = getattr(self.module, "body_values", None)
+        problems = bodies.problems(*values(p)) if values is not None else ()
+        if problems:
+            raise ValueError(f"parameters `p` of {self.name} describe no rigid body: {'; '.join(problems)}")
+        return p
 
     def preset(self, name: str, /, **overrides) -> np.ndarray:
         """Validated parameter vector of a named parameter set the module ships; keywords override.
@@ -214,7 +222,7 @@ class Model:
         for positive, nonneg, v in zip(self._positive, self._nonnegative, values):
             if not math.isfinite(v) or (positive and not v > 0) or (nonneg and not v >= 0):
                 return self.params(dict(zip(self.param_names, values)))  # raises, naming the parameter
-        return np.array(values)
+        return self._physical(np.array(values))
 
     def state(self, values: Mapping | None = None, /, **kwargs) -> np.ndarray:
         """Validated float64 state vector in the order of :attr:`state_names`.
@@ -372,7 +380,15 @@ _CACHE: dict = {}
 
 
 def _module_from_path(folder: Path, name: str, fidelity: str):
-    """Import ``folder/<name>_<fidelity>.py`` under a name unique to its content; returns (module, path)."""
+    """Import ``folder/<name>_<fidelity>.py`` under a name unique to its content; returns (module, path).
+
+    The name and fidelity are confined to ``folder``; the module's content hash and sizes are verified
+    (:func:`knifeedge.modulecheck.check`) before it runs.
+    """
+    for what, v in (("name", name), ("fidelity", fidelity)):
+        if any(c in v for c in "/\\\0:") or v.startswith(".") or v != v.strip():
+            raise ValueError(f"model `{what}` {v!r} must be a plain name (no path separators, no leading dot): "
+                             f"models are files of the folder `path`")
     path = (folder / f"{name}_{fidelity}.py").resolve()
     if not path.is_file():
         have = sorted(p.stem for p in folder.glob("*_*.py"))
@@ -384,7 +400,8 @@ def _module_from_path(folder: Path, name: str, fidelity: str):
     # a flat name (kernels import the right-hand side by it) that changes with the content
     mod_name = f"knifeedge_model_{name}_{fidelity}_{digest}"
     module = sys.modules.get(mod_name)
-    if module is None:
+    if module is None:  # checked before it runs (a module of the same content was checked when imported)
+        modulecheck.check(data, str(path), f"knifeedge derive MODEL_FILE.py --out {folder}", (name, fidelity))
         spec = importlib.util.spec_from_file_location(mod_name, path)
         module = importlib.util.module_from_spec(spec)
         sys.modules[mod_name] = module
@@ -458,6 +475,10 @@ def load(name: str, fidelity: str = "full", pose: bool = False, path: str | Path
         raise ValueError(f"unknown `fidelity` {fidelity!r} for {name}; accepted: {', '.join(accepted)}")
     key = (name, fidelity, bool(pose))
     if key not in _CACHE:
-        module = importlib.import_module(f"{__package__}.generated.{MODULES[(name, fidelity)]}")
+        module_name = f"{__package__}.generated.{MODULES[(name, fidelity)]}"
+        origin = Path(importlib.util.find_spec(module_name).origin)
+        modulecheck.check(origin.read_bytes(), str(origin), "make derive in the source tree, or reinstall knifeedge",
+                          (name, fidelity))
+        module = importlib.import_module(module_name)
         _CACHE[key] = Model(module, bool(pose))
     return _CACHE[key]
