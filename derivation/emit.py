@@ -18,7 +18,7 @@ from pathlib import Path
 import sympy as sp
 from sympy.printing.pycode import PythonCodePrinter
 
-from . import averaging, drawing, engine, models, truncation
+from . import averaging, drawing, engine, models, names, truncation
 from .averaging import AmplitudeSystem
 from .fidelities import FIDELITIES
 
@@ -41,6 +41,10 @@ class _Printer(PythonCodePrinter):
 
     def _print_Rational(self, expr):
         return f"({float(expr.p)!r}/{float(expr.q)!r})"
+
+    def _print_Symbol(self, expr):
+        """The emitter's own symbols as they are; a user's through :func:`.names.identifier`."""
+        return expr.name if isinstance(expr, names.Own) else names.identifier(expr.name)
 
 
 def _code(e: sp.Expr) -> str:
@@ -84,7 +88,7 @@ def input_hash(spec: engine.ModelSpec, fidelity: str) -> str:
     for part in (
         spec.name, fidelity, sp.__version__,
         sp.srepr(spec.lagrangian), *(sp.srepr(c) for c in spec.constraints),
-        inspect.getsource(engine), inspect.getsource(truncation), inspect.getsource(models),
+        inspect.getsource(engine), inspect.getsource(truncation), inspect.getsource(models), inspect.getsource(names),
         Path(__file__).read_text(),
         *((inspect.getsource(averaging),) if fidelity == "amplitude" else ()),
         *(sp.srepr(e) for _, _, e in spec.quasi_velocities),
@@ -103,7 +107,7 @@ def _cse_block(exprs, targets, allowed, indent="    "):
     bad = set().union(*(e.free_symbols for e in exprs)) - set(allowed)
     if bad:
         raise ValueError(f"refusing to emit: undeclared symbols {sorted(map(str, bad))}")
-    subs, reduced_exprs = sp.cse(exprs, symbols=sp.numbered_symbols("_c"), order="canonical")
+    subs, reduced_exprs = sp.cse(exprs, symbols=sp.numbered_symbols("_c", cls=names.Own), order="canonical")
     lines = [f"{indent}{s} = {_code(v)}" for s, v in subs]
     lines += [f"{indent}{t} = {_code(v)}" for t, v in zip(targets, reduced_exprs)]
     ops = sum(sp.count_ops(v) for _, v in subs) + sum(sp.count_ops(v) for v in reduced_exprs)
@@ -130,7 +134,7 @@ def hoist_parameters(exprs, params):
         if e.is_Atom:
             return e
         if e not in memo:
-            memo[e] = sp.Symbol(f"_k{len(memo)}")
+            memo[e] = names.Own(f"_k{len(memo)}")
         return memo[e]
 
     def walk(e):
@@ -150,8 +154,14 @@ def hoist_parameters(exprs, params):
     return [(symbol, e) for e, symbol in memo.items()], new
 
 
-def _unpack(names, array, indent="    "):
-    return [f"{indent}{n} = {array}[{i}]" for i, n in enumerate(names)]
+def _unpack(user_names, array, indent="    ", start=0):
+    """Lines binding names to ``array[start]``, ``array[start + 1]``, ...
+
+    A user's name (a string or a symbol) is written as its :func:`.names.identifier`, an emitter's own
+    symbol (:class:`.names.Own`, e.g. a hoisted constant) as it is.
+    """
+    ident = lambda n: n.name if isinstance(n, names.Own) else names.identifier(str(n))  # noqa: E731
+    return [f"{indent}{ident(n)} = {array}[{start + i}]" for i, n in enumerate(user_names)]
 
 
 def unit(spec: engine.ModelSpec, name: str) -> str:
@@ -277,8 +287,7 @@ def _rhs_source(syms_state, syms_par, rates, syms_pose=(), pose_rates=()) -> tup
     n, npose = len(state), len(pose)
     allowed = set(syms_state) | set(syms_par)
     constants, hoisted = hoist_parameters(list(rates) + list(pose_rates), syms_par)
-    k_names = [str(k) for k, _ in constants]
-    q_names = list(params) + k_names
+    q_names = list(params) + [k for k, _ in constants]
     const_lines, const_ops = _cse_block([v for _, v in constants], [f"q[{len(params) + i}]" for i in
                                                                     range(len(constants))], set(syms_par))
     allowed_q = set(syms_state) | set(syms_par) | {k for k, _ in constants}
@@ -305,7 +314,7 @@ def constants(p):
     """``q``: the parameters, then the {len(constants)} parameter-only subexpressions of the right-hand side ({const_ops} operations)."""
     q = np.empty({len(q_names)})
 {nl.join(_unpack(params, "p"))}
-{nl.join(f"    q[{i}] = {x}" for i, x in enumerate(params))}
+{nl.join(f"    q[{i}] = {names.identifier(x)}" for i, x in enumerate(params))}
 {nl.join(const_lines)}
     return q
 
@@ -324,7 +333,7 @@ def rhs_q_into(t, s, q, ds):
     rhsp_lines, rhsp_ops = _cse_block(list(rates) + list(pose_rates), [f"ds[{i}]" for i in range(n + npose)],
                                       allowed_pose)
     qp_lines, qp_ops = _cse_block(hoisted, [f"ds[{i}]" for i in range(n + npose)], allowed_q | set(syms_pose))
-    unpack_pose = [f"    {x} = s[{n + i}]" for i, x in enumerate(pose)]
+    unpack_pose = _unpack(pose, "s", start=n)
     ops.update(rhs_pose=rhsp_ops, rhs_pose_q=qp_ops)
     return out + f'''
 
@@ -407,7 +416,7 @@ def module_source(system, fidelity: str, frequencies=None) -> str:
     extra_src += _extra_source(spec)
     unpack_s = _unpack(state, "s")
     unpack_p = _unpack(params, "p")
-    unpack_pose = [f"    {q} = s[{n + i}]" for i, q in enumerate(pose)]
+    unpack_pose = _unpack(pose, "s", start=n)
     nl = "\n"
     return f'''"""{spec.name}, fidelity {fidelity}: {fid_doc}.
 

@@ -26,6 +26,8 @@ pose rates at a general pose.
 """
 from __future__ import annotations
 
+import keyword
+import math
 import random
 import re
 import sys
@@ -34,6 +36,8 @@ from dataclasses import dataclass, field
 import mpmath
 
 import sympy as sp
+
+from . import names
 
 
 #: admissible values of a parameter, as written into the generated modules
@@ -66,8 +70,12 @@ class ModelSpec:
     collected and raised once as :class:`ModelSpecError`, naming the file
     and line where the spec was constructed):
 
-    1. ``name`` (str): a Python identifier; the generated modules are
-       ``<name>_<fidelity>.py``.
+    1. ``name`` (str): an ASCII Python identifier, not a keyword; the
+       generated modules are ``<name>_<fidelity>.py``.  The names of the
+       symbols are data (:mod:`.names`): any printable name without quotes
+       or backslashes works (``q``, ``t``, ``lambda``, ``a b``, ``κ``), the
+       generated code writes a safe identifier for it and reports the name
+       itself; two names equal after Unicode normalization (NFKC) are refused.
     2. ``coordinates``, ``velocities`` (tuples of SymPy symbols): the
        generalized coordinates ``q`` and their time derivatives ``q_dot``
        as plain symbols, one velocity per coordinate, all distinct.
@@ -246,8 +254,10 @@ def _symbols_ok(values, what: str, problems: list) -> bool:
 def _contract_problems(spec: ModelSpec) -> list:
     """Every violation of the :class:`ModelSpec` contract, as sentences."""
     problems: list = []
-    if not isinstance(spec.name, str) or not spec.name.isidentifier():
-        problems.append(f"`name` must be a Python identifier (it names the generated modules), got {spec.name!r}")
+    if not isinstance(spec.name, str) or not spec.name.isidentifier() or not spec.name.isascii() \
+            or keyword.iskeyword(spec.name):
+        problems.append(f"`name` must be an ASCII Python identifier and not a keyword (it names the generated "
+                        f"modules and their compiled code), got {spec.name!r}")
     ok = _symbols_ok(spec.coordinates, "coordinates", problems)
     ok &= _symbols_ok(spec.velocities, "velocities", problems)
     ok &= _symbols_ok(spec.params, "params", problems)
@@ -259,12 +269,12 @@ def _contract_problems(spec: ModelSpec) -> list:
         problems.append(f"`velocities` and `accelerations` need one entry per coordinate ({n}); got "
                         f"{len(spec.velocities)} and {len(spec.accelerations)}")
         return problems
-    names = [str(s) for s in spec.coordinates + spec.velocities + spec.params + tuple(u for u, _, _ in spec.quasi_velocities)]
-    clash = sorted({x for x in names if names.count(x) > 1})
+    names_ = [str(s) for s in spec.coordinates + spec.velocities + spec.params + tuple(u for u, _, _ in spec.quasi_velocities)]
+    clash = sorted({x for x in names_ if names_.count(x) > 1})
     if clash:
         problems.append(f"the names {clash} are used by more than one coordinate, velocity or parameter")
+    problems += names.problems(names_)
     declared = set(spec.coordinates) | set(spec.velocities) | set(spec.params)
-    t_symbols = {s for s in declared if str(s) == "t"}
 
     def undeclared(e, what, allowed=declared):
         if not isinstance(e, sp.Basic):
@@ -363,6 +373,9 @@ def _contract_problems(spec: ModelSpec) -> list:
             except (TypeError, ValueError):
                 problems.append(f"default of {k} must be a number, got {v!r}")
                 continue
+            if not math.isfinite(fv):
+                problems.append(f"default of {k} must be finite, got {v!r}")
+                continue
             if str(k) in p_names and _param_domain(spec, sp.Symbol(str(k))) == "positive" and not fv > 0:
                 problems.append(f"default of {k} must be positive (its domain), got {v!r}")
     for fid, bounds in spec.validity.items():
@@ -372,6 +385,10 @@ def _contract_problems(spec: ModelSpec) -> list:
         bad = sorted(str(k) for k in bounds if str(k) not in state_names)
         if bad:
             problems.append(f"`validity[{fid!r}]` names {bad} that are not closed-state variables")
+        bad = sorted(str(k) for k, v in bounds.items() if not _finite_positive(v))
+        if bad:
+            problems.append(f"`validity[{fid!r}]` bounds of {bad} must be finite positive numbers (leave a state "
+                            f"out for no bound)")
     if spec.dissipation is not None:
         undeclared(spec.dissipation, "the `dissipation` function")
     if spec.forces:
@@ -385,6 +402,13 @@ def _contract_problems(spec: ModelSpec) -> list:
         if spec.extra_source and not re.search(rf"^(def |class )?{re.escape(name)}\b", spec.extra_source, re.M):
             problems.append(f"`exports` entry {name!r} is not defined at the top level of `extra_source`")
     return problems
+
+
+def _finite_positive(v) -> bool:
+    try:
+        return math.isfinite(float(v)) and float(v) > 0
+    except (TypeError, ValueError):
+        return False
 
 
 def _param_domain(spec: ModelSpec, q) -> str:
