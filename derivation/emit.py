@@ -245,9 +245,13 @@ def _state_defaults(spec: engine.ModelSpec, state) -> dict:
     return {str(s): _number(spec.lookup(spec.defaults, s, 0.0)) for s in state}
 
 
-def _state_function(name: str, exprs, state, params, doc: str, scalar: bool = False) -> tuple[str, int]:
-    """A jitted ``name(s, p)`` of state and parameters (an array, or a scalar when ``scalar``)."""
-    allowed = set(state) | set(params)
+def _state_function(name: str, exprs, state, params, doc: str, scalar: bool = False,
+                    args: str = "s, p") -> tuple[str, int]:
+    """A jitted ``name(s, p)`` of state and parameters (an array, or a scalar when ``scalar``).
+
+    ``args="s, p, t"``: also of the time (a model whose equations depend on it).
+    """
+    allowed = set(state) | set(params) | ({names.t} if args.endswith(", t") else set())
     targets = [name] if scalar else [f"out[{i}]" for i in range(len(exprs))]
     lines, ops = _cse_block(list(exprs), targets, allowed)
     nl = "\n"
@@ -256,7 +260,7 @@ def _state_function(name: str, exprs, state, params, doc: str, scalar: bool = Fa
     return f'''
 
 @njit(cache=True)
-def {name}(s, p):
+def {name}({args}):
     """{doc} ({ops} operations)."""{head}
 {nl.join(_unpack([str(x) for x in state], "s"))}
 {nl.join(_unpack([str(q) for q in params], "p"))}
@@ -285,12 +289,12 @@ def _rhs_source(syms_state, syms_par, rates, syms_pose=(), pose_rates=()) -> tup
     nl = "\n"
     state, pose, params = [str(x) for x in syms_state], [str(x) for x in syms_pose], [str(x) for x in syms_par]
     n, npose = len(state), len(pose)
-    allowed = set(syms_state) | set(syms_par)
+    allowed = set(syms_state) | set(syms_par) | {names.t}
     constants, hoisted = hoist_parameters(list(rates) + list(pose_rates), syms_par)
     q_names = list(params) + [k for k, _ in constants]
     const_lines, const_ops = _cse_block([v for _, v in constants], [f"q[{len(params) + i}]" for i in
                                                                     range(len(constants))], set(syms_par))
-    allowed_q = set(syms_state) | set(syms_par) | {k for k, _ in constants}
+    allowed_q = set(syms_state) | set(syms_par) | {k for k, _ in constants} | {names.t}
     rhs_lines, rhs_ops = _cse_block(list(rates), [f"ds[{i}]" for i in range(n)], allowed)
     q_lines, q_ops = _cse_block(hoisted[:n], [f"ds[{i}]" for i in range(n)], allowed_q)
     out = f'''@njit(cache=True)
@@ -381,7 +385,9 @@ def module_source(system, fidelity: str, frequencies=None) -> str:
     params = [str(p) for p in spec.params]
     n, npose = len(state), len(pose)
     rates = system.state_rhs()
-    allowed = set(system.state) | set(spec.params)
+    timed = system.time_dependent
+    args = "s, p, t" if timed else "s, p"  # the functions besides the right-hand side
+    allowed = set(system.state) | set(spec.params) | ({names.t} if timed else set())
     pose_exprs = [system.pose_rates[q] for q in spec.pose]
     pose_lines, pose_ops = _cse_block(pose_exprs, [f"out[{i}]" for i in range(npose)], allowed | set(spec.pose))
     rhs_src, rhs_ops = _rhs_source(system.state, spec.params, rates, spec.pose, pose_exprs)
@@ -411,7 +417,13 @@ def module_source(system, fidelity: str, frequencies=None) -> str:
         src_, extra_ops["power_dissipated"] = _state_function(
             "power_dissipated", [system.power], system.state, spec.params,
             "Rate at which the non-conservative forces remove energy, -q_dot . Q (>= 0 for pure dissipation)",
-            scalar=True)
+            scalar=True, args=args)
+        extra_src += src_
+    if system.power_input is not None:
+        src_, extra_ops["power_input"] = _state_function(
+            "power_input", [system.power_input], system.state, spec.params,
+            "Rate at which the explicit time and the rheonomic constraints add energy, -dL/dt - lambda . b",
+            scalar=True, args=args)
         extra_src += src_
     extra_src += _extra_source(spec)
     unpack_s = _unpack(state, "s")
@@ -441,7 +453,7 @@ import math
 import numpy as np
 from numba import njit
 
-{meta}
+{meta}{_time_metadata(system)}
 INPUT_HASH = {digest!r}
 SYMPY_VERSION = {sp.__version__!r}
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
@@ -451,7 +463,7 @@ OP_COUNTS = {dict(rhs_ops, pose_rates=pose_ops, energy=energy_ops, multipliers=l
 {rhs_src}
 
 @njit(cache=True)
-def pose_rates(s, p):
+def pose_rates({args}):
     """Return the rates ({", ".join(str(spec.velocity_of(q)) for q in spec.pose)}) of the pose at the pose-extended state ``s`` ({pose_ops} operations)."""
     out = np.empty({npose})
 {nl.join(unpack_s)}
@@ -462,7 +474,7 @@ def pose_rates(s, p):
 
 
 @njit(cache=True)
-def energy(s, p):
+def energy({args}):
     """Energy per unit mass ({energy_ops} operations)."""
 {nl.join(unpack_s)}
 {nl.join(unpack_p)}
@@ -471,7 +483,7 @@ def energy(s, p):
 
 
 @njit(cache=True)
-def multipliers(s, p):
+def multipliers({args}):
     """Lagrange multipliers (contact forces per unit mass) {labels} ({lam_ops} operations)."""
     out = np.empty({len(lam)})
 {nl.join(unpack_s)}
@@ -479,6 +491,17 @@ def multipliers(s, p):
 {nl.join(lam_lines)}
     return out
 ''' + drawing.module_source(system) + extra_src
+
+
+def _time_metadata(system) -> str:
+    """Metadata lines of a model whose equations depend on the time (none for an autonomous model)."""
+    if not system.time_dependent:
+        return ""
+    return ("\n#: the equations depend on the time: energy, multipliers, pose_rates, power_dissipated and power_input\n"
+            "#: take it as a third argument ``(s, p, t)``; energy is not conserved:\n"
+            "#: energy(t) = energy(0) + integral of (power_input - power_dissipated)\n"
+            "TIME_DEPENDENT = True\n"
+            f"HAS_POWER_INPUT = {system.power_input is not None!r}")
 
 
 def _coefficient_block(name: str, exprs, params, doc: str) -> tuple[str, int]:

@@ -38,6 +38,7 @@ import mpmath
 import sympy as sp
 
 from . import names
+from .names import t
 
 
 #: admissible values of a parameter, as written into the generated modules
@@ -87,11 +88,18 @@ class ModelSpec:
        ``"real"``), or from ``param_domains`` ({symbol: "positive"|"real"}).
     4. ``lagrangian`` (expression): the unconstrained Lagrangian (any
        consistent normalization, e.g. per unit mass), quadratic in the
-       velocities, not explicitly time-dependent.  Every symbol in it is a
-       coordinate, a velocity or a parameter ("every symbol declared").
-    5. ``constraints`` (tuple of expressions, each equal to zero): linear
-       and homogeneous in the velocities, ``sum_i a_ji(q) q_dot_i = 0``;
-       ``constraint_labels`` name them (default ``c1, c2, ...``).
+       velocities.  Every symbol in it is a coordinate, a velocity, a
+       parameter or the time ``knifeedge.derive.t`` ("every symbol
+       declared").  The time may appear in the Lagrangian, the constraints,
+       the forces and the dissipation: the generated right-hand side then
+       reads the integrator's time, and ``energy``, ``multipliers``,
+       ``pose_rates`` and the powers take it as a third argument
+       (``TIME_DEPENDENT`` in the module); such a model has no small-angle
+       fidelities.
+    5. ``constraints`` (tuple of expressions, each equal to zero): affine
+       in the velocities, ``sum_i a_ji(q, t) q_dot_i + b_j(q, t) = 0``
+       (``b`` and a time in ``a`` make them rheonomic: a prescribed motion
+       is one); ``constraint_labels`` name them (default ``c1, c2, ...``).
     6. ``dependent`` (tuple of coordinates): one per constraint, whose
        velocities the constraints determine (the block of the constraint
        matrix on them must be invertible).
@@ -122,7 +130,11 @@ class ModelSpec:
     14. ``dissipation`` (Rayleigh function ``R(q, q_dot) >= 0``, generalized
         force ``-dR/dq_dot``) and ``forces`` (one generalized force per
         coordinate): non-conservative forces.  The generated module then
-        gives ``power_dissipated(s, p)``, the rate of loss of ``energy``.
+        gives ``power_dissipated(s, p)``, the rate of loss of ``energy``
+        (a driving force, e.g. a torque ``tau0 sin t``, makes it negative).
+        A Lagrangian with the time or rheonomic constraints give
+        ``power_input(s, p, t) = -dL/dt - lambda . b``, the rate of gain:
+        ``energy(t) = energy(t0) + integral (power_input - power_dissipated)``.
     15. ``quasi_velocities``: ``(symbol, replaced_velocity, expression)``
         triples (see the module docstring of :mod:`.engine`); ``state_order``
         an optional permutation of the closed state.
@@ -274,7 +286,7 @@ def _contract_problems(spec: ModelSpec) -> list:
     if clash:
         problems.append(f"the names {clash} are used by more than one coordinate, velocity or parameter")
     problems += names.problems(names_)
-    declared = set(spec.coordinates) | set(spec.velocities) | set(spec.params)
+    declared = set(spec.coordinates) | set(spec.velocities) | set(spec.params) | {t}
 
     def undeclared(e, what, allowed=declared):
         if not isinstance(e, sp.Basic):
@@ -282,8 +294,11 @@ def _contract_problems(spec: ModelSpec) -> list:
             return True
         extra = e.free_symbols - allowed
         if extra:
+            hint = ("; the time is `knifeedge.derive.t`" if "t" in map(str, extra) and t in allowed
+                    else "; only the right-hand side, the forces, the Lagrangian and the constraints may depend on "
+                         "the time" if t in e.free_symbols else "")
             problems.append(f"{what} contains undeclared symbols {sorted(map(str, extra))} "
-                            f"(declare them as coordinates, velocities or params)")
+                            f"(declare them as coordinates, velocities or params{hint})")
             return True
         if e.atoms(sp.Derivative) or any(isinstance(f, sp.core.function.AppliedUndef) for f in e.atoms(sp.Function)):
             problems.append(f"{what} contains functions of time or derivatives; use plain symbols for q and q_dot")
@@ -301,8 +316,10 @@ def _contract_problems(spec: ModelSpec) -> list:
         if undeclared(c, f"constraint {label!r}"):
             continue
         lin = sp.Matrix([c]).jacobian(qd)
-        if sp.expand(c - (lin * qd)[0]) != 0 or any(e.free_symbols & set(spec.velocities) for e in lin):
-            problems.append(f"constraint {label!r} must be linear and homogeneous in the velocities: {c}")
+        if sp.expand(c - (lin * qd)[0]).free_symbols & set(spec.velocities) or any(
+                e.free_symbols & set(spec.velocities) for e in lin):
+            problems.append(f"constraint {label!r} must be affine in the velocities, a(q, t) q_dot + b(q, t) = 0; "
+                            f"got {c}")
     if len(spec.constraint_labels) != len(spec.constraints):
         problems.append(f"`constraint_labels` needs one label per constraint ({len(spec.constraints)})")
     not_coord = [q for q in spec.dependent if q not in spec.coordinates]
@@ -321,6 +338,12 @@ def _contract_problems(spec: ModelSpec) -> list:
         if free:
             problems.append(f"dependent coordinates {free} must be cyclic (the closed state holds no dependent "
                             f"coordinate); add them to `cyclic`")
+    timed = [what for what, e in (("lagrangian", spec.lagrangian), ("constraints", spec.constraints),
+                                  ("forces", spec.forces), ("dissipation", spec.dissipation))
+             if any(isinstance(x, sp.Basic) and x.has(t) for x in (e if isinstance(e, tuple) else (e,)))]
+    if timed and spec.small:
+        problems.append(f"the small-angle fidelities (`small`) need equations that do not depend on the time; the "
+                        f"{', '.join(timed)} do: leave `small` empty")
     bad = [q for q in spec.small if q not in spec.coordinates or q in spec.cyclic or q in spec.dependent]
     if bad:
         problems.append(f"`small` entries {bad} must be independent, non-cyclic coordinates")
@@ -445,6 +468,15 @@ class ReducedSystem:
     pose_rates: dict
     #: rate of loss of ``energy`` by the non-conservative forces, ``-q_dot . Q`` (``None`` if conservative)
     power: sp.Expr | None = None
+    #: rate of gain of ``energy`` by the explicit time and the rheonomic constraints (``None`` if neither)
+    power_input: sp.Expr | None = None
+
+    @property
+    def time_dependent(self) -> bool:
+        """The equations depend on the time explicitly (``knifeedge.derive.t``)."""
+        exprs = [*self.explicit, *self.multipliers, self.energy, *self.pose_rates.values(),
+                 *([self.power] if self.power is not None else [])]
+        return self.power_input is not None or any(sp.sympify(e).has(t) for e in exprs)
 
     def state_rhs(self) -> list:
         """Right-hand side of ``d(state)/dt`` as a list of expressions, aligned with :attr:`state`."""
@@ -465,11 +497,24 @@ def _lagrange_terms(spec: ModelSpec):
     p_mom = sp.Matrix([sp.diff(L, v) for v in qd])
     M = p_mom.jacobian(qd)
     h = p_mom.jacobian(q) * qd - sp.Matrix([sp.diff(L, c) for c in q])
+    if L.has(t):  # d/dt of the momenta holds their explicit time derivative
+        h += p_mom.diff(t)
     h -= generalized_forces(spec)
     cons = sp.Matrix(spec.constraints)
     A = cons.jacobian(qd)
     c = (A * qd).jacobian(q) * qd  # d/dt(A) q_dot
+    b = affine_terms(spec)
+    if b.has(t) or A.has(t) or any(e != 0 for e in b):  # rheonomic: + d(b)/dq q_dot + d(A q_dot + b)/dt
+        c += b.jacobian(q) * qd + (A * qd + b).diff(t)
     return M, h, A, c
+
+
+def affine_terms(spec: ModelSpec) -> sp.Matrix:
+    """``b(q, t)`` of the constraints ``A(q, t) q_dot + b(q, t) = 0`` (zero for homogeneous constraints)."""
+    cons = sp.Matrix(spec.constraints)
+    if not cons:
+        return sp.zeros(0, 1)
+    return (cons - cons.jacobian(sp.Matrix(spec.velocities)) * sp.Matrix(spec.velocities)).applyfunc(sp.expand)
 
 
 def generalized_forces(spec: ModelSpec) -> sp.Matrix:
@@ -491,11 +536,14 @@ def _split(spec: ModelSpec, A: sp.Matrix):
 def dependent_velocities(spec: ModelSpec, at: dict | None = None) -> dict:
     """Solve the constraints for the dependent velocities (at ``at`` if given)."""
     A = sp.Matrix(spec.constraints).jacobian(sp.Matrix(spec.velocities))
+    b = affine_terms(spec)
     if at:
-        A = A.subs(at)
+        A, b = A.subs(at), b.subs(at)
     dep, ind, A_dep, A_ind = _split(spec, A)
     qd_ind = sp.Matrix([spec.velocities[i] for i in ind])
     sol = -A_dep.inv() * A_ind * qd_ind
+    if any(e != 0 for e in b):
+        sol -= A_dep.inv() * b
     sol = sol.applyfunc(lambda e: sp.factor(sp.trigsimp(sp.expand(e))))
     return {spec.velocities[i]: sol[k] for k, i in enumerate(dep)}
 
@@ -541,7 +589,9 @@ def derive(spec: ModelSpec) -> ReducedSystem:
 
     qd_ind = sp.Matrix([spec.velocities[i] for i in ind])
     qdd_ind = sp.Matrix([spec.accelerations[i] for i in ind])
-    dep_vel = dict(zip((spec.velocities[i] for i in dep), sp.expand(-A_dep_inv * A_ind * qd_ind)))
+    b = affine_terms(spec).subs(at)
+    dep_vel = dict(zip((spec.velocities[i] for i in dep), sp.expand(
+        -A_dep_inv * A_ind * qd_ind if all(e == 0 for e in b) else -A_dep_inv * (A_ind * qd_ind + b))))
     # dependent accelerations from the differentiated constraints
     dep_acc = dict(
         zip((spec.accelerations[i] for i in dep), sp.expand(-A_dep_inv * (A_ind * qdd_ind + c)))
@@ -582,6 +632,7 @@ def derive(spec: ModelSpec) -> ReducedSystem:
     if spec.dissipative:
         power = -(qd.T * generalized_forces(spec).subs(at))[0]
         power = tidy(sp.expand(power.subs(dep_vel)), variables)
+    power_input = _power_input(spec, L, b, multipliers, dep_vel, variables)
 
     # pose rates at a general pose
     general = dependent_velocities(spec)
@@ -601,10 +652,24 @@ def derive(spec: ModelSpec) -> ReducedSystem:
         energy=energy,
         pose_rates=pose_rates,
         power=power,
+        power_input=power_input,
     )
     if spec.quasi_velocities:
         system = _with_quasi_velocities(system, at, dep_vel, dep_acc, general)
     return system
+
+
+def _power_input(spec: ModelSpec, L: sp.Expr, b: sp.Matrix, multipliers: sp.Matrix, dep_vel: dict, variables):
+    """Rate of gain of ``energy`` by the explicit time: ``-dL/dt - lambda . b`` (``None`` if scleronomic).
+
+    With ``M q_ddot + h = A^T lambda`` and ``A q_dot + b = 0``, the Jacobi integral
+    ``E = q_dot . dL/dq_dot - L`` changes at the rate ``-dL/dt + q_dot . Q + lambda . A q_dot``,
+    that is ``power_input - power_dissipated`` (Goldstein, *Classical Mechanics*, section 8.2).
+    """
+    if not (L.has(t) or any(e != 0 for e in b)):
+        return None
+    power = -sp.diff(L, t) - sum((lam * e for lam, e in zip(multipliers, b)), sp.S.Zero)
+    return tidy(sp.expand(sp.sympify(power).subs(dep_vel)), variables)
 
 
 def _quasi_rates(spec: ModelSpec, at: dict, dep_vel: dict, dep_acc: dict, acc_sub: dict) -> dict:
@@ -665,6 +730,7 @@ def _with_quasi_velocities(system: ReducedSystem, at: dict, dep_vel: dict, dep_a
         energy=tidy(system.energy.subs(back), variables),
         pose_rates=pose_rates,
         power=None if system.power is None else tidy(system.power.subs(back), variables),
+        power_input=None if system.power_input is None else tidy(system.power_input.subs(back), variables),
     )
 
 
@@ -713,6 +779,7 @@ def check_symmetry(system: ReducedSystem, seed: int = 0, tol: float = 1e-20) -> 
     rng = random.Random(seed)
     pt = _random_point(spec.coordinates + tuple(spec.velocity_of(q) for q in spec.independent), rng)
     pt.update({s: sp.Rational(rng.randint(300, 1500), 1000) for s in spec.params})
+    pt[t] = sp.Rational(37, 100)
     if spec.quasi_velocities:
         acc, lam, pt = _quasi_point(spec, pt)
     else:

@@ -100,7 +100,7 @@ class SimulationResult:
     @property
     def energy(self) -> np.ndarray:
         """Energy per unit mass along the trajectory."""
-        return self.model.energy(self.y, self.p)
+        return self.model.energy(self.y, self.p, self.t)
 
 
 @dataclass(frozen=True)
