@@ -87,7 +87,7 @@ def input_hash(spec: engine.ModelSpec, fidelity: str) -> str:
     path = spec_file(spec)
     for part in (
         spec.name, fidelity, sp.__version__,
-        sp.srepr(spec.lagrangian), *(sp.srepr(c) for c in spec.constraints),
+        sp.srepr(spec.lagrangian), *(sp.srepr(c) for c in spec.constraints), *(sp.srepr(f) for f in spec.holonomic),
         inspect.getsource(engine), inspect.getsource(truncation), inspect.getsource(models), inspect.getsource(names),
         Path(__file__).read_text(),
         *((inspect.getsource(averaging),) if fidelity == "amplitude" else ()),
@@ -230,7 +230,7 @@ def _metadata(spec: engine.ModelSpec, fidelity: str, state: list, units: list, d
         "#: largest |value| of each named state where this fidelity holds (empty: everywhere)",
         f"VALIDITY = {validity!r}",
         f"VALIDITY_DOC = {valid_doc!r}",
-        f"MULTIPLIER_NAMES = {(tuple(spec.constraint_labels) if fidelity != 'amplitude' else ())!r}",
+        f"MULTIPLIER_NAMES = {(tuple(spec.multiplier_labels) if fidelity != 'amplitude' else ())!r}",
         "#: non-conservative forces: the module has ``power_dissipated(s, p)``",
         f"HAS_DISSIPATION = {spec.dissipative and fidelity != 'amplitude'!r}",
         "#: model-specific helpers defined at the end of this module",
@@ -394,7 +394,7 @@ def module_source(system, fidelity: str, frequencies=None) -> str:
     energy_lines, energy_ops = _cse_block([system.energy], ["energy"], allowed)
     lam = list(system.multipliers)
     lam_lines, lam_ops = _cse_block(lam, [f"out[{i}]" for i in range(len(lam))], allowed)
-    labels = ", ".join(spec.constraint_labels)
+    labels = ", ".join(spec.multiplier_labels)
     digest = input_hash(spec, fidelity)
     fid_doc = FIDELITIES[fidelity].doc
     units = [unit(spec, nm) for nm in state]
@@ -418,6 +418,12 @@ def module_source(system, fidelity: str, frequencies=None) -> str:
             "power_dissipated", [system.power], system.state, spec.params,
             "Rate at which the non-conservative forces remove energy, -q_dot . Q (>= 0 for pure dissipation)",
             scalar=True, args=args)
+        extra_src += src_
+    if spec.holonomic:
+        src_, extra_ops["holonomic_residual"] = _state_function(
+            "holonomic_residual", list(spec.holonomic), system.state, spec.params,
+            "Values of the holonomic constraints " + ", ".join(spec.holonomic_labels) + " (zero on the constraint "
+            "manifold; the run integrates their derivative, so they drift)", args=args)
         extra_src += src_
     if system.power_input is not None:
         src_, extra_ops["power_input"] = _state_function(
@@ -494,10 +500,14 @@ def multipliers({args}):
 
 
 def _time_metadata(system) -> str:
-    """Metadata lines of a model whose equations depend on the time (none for an autonomous model)."""
+    """Metadata lines of a model with holonomic constraints or whose equations depend on the time (else none)."""
+    out = ""
+    if system.spec.holonomic:
+        out += ("\n#: holonomic constraints, whose values ``holonomic_residual`` gives (zero on the manifold)\n"
+                f"HOLONOMIC_NAMES = {tuple(system.spec.holonomic_labels)!r}")
     if not system.time_dependent:
-        return ""
-    return ("\n#: the equations depend on the time: energy, multipliers, pose_rates, power_dissipated and power_input\n"
+        return out
+    return out + ("\n#: the equations depend on the time: energy, multipliers, pose_rates, power_dissipated and power_input\n"
             "#: take it as a third argument ``(s, p, t)``; energy is not conserved:\n"
             "#: energy(t) = energy(0) + integral of (power_input - power_dissipated)\n"
             "TIME_DEPENDENT = True\n"

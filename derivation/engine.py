@@ -100,13 +100,22 @@ class ModelSpec:
        in the velocities, ``sum_i a_ji(q, t) q_dot_i + b_j(q, t) = 0``
        (``b`` and a time in ``a`` make them rheonomic: a prescribed motion
        is one); ``constraint_labels`` name them (default ``c1, c2, ...``).
-    6. ``dependent`` (tuple of coordinates): one per constraint, whose
-       velocities the constraints determine (the block of the constraint
-       matrix on them must be invertible).
+    6. ``dependent`` (tuple of coordinates): one per constraint and then
+       one per holonomic constraint, whose velocities the constraints
+       determine (the block of the constraint matrix on them must be
+       invertible, at the representative point and along a run).
+       ``holonomic`` (tuple of expressions ``f(q, t)``, each equal to zero;
+       ``holonomic_labels``, default ``h1, h2, ...``): position constraints,
+       entered as their time derivatives ``df/dq q_dot + df/dt = 0`` with a
+       multiplier each (named after ``constraint_labels``); their coordinates
+       must not be cyclic.  The module's ``holonomic_residual(s, p)`` gives
+       ``f`` along a run: the positions are not projected back onto
+       ``f = 0``, they drift by about the integrator's error.
     7. ``cyclic`` ({coordinate: value}): coordinates the reduced dynamics
        does not depend on (the symmetry), with the representative value at
-       which the equations are evaluated.  Every dependent coordinate must
-       be cyclic.  :func:`check_symmetry` confirms the symmetry at a random
+       which the equations are evaluated.  A dependent coordinate that is
+       not cyclic stays in the closed state (after the tilts; its rate from
+       the constraints).  :func:`check_symmetry` confirms the symmetry at a random
        general pose after the derivation (``knifeedge derive`` runs it).
     8. ``small`` (tuple of non-cyclic independent coordinates): the tilts,
        scaled as small by the ``reduced`` fidelity; a model with tilts also
@@ -154,6 +163,8 @@ class ModelSpec:
     params: tuple
     accelerations: tuple = ()
     constraint_labels: tuple = ()
+    holonomic: tuple = ()
+    holonomic_labels: tuple = ()
     cyclic: dict = field(default_factory=dict)
     small: tuple = ()
     pose: tuple = ()
@@ -181,7 +192,7 @@ class ModelSpec:
         set_ = lambda k, v: object.__setattr__(self, k, v)  # noqa: E731 (frozen dataclass)
         set_("defined_at", _caller_location())
         for k in ("coordinates", "velocities", "constraints", "dependent", "params", "accelerations",
-                  "constraint_labels", "small", "pose", "reversal_events", "forces", "quasi_velocities",
+                  "constraint_labels", "holonomic", "holonomic_labels", "small", "pose", "reversal_events", "forces", "quasi_velocities",
                   "state_order", "exports"):
             v = getattr(self, k)
             if isinstance(v, (list, sp.Matrix)):
@@ -190,6 +201,8 @@ class ModelSpec:
             set_("accelerations", tuple(sp.Symbol(f"{q}_ddot", real=True) for q in self.coordinates))
         if not self.constraint_labels:
             set_("constraint_labels", tuple(f"c{i + 1}" for i in range(len(self.constraints))))
+        if not self.holonomic_labels:
+            set_("holonomic_labels", tuple(f"h{i + 1}" for i in range(len(self.holonomic))))
         problems = _contract_problems(self)
         if problems:
             raise ModelSpecError(self.error_message(problems))
@@ -202,6 +215,23 @@ class ModelSpec:
                  f"{len(problems)} problem{'s' if len(problems) > 1 else ''}"]
         lines += [f"  {i + 1}. {p}" for i, p in enumerate(problems)]
         return "\n".join(lines)
+
+    @property
+    def velocity_constraints(self) -> tuple:
+        """``constraints``, then each holonomic constraint differentiated: ``df/dq q_dot + df/dt``."""
+        return tuple(self.constraints) + tuple(
+            sum((sp.diff(f, q) * v for q, v in zip(self.coordinates, self.velocities)), sp.diff(f, t))
+            for f in self.holonomic)
+
+    @property
+    def multiplier_labels(self) -> tuple:
+        """Labels of the multipliers: ``constraint_labels``, then ``holonomic_labels``."""
+        return tuple(self.constraint_labels) + tuple(self.holonomic_labels)
+
+    @property
+    def kept(self) -> tuple:
+        """Dependent coordinates that are not cyclic: they stay in the closed state, their rates from the constraints."""
+        return tuple(q for q in self.dependent if q not in self.cyclic)
 
     @property
     def independent(self) -> tuple:
@@ -218,7 +248,7 @@ class ModelSpec:
         """Small coordinates, their rates, rates of cyclic independents (before quasi-velocities)."""
         tilts = tuple(q for q in self.independent if q not in self.cyclic)
         spins = tuple(q for q in self.independent if q in self.cyclic)
-        return tilts + tuple(self.velocity_of(q) for q in tilts) + tuple(
+        return tilts + self.kept + tuple(self.velocity_of(q) for q in tilts) + tuple(
             self.velocity_of(q) for q in spins
         )
 
@@ -322,11 +352,25 @@ def _contract_problems(spec: ModelSpec) -> list:
                             f"got {c}")
     if len(spec.constraint_labels) != len(spec.constraints):
         problems.append(f"`constraint_labels` needs one label per constraint ({len(spec.constraints)})")
+    for j, f in enumerate(spec.holonomic):
+        label = spec.holonomic_labels[j] if j < len(spec.holonomic_labels) else f"h{j + 1}"
+        if undeclared(f, f"holonomic constraint {label!r}"):
+            continue
+        if f.free_symbols & set(spec.velocities):
+            problems.append(f"holonomic constraint {label!r} must be a function f(q, t) of the coordinates (and the "
+                            f"time) equal to zero; it holds velocities: write it in `constraints` instead")
+        elif f.free_symbols & set(spec.cyclic):
+            problems.append(f"holonomic constraint {label!r} holds the cyclic coordinates "
+                            f"{sorted(map(str, f.free_symbols & set(spec.cyclic)))}, which the closed state does not "
+                            f"keep; remove them from `cyclic`")
+    if len(spec.holonomic_labels) != len(spec.holonomic):
+        problems.append(f"`holonomic_labels` needs one label per holonomic constraint ({len(spec.holonomic)})")
     not_coord = [q for q in spec.dependent if q not in spec.coordinates]
     if not_coord:
         problems.append(f"`dependent` entries {not_coord} are not coordinates")
-    elif len(spec.dependent) != len(spec.constraints):
-        problems.append(f"`dependent` must name one coordinate per constraint ({len(spec.constraints)}), "
+    elif len(spec.dependent) != len(spec.constraints) + len(spec.holonomic):
+        problems.append(f"`dependent` must name one coordinate per constraint and holonomic constraint "
+                        f"({len(spec.constraints) + len(spec.holonomic)}), "
                         f"got {len(spec.dependent)}")
     if not isinstance(spec.cyclic, dict):
         problems.append("`cyclic` must be a mapping {coordinate: representative value}")
@@ -334,11 +378,7 @@ def _contract_problems(spec: ModelSpec) -> list:
         bad = [q for q in spec.cyclic if q not in spec.coordinates]
         if bad:
             problems.append(f"`cyclic` entries {bad} are not coordinates")
-        free = [q for q in spec.dependent if q in spec.coordinates and q not in spec.cyclic]
-        if free:
-            problems.append(f"dependent coordinates {free} must be cyclic (the closed state holds no dependent "
-                            f"coordinate); add them to `cyclic`")
-    timed = [what for what, e in (("lagrangian", spec.lagrangian), ("constraints", spec.constraints),
+    timed = [what for what, e in (("lagrangian", spec.lagrangian), ("constraints", spec.velocity_constraints),
                                   ("forces", spec.forces), ("dissipation", spec.dissipation))
              if any(isinstance(x, sp.Basic) and x.has(t) for x in (e if isinstance(e, tuple) else (e,)))]
     if timed and spec.small:
@@ -470,11 +510,14 @@ class ReducedSystem:
     power: sp.Expr | None = None
     #: rate of gain of ``energy`` by the explicit time and the rheonomic constraints (``None`` if neither)
     power_input: sp.Expr | None = None
+    #: rate of each dependent coordinate kept in the state (``spec.kept``), from the constraints
+    dependent_rates: dict = field(default_factory=dict)
 
     @property
     def time_dependent(self) -> bool:
         """The equations depend on the time explicitly (``knifeedge.derive.t``)."""
         exprs = [*self.explicit, *self.multipliers, self.energy, *self.pose_rates.values(),
+                 *self.dependent_rates.values(), *self.spec.holonomic,
                  *([self.power] if self.power is not None else [])]
         return self.power_input is not None or any(sp.sympify(e).has(t) for e in exprs)
 
@@ -483,7 +526,7 @@ class ReducedSystem:
         spec = self.spec
         tilts = [q for q in spec.independent if q not in spec.cyclic]
         spins = [q for q in spec.independent if q in spec.cyclic]
-        rates = [spec.velocity_of(q) for q in tilts]
+        rates = [spec.velocity_of(q) for q in tilts] + [self.dependent_rates[q] for q in spec.kept]
         # ``explicit`` follows the order of ``spec.independent``, which may interleave tilts and spins
         natural = rates + [self.explicit[spec.independent.index(q)] for q in tilts + spins]
         by_name = dict(zip(map(str, spec.natural_state), natural))
@@ -500,7 +543,7 @@ def _lagrange_terms(spec: ModelSpec):
     if L.has(t):  # d/dt of the momenta holds their explicit time derivative
         h += p_mom.diff(t)
     h -= generalized_forces(spec)
-    cons = sp.Matrix(spec.constraints)
+    cons = sp.Matrix(spec.velocity_constraints)
     A = cons.jacobian(qd)
     c = (A * qd).jacobian(q) * qd  # d/dt(A) q_dot
     b = affine_terms(spec)
@@ -511,7 +554,7 @@ def _lagrange_terms(spec: ModelSpec):
 
 def affine_terms(spec: ModelSpec) -> sp.Matrix:
     """``b(q, t)`` of the constraints ``A(q, t) q_dot + b(q, t) = 0`` (zero for homogeneous constraints)."""
-    cons = sp.Matrix(spec.constraints)
+    cons = sp.Matrix(spec.velocity_constraints)
     if not cons:
         return sp.zeros(0, 1)
     return (cons - cons.jacobian(sp.Matrix(spec.velocities)) * sp.Matrix(spec.velocities)).applyfunc(sp.expand)
@@ -535,7 +578,7 @@ def _split(spec: ModelSpec, A: sp.Matrix):
 
 def dependent_velocities(spec: ModelSpec, at: dict | None = None) -> dict:
     """Solve the constraints for the dependent velocities (at ``at`` if given)."""
-    A = sp.Matrix(spec.constraints).jacobian(sp.Matrix(spec.velocities))
+    A = sp.Matrix(spec.velocity_constraints).jacobian(sp.Matrix(spec.velocities))
     b = affine_terms(spec)
     if at:
         A, b = A.subs(at), b.subs(at)
@@ -653,6 +696,7 @@ def derive(spec: ModelSpec) -> ReducedSystem:
         pose_rates=pose_rates,
         power=power,
         power_input=power_input,
+        dependent_rates={q: tidy(dep_vel[spec.velocity_of(q)], variables) for q in spec.kept},
     )
     if spec.quasi_velocities:
         system = _with_quasi_velocities(system, at, dep_vel, dep_acc, general)
@@ -731,6 +775,7 @@ def _with_quasi_velocities(system: ReducedSystem, at: dict, dep_vel: dict, dep_a
         pose_rates=pose_rates,
         power=None if system.power is None else tidy(system.power.subs(back), variables),
         power_input=None if system.power_input is None else tidy(system.power_input.subs(back), variables),
+        dependent_rates={q: tidy(e.subs(back), variables) for q, e in system.dependent_rates.items()},
     )
 
 
@@ -753,7 +798,7 @@ def unreduced_accelerations(spec: ModelSpec, values: dict, everything: bool = Fa
     dep_vel = dependent_velocities(spec, at={k: v for k, v in values.items() if k in spec.coordinates})
     dep_vel = {k: v.subs(values) for k, v in dep_vel.items()}
     pt = {**values, **dep_vel}
-    n, m = len(spec.coordinates), len(spec.constraints)
+    n, m = len(spec.coordinates), len(spec.velocity_constraints)
     K = sp.zeros(n + m, n + m)
     K[:n, :n] = M.subs(pt)
     K[:n, n:] = -A.T.subs(pt)

@@ -115,6 +115,8 @@ class Model:
         #: the equations depend on the time explicitly: energy, multipliers, pose rates and powers need ``t``
         self.time_dependent: bool = bool(getattr(mod, "TIME_DEPENDENT", False))
         self.has_power_input: bool = bool(getattr(mod, "HAS_POWER_INPUT", False))
+        #: holonomic constraints whose values :meth:`holonomic_residual` gives
+        self.holonomic_names: tuple = tuple(getattr(mod, "HOLONOMIC_NAMES", ()))
         self.exports: tuple = mod.EXPORTS
         self._positive = tuple(d == "positive" for d in mod.PARAM_DOMAINS)
         self._nonnegative = tuple(d == "nonnegative" for d in mod.PARAM_DOMAINS)
@@ -348,6 +350,19 @@ class Model:
             return 0.0 if y.ndim == 1 else np.zeros(y.shape[1])
         power = self._at(self.module.power_input, y, p, t, "the input power")
         return float(power) if y.ndim == 1 else np.array(power)
+
+    def holonomic_residual(self, y, p, t=None) -> np.ndarray:
+        """Values of the holonomic constraints :attr:`holonomic_names` (zero on the constraint manifold).
+
+        The run integrates their time derivative, so along a run they drift from zero by about the
+        integrator's error; ``y`` of shape (n_state,) gives (n_holonomic,), (n_state, n_times) gives
+        (n_holonomic, n_times).
+        """
+        if not self.holonomic_names:
+            raise ValueError(f"{self.name} has no holonomic constraints")
+        y, p = self._states(y), self.check_params(p)
+        f = self._at(self.module.holonomic_residual, y, p, t, "the holonomic residual")
+        return f if y.ndim == 1 else np.stack(f, 1)
 
     def dissipated_work(self, t, y, p) -> np.ndarray:
         """Energy removed by the non-conservative forces from ``t[0]`` to each ``t`` (trapezoidal rule on the samples).
