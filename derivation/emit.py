@@ -391,7 +391,8 @@ def module_source(system, fidelity: str, frequencies=None) -> str:
     pose_exprs = [system.pose_rates[q] for q in spec.pose]
     pose_lines, pose_ops = _cse_block(pose_exprs, [f"out[{i}]" for i in range(npose)], allowed | set(spec.pose))
     rhs_src, rhs_ops = _rhs_source(system.state, spec.params, rates, spec.pose, pose_exprs)
-    energy_lines, energy_ops = _cse_block([system.energy], ["energy"], allowed)
+    energy_pose = bool(system.energy.free_symbols & set(spec.pose))  # a potential of a cyclic coordinate
+    energy_lines, energy_ops = _cse_block([system.energy], ["energy"], allowed | set(spec.pose))
     lam = list(system.multipliers)
     lam_lines, lam_ops = _cse_block(lam, [f"out[{i}]" for i in range(len(lam))], allowed)
     labels = ", ".join(spec.multiplier_labels)
@@ -459,7 +460,7 @@ import math
 import numpy as np
 from numba import njit
 
-{meta}{_time_metadata(system)}
+{meta}{_model_metadata(system)}
 INPUT_HASH = {digest!r}
 SYMPY_VERSION = {sp.__version__!r}
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
@@ -481,8 +482,8 @@ def pose_rates({args}):
 
 @njit(cache=True)
 def energy({args}):
-    """Energy per unit mass ({energy_ops} operations)."""
-{nl.join(unpack_s)}
+    """Energy per unit mass{" at the pose-extended state" if energy_pose else ""} ({energy_ops} operations)."""
+{nl.join(unpack_s + (unpack_pose if energy_pose else []))}
 {nl.join(unpack_p)}
 {nl.join(energy_lines)}
     return energy
@@ -499,9 +500,12 @@ def multipliers({args}):
 ''' + drawing.module_source(system) + extra_src
 
 
-def _time_metadata(system) -> str:
-    """Metadata lines of a model with holonomic constraints or whose equations depend on the time (else none)."""
+def _model_metadata(system) -> str:
+    """Metadata lines of an energy that needs the pose, holonomic constraints, explicit time (none otherwise)."""
     out = ""
+    if system.energy.free_symbols & set(system.spec.pose):
+        out += ("\n#: ``energy`` holds a potential of pose coordinates: it reads the pose-extended state\n"
+                "ENERGY_NEEDS_POSE = True")
     if system.spec.holonomic:
         out += ("\n#: holonomic constraints, whose values ``holonomic_residual`` gives (zero on the manifold)\n"
                 f"HOLONOMIC_NAMES = {tuple(system.spec.holonomic_labels)!r}")

@@ -123,7 +123,10 @@ class ModelSpec:
        non-conservative forces.
     9. ``pose`` (tuple of cyclic coordinates) and ``pose_description``: the
        coordinates integrated by quadrature when a pose is asked for, and
-       what they mean.
+       what they mean.  A potential in a cyclic coordinate (the incline's
+       ``g sin(alpha) x``: a constant force keeps the equations symmetric)
+       is part of ``energy``, which then reads the pose-extended state
+       (``ENERGY_NEEDS_POSE``); such a coordinate must be in ``pose``.
     10. ``units`` ({symbol or name: unit string}) for coordinates,
         parameters and quasi-velocities, ``time_unit`` (default ``"time"``);
         a rate has the unit ``<unit>/<time_unit>``.  Default ``"1"``.
@@ -671,6 +674,9 @@ def derive(spec: ModelSpec) -> ReducedSystem:
     L = spec.lagrangian.subs(at)
     energy = sum(v * sp.diff(L, v) for v in qd) - L
     energy = tidy(energy.subs(dep_vel), variables)
+    dropped = _dropped_potential(spec, at)
+    if dropped != 0:
+        energy = energy + dropped
     power = None
     if spec.dissipative:
         power = -(qd.T * generalized_forces(spec).subs(at))[0]
@@ -701,6 +707,24 @@ def derive(spec: ModelSpec) -> ReducedSystem:
     if spec.quasi_velocities:
         system = _with_quasi_velocities(system, at, dep_vel, dep_acc, general)
     return system
+
+
+def _dropped_potential(spec: ModelSpec, at: dict) -> sp.Expr:
+    """The part of ``energy`` in the cyclic coordinates that their representative values leave out.
+
+    A potential such as ``-g sin(alpha) x`` on an incline keeps the equations symmetric under translation
+    (its force is constant) but not the energy: ``-(L0 - L0 at the representative point)``, ``L0`` the part of
+    the Lagrangian without velocities.  Its coordinates must be in ``pose`` (the energy then reads them from the
+    pose-extended state); else the model is refused rather than given a wrong energy.
+    """
+    L0 = spec.lagrangian.subs({v: 0 for v in spec.velocities})
+    dropped = sp.expand(L0.subs(at) - L0)
+    missing = sorted(map(str, dropped.free_symbols & (set(spec.cyclic) - set(spec.pose))))
+    if missing:
+        raise ModelSpecError(spec.error_message(
+            f"the energy holds the potential {dropped} of the cyclic coordinates {missing}, which the closed state "
+            f"does not keep; add them to `pose` (the energy then reads them from the pose-extended state)"))
+    return dropped
 
 
 def _power_input(spec: ModelSpec, L: sp.Expr, b: sp.Matrix, multipliers: sp.Matrix, dep_vel: dict, variables):

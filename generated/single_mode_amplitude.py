@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:beddd22e0ef42cd45fc33bf1da933e29d5a4e4bb98603e583f3f66d710691ce8
+SymPy 1.14.0; input hash sha256:ebdd7c72f17eabb302b3501b0b7617bf00425d5325d2f1fd201ccf062104adb4
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -67,7 +67,7 @@ HAS_DISSIPATION = False
 EXPORTS = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy',)
-INPUT_HASH = 'beddd22e0ef42cd45fc33bf1da933e29d5a4e4bb98603e583f3f66d710691ce8'
+INPUT_HASH = 'ebdd7c72f17eabb302b3501b0b7617bf00425d5325d2f1fd201ccf062104adb4'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 10, 'constants': 6, 'rhs_q': 4, 'energy': 9, 'invariants': 9, 'frequencies': 5, 'growth_rates': 2, 'drive_rates': 5}

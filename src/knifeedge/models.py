@@ -279,7 +279,11 @@ class Model:
         ``t`` (a time, or one per state): needed when the model is :attr:`time_dependent`, whose energy is
         not conserved but changes at the rate ``power_input - power_dissipated``.
         """
-        y, p = self._states(y), self.check_params(p)
+        needs_pose = bool(getattr(self.module, "ENERGY_NEEDS_POSE", False))
+        if needs_pose and not self.pose:
+            raise ValueError(f"the energy of {self.name} holds a potential of the pose coordinates "
+                             f"{self.pose_names}: load the model with `pose=True` and pass the pose-extended state")
+        y, p = self._states(y, pose=needs_pose), self.check_params(p)
         e = self._at(self.module.energy, y, p, t, "the energy")
         return float(e) if y.ndim == 1 else np.array(e)
 
