@@ -82,6 +82,15 @@ def initial_state(n0=(0.0, 0.0, 1.0), omega0=(0.0, 0.0, 0.0), pose=None):
 '''
 
 
+def regenerate_hint(body) -> str:
+    """How to regenerate a body's modules: ``make derive`` for the package's, ``knifeedge derive`` for a user's."""
+    source = body.source or ""
+    if source.startswith(("knifeedge.derive.", "derivation.")):
+        return "Run ``make derive`` to regenerate."
+    stem = source[len("knifeedge_user_spec_"):] + ".py" if source.startswith("knifeedge_user_spec_") else "FILE.py"
+    return f"Run ``knifeedge derive {stem} --out DIR`` to regenerate."
+
+
 def module_source(system: rigid.RollingSystem, fidelity: str) -> str:
     """Source of the generated module of a derived rigid body."""
     if fidelity != "full":  # small-tilt fidelities (derivation/rigid_small.py)
@@ -139,7 +148,7 @@ def power_dissipated(s, p):
         ops["power_dissipated"] = power_ops
     return f'''"""{spec.name}, fidelity {fidelity}: rigid body rolling without slipping, nothing dropped.
 
-GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
+GENERATED FILE -- DO NOT EDIT BY HAND.  {regenerate_hint(body)}
 Produced by derivation/rigid_emit.py (make derive) from the rigid body {spec.name!r}
 through derivation/rigid.py (Lagrange-d'Alembert in body quasi-velocities).
 SymPy {sp.__version__}; input hash sha256:{digest}

@@ -15,7 +15,7 @@ from pathlib import Path
 
 import sympy as sp
 
-from . import emit, rigid, rigid_small
+from . import emit, rigid, rigid_emit, rigid_small
 from .emit import _cse_block, _rhs_source, _unpack
 from .rigid_emit import VERTICAL_CHECK
 
@@ -196,7 +196,7 @@ def multipliers(s, p):
     preset_doc = "\n".join(f"    {k}: {body.preset_sources.get(k, '')}" for k in sorted(presets))
     return f'''"""{spec.name}, fidelity {fidelity}: {_DOC[fidelity]}.
 
-GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
+GENERATED FILE -- DO NOT EDIT BY HAND.  {rigid_emit.regenerate_hint(body)}
 Produced by derivation/rigid_small_emit.py (make derive) from the rigid body {spec.name!r}
 through derivation/rigid.py and derivation/rigid_small.py.
 SymPy {sp.__version__}; input hash sha256:{digest}

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/rigid_emit.py (make derive) from the rigid body 'two_mode_rigid'
 through derivation/rigid.py (Lagrange-d'Alembert in body quasi-velocities).
-SymPy 1.14.0; input hash sha256:7ecf6bfbdedfc0ccd7743e9601173125b05ec96a9fb1ab6d7b224e64cab4f5c6
+SymPy 1.14.0; input hash sha256:3f6d0623c54c36f012eee66d5a4638cfd29ce37f679595ef876e68cefd443f6c
 
 Chiral knife edge of the paper's section III as the real rigid body: massless inverted-U bar of half-length L, masses M/2 a distance ell below its ends, contact at the lowest point of a circle of radius D in a vertical plane at the chiral angle alpha to the bar; per unit mass, exact in the tilts.
 
@@ -72,7 +72,7 @@ PRESETS = {}
 PRESET_SOURCES = {}
 #: the model file the body comes from
 SOURCE = 'knifeedge.derive.rigid_knife_edge'
-INPUT_HASH = '7ecf6bfbdedfc0ccd7743e9601173125b05ec96a9fb1ab6d7b224e64cab4f5c6'
+INPUT_HASH = '3f6d0623c54c36f012eee66d5a4638cfd29ce37f679595ef876e68cefd443f6c'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 253, 'constants': 25, 'rhs_q': 221, 'rhs_pose': 293, 'rhs_pose_q': 261, 'pose_rates': 73, 'energy': 56, 'multipliers': 267}

@@ -34,6 +34,9 @@ def test_sections_on_time_constraints_and_rigid_bodies_run(tmp_path, monkeypatch
     assert len(commands) == 3
     for line in commands:
         assert main(shlex.split(line)[1:]) == 0, line
+    for name in ("rigid_disk", "driven_sleigh"):  # a user's module names the user's command, not make derive
+        header = (tmp_path / "my_models" / f"{name}_full.py").read_text().split("\n")[2]
+        assert "knifeedge derive" in header and "make derive" not in header, header
     namespace: dict = {}
     for code in _blocks("python example"):
         out = io.StringIO()
