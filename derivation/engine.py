@@ -319,6 +319,13 @@ def _contract_problems(spec: ModelSpec) -> list:
     if clash:
         problems.append(f"the names {clash} are used by more than one coordinate, velocity or parameter")
     problems += names.problems(names_)
+    texts = {"description": spec.description, "pose_description": spec.pose_description,
+             **{f"label {x!r}": x for x in (*spec.constraint_labels, *spec.holonomic_labels)},
+             **{f"unit of {k}": u for k, u in spec.units.items()}}
+    bad = sorted(k for k, x in texts.items() if isinstance(x, str) and ('"""' in x or "\\" in x))
+    if bad:
+        problems.append(f"the texts {bad} hold triple quotes or a backslash, which the generated module's "
+                        f"documentation cannot show; remove them")
     declared = set(spec.coordinates) | set(spec.velocities) | set(spec.params) | {t}
 
     def undeclared(e, what, allowed=declared):

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/sleigh.py (model 'chaplygin_sleigh',
 constraints knife_edge) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:0b80546a31074ad5e0700863bfce6c3830c0c2862ebfc2cc0c844bac104812ce
+SymPy 1.14.0; input hash sha256:a2f386b6dc2348689bf2b1c358379e4c792dcc9dd34938fe3700d3b1f4f9116f
 
 Chaplygin sleigh: a rigid body on the plane with a knife edge at its rear contact point (x, y) that forbids sideways motion; heading phi, centre of mass at distance a ahead of the contact, radius of gyration k about the centre of mass; v is the speed along the axis.
 
@@ -59,7 +59,7 @@ MULTIPLIER_NAMES = ('knife_edge',)
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '0b80546a31074ad5e0700863bfce6c3830c0c2862ebfc2cc0c844bac104812ce'
+INPUT_HASH = 'a2f386b6dc2348689bf2b1c358379e4c792dcc9dd34938fe3700d3b1f4f9116f'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 9, 'constants': 5, 'rhs_q': 4, 'rhs_pose': 13, 'rhs_pose_q': 8, 'pose_rates': 4, 'energy': 9, 'multipliers': 6}

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk_damped',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:c63bb8d455cc15ae807fafeb9daa96c1de747bf55b6470239049616f305d7ec8
+SymPy 1.14.0; input hash sha256:1f08488e22cd872b81502336102cc6d82c7125afef11996a55e21fc850994b76
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table, its rotation resisted by a viscous torque -c r^2 omega per unit mass (Rayleigh function c r^2 |omega|^2/2).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = True
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'c63bb8d455cc15ae807fafeb9daa96c1de747bf55b6470239049616f305d7ec8'
+INPUT_HASH = '1f08488e22cd872b81502336102cc6d82c7125afef11996a55e21fc850994b76'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 182, 'constants': 20, 'rhs_q': 178, 'rhs_pose': 186, 'rhs_pose_q': 183, 'pose_rates': 5, 'energy': 45, 'multipliers': 195, 'power_dissipated': 19}

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:4f1eaf1bbc8641499a14afed27231dbcd945325a6a8def335f8969596a2d1b76
+SymPy 1.14.0; input hash sha256:300cfbaa3cebebd512ff6513ce397d055d7bf8cf32d22e2c64837d897d7e57a2
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table: heading q1, lean q2 from the vertical, rotation q3 about the axle, contact point (x, y).
 
@@ -62,7 +62,7 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '4f1eaf1bbc8641499a14afed27231dbcd945325a6a8def335f8969596a2d1b76'
+INPUT_HASH = '300cfbaa3cebebd512ff6513ce397d055d7bf8cf32d22e2c64837d897d7e57a2'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 129, 'constants': 7, 'rhs_q': 125, 'rhs_pose': 134, 'rhs_pose_q': 130, 'pose_rates': 5, 'energy': 45, 'multipliers': 113}

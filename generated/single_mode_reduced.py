@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py and derivation/truncation.py.
-SymPy 1.14.0; input hash sha256:c5ec9d20a072b89ec4dcd4de6eb1711113437b2cad96a7e37d60b1222fe4193d
+SymPy 1.14.0; input hash sha256:49d5b87b02e9d86b8a83d92f6e9a732003576f68dd4935d0a652ddfd1dec345d
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -62,7 +62,7 @@ MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'c5ec9d20a072b89ec4dcd4de6eb1711113437b2cad96a7e37d60b1222fe4193d'
+INPUT_HASH = '49d5b87b02e9d86b8a83d92f6e9a732003576f68dd4935d0a652ddfd1dec345d'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 11, 'constants': 7, 'rhs_q': 7, 'rhs_pose': 17, 'rhs_pose_q': 14, 'pose_rates': 7, 'energy': 23, 'multipliers': 7, 'frequencies': 5}

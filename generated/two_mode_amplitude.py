@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:95d98f42481dc6e16af56a784660b8507e6b3fb4942f926dd5320990b3704f30
+SymPy 1.14.0; input hash sha256:ac36da9553265d6e56770410e1eafc3b45075bc11d98e104452a812b34763c09
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -71,7 +71,7 @@ HAS_DISSIPATION = False
 EXPORTS = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy', 'log_A1_A2')
-INPUT_HASH = '95d98f42481dc6e16af56a784660b8507e6b3fb4942f926dd5320990b3704f30'
+INPUT_HASH = 'ac36da9553265d6e56770410e1eafc3b45075bc11d98e104452a812b34763c09'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 24, 'constants': 14, 'rhs_q': 10, 'energy': 12, 'invariants': 19, 'frequencies': 12, 'growth_rates': 11, 'drive_rates': 12}

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:ed8c093950c07b4025741893167e15acfed19650adc1dcd1c6105e21d2d4c854
+SymPy 1.14.0; input hash sha256:497cd6a4db4a6a4838b1a7ee21099ab282f5d6806688e76d63a83005044c9f4c
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -65,7 +65,7 @@ MULTIPLIER_NAMES = ('Const22', 'Const23')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'ed8c093950c07b4025741893167e15acfed19650adc1dcd1c6105e21d2d4c854'
+INPUT_HASH = '497cd6a4db4a6a4838b1a7ee21099ab282f5d6806688e76d63a83005044c9f4c'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 152, 'constants': 107, 'rhs_q': 65, 'rhs_pose': 166, 'rhs_pose_q': 76, 'pose_rates': 13, 'energy': 58, 'multipliers': 166, 'frequencies': 12}

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py and derivation/truncation.py.
-SymPy 1.14.0; input hash sha256:ca6f48d64d19d7d22db8a51a6a164149a5ff18b1b5d16b30129ae4fe2f4d7dda
+SymPy 1.14.0; input hash sha256:8a58c2a8bcd554c235b80ea8fe57a74ca292214cf8197783ed21e95770c91345
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -65,7 +65,7 @@ MULTIPLIER_NAMES = ('Const22', 'Const23')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'ca6f48d64d19d7d22db8a51a6a164149a5ff18b1b5d16b30129ae4fe2f4d7dda'
+INPUT_HASH = '8a58c2a8bcd554c235b80ea8fe57a74ca292214cf8197783ed21e95770c91345'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 80, 'constants': 52, 'rhs_q': 35, 'rhs_pose': 91, 'rhs_pose_q': 46, 'pose_rates': 13, 'energy': 58, 'multipliers': 56, 'frequencies': 12}

@@ -117,3 +117,10 @@ def test_non_finite_defaults_and_bounds_are_refused(value):
         sleigh("s1", PLAIN, defaults={**spec.defaults, a: value})
     with pytest.raises(ModelSpecError, match="finite positive numbers"):
         sleigh("s1", PLAIN, validity={"full": {spec.state[0]: value}})
+
+
+def test_texts_written_into_the_module_documentation_are_checked():
+    with pytest.raises(ModelSpecError, match="triple quotes or a backslash"):
+        sleigh("s1", PLAIN, description='a """ sleigh')
+    with pytest.raises(ModelSpecError, match="triple quotes or a backslash"):
+        sleigh("s1", PLAIN, constraint_labels=("knife\\edge",))
