@@ -126,3 +126,15 @@ def test_prescribed_turning_rate_is_a_rheonomic_constraint(tmp_path):
     assert np.allclose(m.power_input(v_exact[None, :], p, tt), omega * torque, rtol=1e-12, atol=1e-14)
     energy = 0.5 * v_exact**2 + 0.5 * (K * K + A * A) * omega**2
     assert np.allclose(m.energy(v_exact[None, :], p, tt), energy, rtol=1e-13)
+
+
+def test_a_time_symbol_of_ones_own_is_refused_with_the_fix():
+    """Before: a user's ``t`` declared as a parameter was written ``t = p[3]`` over the integrator's time."""
+    import sympy as sp
+
+    from knifeedge.derive import ModelSpec, ModelSpecError
+
+    x, x_dot, t_own = sp.symbols("x x_dot t", real=True)
+    with pytest.raises(ModelSpecError, match=r"undeclared symbols \['t'\].*the time is `knifeedge.derive.t`"):
+        ModelSpec(name="clock", coordinates=(x,), velocities=(x_dot,), lagrangian=x_dot**2 / 2,
+                  constraints=(), dependent=(), params=(), forces=(sp.sin(t_own),))
