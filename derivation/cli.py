@@ -71,13 +71,14 @@ def load_specs(path: str | Path) -> list:
     finally:
         sys.modules.pop(name, None)
     if not hasattr(module, "MODEL"):
-        raise DeriveError(f"{path} defines no `MODEL` (a knifeedge.derive.ModelSpec or a list of them)")
+        raise DeriveError(f"{path} defines no `MODEL` (a knifeedge.derive.ModelSpec or RigidBody, or a list of them)")
     models = module.MODEL if isinstance(module.MODEL, (list, tuple)) else [module.MODEL]
     from .rigid import RigidBody
 
     bad = [type(m).__name__ for m in models if not isinstance(m, (ModelSpec, RigidBody))]
     if bad or not models:
-        raise DeriveError(f"{path}: `MODEL` must be a ModelSpec or a non-empty list of them, got {bad or 'an empty list'}")
+        raise DeriveError(f"{path}: `MODEL` must be a ModelSpec or RigidBody, or a non-empty list of them, got "
+                          f"{bad or 'an empty list'}")
     names = [m.name for m in models]
     dup = sorted({n for n in names if names.count(n) > 1})
     if dup:

@@ -42,9 +42,10 @@ from pathlib import Path
 import sympy as sp
 
 from . import models, sleigh
+from .names import Own
 
 #: curve parameter of outlines, ``u`` in ``[0, 2 pi)``
-u = sp.Symbol("u", real=True)
+u = Own("u", real=True)  # the emitter's own: written ``u`` in the generated loop
 
 
 @dataclass(frozen=True)

@@ -20,7 +20,7 @@ from sympy.printing.pycode import PythonCodePrinter
 
 from knifeedge.modulecheck import seal
 
-from . import averaging, drawing, engine, models, truncation
+from . import averaging, drawing, engine, models, names, truncation
 from .averaging import AmplitudeSystem
 from .fidelities import FIDELITIES
 
@@ -43,6 +43,10 @@ class _Printer(PythonCodePrinter):
 
     def _print_Rational(self, expr):
         return f"({float(expr.p)!r}/{float(expr.q)!r})"
+
+    def _print_Symbol(self, expr):
+        """The emitter's own symbols as they are; a user's through :func:`.names.identifier`."""
+        return expr.name if isinstance(expr, names.Own) else names.identifier(expr.name)
 
 
 def _code(e: sp.Expr) -> str:
@@ -90,8 +94,8 @@ def input_hash(spec: engine.ModelSpec, fidelity: str) -> str:
     path = spec_file(spec)
     for part in (
         spec.name, fidelity, sp.__version__,
-        sp.srepr(spec.lagrangian), *(sp.srepr(c) for c in spec.constraints),
-        inspect.getsource(engine), inspect.getsource(truncation), inspect.getsource(models),
+        sp.srepr(spec.lagrangian), *(sp.srepr(c) for c in spec.constraints), *(sp.srepr(f) for f in spec.holonomic),
+        inspect.getsource(engine), inspect.getsource(truncation), inspect.getsource(models), inspect.getsource(names),
         Path(__file__).read_text(),
         *((inspect.getsource(averaging),) if fidelity == "amplitude" else ()),
         *(sp.srepr(e) for _, _, e in spec.quasi_velocities),
@@ -110,7 +114,7 @@ def _cse_block(exprs, targets, allowed, indent="    "):
     bad = set().union(*(e.free_symbols for e in exprs)) - set(allowed)
     if bad:
         raise ValueError(f"refusing to emit: undeclared symbols {sorted(map(str, bad))}")
-    subs, reduced_exprs = sp.cse(exprs, symbols=sp.numbered_symbols("_c"), order="canonical")
+    subs, reduced_exprs = sp.cse(exprs, symbols=sp.numbered_symbols("_c", cls=names.Own), order="canonical")
     lines = [f"{indent}{s} = {_code(v)}" for s, v in subs]
     lines += [f"{indent}{t} = {_code(v)}" for t, v in zip(targets, reduced_exprs)]
     ops = sum(sp.count_ops(v) for _, v in subs) + sum(sp.count_ops(v) for v in reduced_exprs)
@@ -137,7 +141,7 @@ def hoist_parameters(exprs, params):
         if e.is_Atom:
             return e
         if e not in memo:
-            memo[e] = sp.Symbol(f"_k{len(memo)}")
+            memo[e] = names.Own(f"_k{len(memo)}")
         return memo[e]
 
     def walk(e):
@@ -157,8 +161,14 @@ def hoist_parameters(exprs, params):
     return [(symbol, e) for e, symbol in memo.items()], new
 
 
-def _unpack(names, array, indent="    "):
-    return [f"{indent}{n} = {array}[{i}]" for i, n in enumerate(names)]
+def _unpack(user_names, array, indent="    ", start=0):
+    """Lines binding names to ``array[start]``, ``array[start + 1]``, ...
+
+    A user's name (a string or a symbol) is written as its :func:`.names.identifier`, an emitter's own
+    symbol (:class:`.names.Own`, e.g. a hoisted constant) as it is.
+    """
+    ident = lambda n: n.name if isinstance(n, names.Own) else names.identifier(str(n))  # noqa: E731
+    return [f"{indent}{ident(n)} = {array}[{start + i}]" for i, n in enumerate(user_names)]
 
 
 def unit(spec: engine.ModelSpec, name: str) -> str:
@@ -227,7 +237,7 @@ def _metadata(spec: engine.ModelSpec, fidelity: str, state: list, units: list, d
         "#: largest |value| of each named state where this fidelity holds (empty: everywhere)",
         f"VALIDITY = {validity!r}",
         f"VALIDITY_DOC = {valid_doc!r}",
-        f"MULTIPLIER_NAMES = {(tuple(spec.constraint_labels) if fidelity != 'amplitude' else ())!r}",
+        f"MULTIPLIER_NAMES = {(tuple(spec.multiplier_labels) if fidelity != 'amplitude' else ())!r}",
         "#: non-conservative forces: the module has ``power_dissipated(s, p)``",
         f"HAS_DISSIPATION = {spec.dissipative and fidelity != 'amplitude'!r}",
         "#: model-specific helpers defined at the end of this module",
@@ -242,9 +252,13 @@ def _state_defaults(spec: engine.ModelSpec, state) -> dict:
     return {str(s): _number(spec.lookup(spec.defaults, s, 0.0)) for s in state}
 
 
-def _state_function(name: str, exprs, state, params, doc: str, scalar: bool = False) -> tuple[str, int]:
-    """A jitted ``name(s, p)`` of state and parameters (an array, or a scalar when ``scalar``)."""
-    allowed = set(state) | set(params)
+def _state_function(name: str, exprs, state, params, doc: str, scalar: bool = False,
+                    args: str = "s, p") -> tuple[str, int]:
+    """A jitted ``name(s, p)`` of state and parameters (an array, or a scalar when ``scalar``).
+
+    ``args="s, p, t"``: also of the time (a model whose equations depend on it).
+    """
+    allowed = set(state) | set(params) | ({names.t} if args.endswith(", t") else set())
     targets = [name] if scalar else [f"out[{i}]" for i in range(len(exprs))]
     lines, ops = _cse_block(list(exprs), targets, allowed)
     nl = "\n"
@@ -253,7 +267,7 @@ def _state_function(name: str, exprs, state, params, doc: str, scalar: bool = Fa
     return f'''
 
 @njit(cache=True)
-def {name}(s, p):
+def {name}({args}):
     """{doc} ({ops} operations)."""{head}
 {nl.join(_unpack([str(x) for x in state], "s"))}
 {nl.join(_unpack([str(q) for q in params], "p"))}
@@ -282,13 +296,12 @@ def _rhs_source(syms_state, syms_par, rates, syms_pose=(), pose_rates=()) -> tup
     nl = "\n"
     state, pose, params = [str(x) for x in syms_state], [str(x) for x in syms_pose], [str(x) for x in syms_par]
     n, npose = len(state), len(pose)
-    allowed = set(syms_state) | set(syms_par)
+    allowed = set(syms_state) | set(syms_par) | {names.t}
     constants, hoisted = hoist_parameters(list(rates) + list(pose_rates), syms_par)
-    k_names = [str(k) for k, _ in constants]
-    q_names = list(params) + k_names
+    q_names = list(params) + [k for k, _ in constants]
     const_lines, const_ops = _cse_block([v for _, v in constants], [f"q[{len(params) + i}]" for i in
                                                                     range(len(constants))], set(syms_par))
-    allowed_q = set(syms_state) | set(syms_par) | {k for k, _ in constants}
+    allowed_q = set(syms_state) | set(syms_par) | {k for k, _ in constants} | {names.t}
     rhs_lines, rhs_ops = _cse_block(list(rates), [f"ds[{i}]" for i in range(n)], allowed)
     q_lines, q_ops = _cse_block(hoisted[:n], [f"ds[{i}]" for i in range(n)], allowed_q)
     out = f'''@njit(cache=True)
@@ -312,7 +325,7 @@ def constants(p):
     """``q``: the parameters, then the {len(constants)} parameter-only subexpressions of the right-hand side ({const_ops} operations)."""
     q = np.empty({len(q_names)})
 {nl.join(_unpack(params, "p"))}
-{nl.join(f"    q[{i}] = {x}" for i, x in enumerate(params))}
+{nl.join(f"    q[{i}] = {names.identifier(x)}" for i, x in enumerate(params))}
 {nl.join(const_lines)}
     return q
 
@@ -331,7 +344,7 @@ def rhs_q_into(t, s, q, ds):
     rhsp_lines, rhsp_ops = _cse_block(list(rates) + list(pose_rates), [f"ds[{i}]" for i in range(n + npose)],
                                       allowed_pose)
     qp_lines, qp_ops = _cse_block(hoisted, [f"ds[{i}]" for i in range(n + npose)], allowed_q | set(syms_pose))
-    unpack_pose = [f"    {x} = s[{n + i}]" for i, x in enumerate(pose)]
+    unpack_pose = _unpack(pose, "s", start=n)
     ops.update(rhs_pose=rhsp_ops, rhs_pose_q=qp_ops)
     return out + f'''
 
@@ -379,14 +392,17 @@ def module_source(system, fidelity: str, frequencies=None) -> str:
     params = [str(p) for p in spec.params]
     n, npose = len(state), len(pose)
     rates = system.state_rhs()
-    allowed = set(system.state) | set(spec.params)
+    timed = system.time_dependent
+    args = "s, p, t" if timed else "s, p"  # the functions besides the right-hand side
+    allowed = set(system.state) | set(spec.params) | ({names.t} if timed else set())
     pose_exprs = [system.pose_rates[q] for q in spec.pose]
     pose_lines, pose_ops = _cse_block(pose_exprs, [f"out[{i}]" for i in range(npose)], allowed | set(spec.pose))
     rhs_src, rhs_ops = _rhs_source(system.state, spec.params, rates, spec.pose, pose_exprs)
-    energy_lines, energy_ops = _cse_block([system.energy], ["energy"], allowed)
+    energy_pose = bool(system.energy.free_symbols & set(spec.pose))  # a potential of a cyclic coordinate
+    energy_lines, energy_ops = _cse_block([system.energy], ["energy"], allowed | set(spec.pose))
     lam = list(system.multipliers)
     lam_lines, lam_ops = _cse_block(lam, [f"out[{i}]" for i in range(len(lam))], allowed)
-    labels = ", ".join(spec.constraint_labels)
+    labels = ", ".join(spec.multiplier_labels)
     digest = input_hash(spec, fidelity)
     fid_doc = FIDELITIES[fidelity].doc
     units = [unit(spec, nm) for nm in state]
@@ -409,12 +425,24 @@ def module_source(system, fidelity: str, frequencies=None) -> str:
         src_, extra_ops["power_dissipated"] = _state_function(
             "power_dissipated", [system.power], system.state, spec.params,
             "Rate at which the non-conservative forces remove energy, -q_dot . Q (>= 0 for pure dissipation)",
-            scalar=True)
+            scalar=True, args=args)
+        extra_src += src_
+    if spec.holonomic:
+        src_, extra_ops["holonomic_residual"] = _state_function(
+            "holonomic_residual", list(spec.holonomic), system.state, spec.params,
+            "Values of the holonomic constraints " + ", ".join(spec.holonomic_labels) + " (zero on the constraint "
+            "manifold; the run integrates their derivative, so they drift)", args=args)
+        extra_src += src_
+    if system.power_input is not None:
+        src_, extra_ops["power_input"] = _state_function(
+            "power_input", [system.power_input], system.state, spec.params,
+            "Rate at which the explicit time and the rheonomic constraints add energy, -dL/dt - lambda . b",
+            scalar=True, args=args)
         extra_src += src_
     extra_src += _extra_source(spec)
     unpack_s = _unpack(state, "s")
     unpack_p = _unpack(params, "p")
-    unpack_pose = [f"    {q} = s[{n + i}]" for i, q in enumerate(pose)]
+    unpack_pose = _unpack(pose, "s", start=n)
     nl = "\n"
     return f'''"""{spec.name}, fidelity {fidelity}: {fid_doc}.
 
@@ -439,7 +467,7 @@ import math
 import numpy as np
 from numba import njit
 
-{meta}
+{meta}{_model_metadata(system)}
 INPUT_HASH = {digest!r}
 SYMPY_VERSION = {sp.__version__!r}
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
@@ -449,7 +477,7 @@ OP_COUNTS = {dict(rhs_ops, pose_rates=pose_ops, energy=energy_ops, multipliers=l
 {rhs_src}
 
 @njit(cache=True)
-def pose_rates(s, p):
+def pose_rates({args}):
     """Return the rates ({", ".join(str(spec.velocity_of(q)) for q in spec.pose)}) of the pose at the pose-extended state ``s`` ({pose_ops} operations)."""
     out = np.empty({npose})
 {nl.join(unpack_s)}
@@ -460,16 +488,16 @@ def pose_rates(s, p):
 
 
 @njit(cache=True)
-def energy(s, p):
-    """Energy per unit mass ({energy_ops} operations)."""
-{nl.join(unpack_s)}
+def energy({args}):
+    """Energy per unit mass{" at the pose-extended state" if energy_pose else ""} ({energy_ops} operations)."""
+{nl.join(unpack_s + (unpack_pose if energy_pose else []))}
 {nl.join(unpack_p)}
 {nl.join(energy_lines)}
     return energy
 
 
 @njit(cache=True)
-def multipliers(s, p):
+def multipliers({args}):
     """Lagrange multipliers (contact forces per unit mass) {labels} ({lam_ops} operations)."""
     out = np.empty({len(lam)})
 {nl.join(unpack_s)}
@@ -477,6 +505,24 @@ def multipliers(s, p):
 {nl.join(lam_lines)}
     return out
 ''' + drawing.module_source(system) + extra_src
+
+
+def _model_metadata(system) -> str:
+    """Metadata lines of an energy that needs the pose, holonomic constraints, explicit time (none otherwise)."""
+    out = ""
+    if system.energy.free_symbols & set(system.spec.pose):
+        out += ("\n#: ``energy`` holds a potential of pose coordinates: it reads the pose-extended state\n"
+                "ENERGY_NEEDS_POSE = True")
+    if system.spec.holonomic:
+        out += ("\n#: holonomic constraints, whose values ``holonomic_residual`` gives (zero on the manifold)\n"
+                f"HOLONOMIC_NAMES = {tuple(system.spec.holonomic_labels)!r}")
+    if not system.time_dependent:
+        return out
+    return out + ("\n#: the equations depend on the time: energy, multipliers, pose_rates, power_dissipated and power_input\n"
+            "#: take it as a third argument ``(s, p, t)``; energy is not conserved:\n"
+            "#: energy(t) = energy(0) + integral of (power_input - power_dissipated)\n"
+            "TIME_DEPENDENT = True\n"
+            f"HAS_POWER_INPUT = {system.power_input is not None!r}")
 
 
 def _coefficient_block(name: str, exprs, params, doc: str) -> tuple[str, int]:

@@ -26,6 +26,8 @@ pose rates at a general pose.
 """
 from __future__ import annotations
 
+import keyword
+import math
 import random
 import re
 import sys
@@ -34,6 +36,9 @@ from dataclasses import dataclass, field
 import mpmath
 
 import sympy as sp
+
+from . import names
+from .names import t
 
 
 #: admissible values of a parameter, as written into the generated modules
@@ -66,8 +71,12 @@ class ModelSpec:
     collected and raised once as :class:`ModelSpecError`, naming the file
     and line where the spec was constructed):
 
-    1. ``name`` (str): a Python identifier; the generated modules are
-       ``<name>_<fidelity>.py``.
+    1. ``name`` (str): an ASCII Python identifier, not a keyword; the
+       generated modules are ``<name>_<fidelity>.py``.  The names of the
+       symbols are data (:mod:`.names`): any printable name without quotes
+       or backslashes works (``q``, ``t``, ``lambda``, ``a b``, ``κ``), the
+       generated code writes a safe identifier for it and reports the name
+       itself; two names equal after Unicode normalization (NFKC) are refused.
     2. ``coordinates``, ``velocities`` (tuples of SymPy symbols): the
        generalized coordinates ``q`` and their time derivatives ``q_dot``
        as plain symbols, one velocity per coordinate, all distinct.
@@ -79,18 +88,34 @@ class ModelSpec:
        ``"real"``), or from ``param_domains`` ({symbol: "positive"|"real"}).
     4. ``lagrangian`` (expression): the unconstrained Lagrangian (any
        consistent normalization, e.g. per unit mass), quadratic in the
-       velocities, not explicitly time-dependent.  Every symbol in it is a
-       coordinate, a velocity or a parameter ("every symbol declared").
-    5. ``constraints`` (tuple of expressions, each equal to zero): linear
-       and homogeneous in the velocities, ``sum_i a_ji(q) q_dot_i = 0``;
-       ``constraint_labels`` name them (default ``c1, c2, ...``).
-    6. ``dependent`` (tuple of coordinates): one per constraint, whose
-       velocities the constraints determine (the block of the constraint
-       matrix on them must be invertible).
+       velocities.  Every symbol in it is a coordinate, a velocity, a
+       parameter or the time ``knifeedge.derive.t`` ("every symbol
+       declared").  The time may appear in the Lagrangian, the constraints,
+       the forces and the dissipation: the generated right-hand side then
+       reads the integrator's time, and ``energy``, ``multipliers``,
+       ``pose_rates`` and the powers take it as a third argument
+       (``TIME_DEPENDENT`` in the module); such a model has no small-angle
+       fidelities.
+    5. ``constraints`` (tuple of expressions, each equal to zero): affine
+       in the velocities, ``sum_i a_ji(q, t) q_dot_i + b_j(q, t) = 0``
+       (``b`` and a time in ``a`` make them rheonomic: a prescribed motion
+       is one); ``constraint_labels`` name them (default ``c1, c2, ...``).
+    6. ``dependent`` (tuple of coordinates): one per constraint and then
+       one per holonomic constraint, whose velocities the constraints
+       determine (the block of the constraint matrix on them must be
+       invertible, at the representative point and along a run).
+       ``holonomic`` (tuple of expressions ``f(q, t)``, each equal to zero;
+       ``holonomic_labels``, default ``h1, h2, ...``): position constraints,
+       entered as their time derivatives ``df/dq q_dot + df/dt = 0`` with a
+       multiplier each (named after ``constraint_labels``); their coordinates
+       must not be cyclic.  The module's ``holonomic_residual(s, p)`` gives
+       ``f`` along a run: the positions are not projected back onto
+       ``f = 0``, they drift by about the integrator's error.
     7. ``cyclic`` ({coordinate: value}): coordinates the reduced dynamics
        does not depend on (the symmetry), with the representative value at
-       which the equations are evaluated.  Every dependent coordinate must
-       be cyclic.  :func:`check_symmetry` confirms the symmetry at a random
+       which the equations are evaluated.  A dependent coordinate that is
+       not cyclic stays in the closed state (after the tilts; its rate from
+       the constraints).  :func:`check_symmetry` confirms the symmetry at a random
        general pose after the derivation (``knifeedge derive`` runs it).
     8. ``small`` (tuple of non-cyclic independent coordinates): the tilts,
        scaled as small by the ``reduced`` fidelity; a model with tilts also
@@ -98,7 +123,10 @@ class ModelSpec:
        non-conservative forces.
     9. ``pose`` (tuple of cyclic coordinates) and ``pose_description``: the
        coordinates integrated by quadrature when a pose is asked for, and
-       what they mean.
+       what they mean.  A potential in a cyclic coordinate (the incline's
+       ``g sin(alpha) x``: a constant force keeps the equations symmetric)
+       is part of ``energy``, which then reads the pose-extended state
+       (``ENERGY_NEEDS_POSE``); such a coordinate must be in ``pose``.
     10. ``units`` ({symbol or name: unit string}) for coordinates,
         parameters and quasi-velocities, ``time_unit`` (default ``"time"``);
         a rate has the unit ``<unit>/<time_unit>``.  Default ``"1"``.
@@ -114,7 +142,11 @@ class ModelSpec:
     14. ``dissipation`` (Rayleigh function ``R(q, q_dot) >= 0``, generalized
         force ``-dR/dq_dot``) and ``forces`` (one generalized force per
         coordinate): non-conservative forces.  The generated module then
-        gives ``power_dissipated(s, p)``, the rate of loss of ``energy``.
+        gives ``power_dissipated(s, p)``, the rate of loss of ``energy``
+        (a driving force, e.g. a torque ``tau0 sin t``, makes it negative).
+        A Lagrangian with the time or rheonomic constraints give
+        ``power_input(s, p, t) = -dL/dt - lambda . b``, the rate of gain:
+        ``energy(t) = energy(t0) + integral (power_input - power_dissipated)``.
     15. ``quasi_velocities``: ``(symbol, replaced_velocity, expression)``
         triples (see the module docstring of :mod:`.engine`); ``state_order``
         an optional permutation of the closed state.
@@ -134,6 +166,8 @@ class ModelSpec:
     params: tuple
     accelerations: tuple = ()
     constraint_labels: tuple = ()
+    holonomic: tuple = ()
+    holonomic_labels: tuple = ()
     cyclic: dict = field(default_factory=dict)
     small: tuple = ()
     pose: tuple = ()
@@ -162,7 +196,7 @@ class ModelSpec:
         set_("defined_at", _caller_location())
         kinds = []
         for k in ("coordinates", "velocities", "constraints", "dependent", "params", "accelerations",
-                  "constraint_labels", "small", "pose", "reversal_events", "forces", "quasi_velocities",
+                  "constraint_labels", "holonomic", "holonomic_labels", "small", "pose", "reversal_events", "forces", "quasi_velocities",
                   "state_order", "exports"):
             v = getattr(self, k)
             if isinstance(v, (list, sp.Matrix)):
@@ -179,6 +213,8 @@ class ModelSpec:
             set_("accelerations", tuple(sp.Symbol(f"{q}_ddot", real=True) for q in self.coordinates))
         if not self.constraint_labels:
             set_("constraint_labels", tuple(f"c{i + 1}" for i in range(len(self.constraints))))
+        if not self.holonomic_labels:
+            set_("holonomic_labels", tuple(f"h{i + 1}" for i in range(len(self.holonomic))))
         problems = _contract_problems(self)
         if problems:
             raise ModelSpecError(self.error_message(problems))
@@ -191,6 +227,23 @@ class ModelSpec:
                  f"{len(problems)} problem{'s' if len(problems) > 1 else ''}"]
         lines += [f"  {i + 1}. {p}" for i, p in enumerate(problems)]
         return "\n".join(lines)
+
+    @property
+    def velocity_constraints(self) -> tuple:
+        """``constraints``, then each holonomic constraint differentiated: ``df/dq q_dot + df/dt``."""
+        return tuple(self.constraints) + tuple(
+            sum((sp.diff(f, q) * v for q, v in zip(self.coordinates, self.velocities)), sp.diff(f, t))
+            for f in self.holonomic)
+
+    @property
+    def multiplier_labels(self) -> tuple:
+        """Labels of the multipliers: ``constraint_labels``, then ``holonomic_labels``."""
+        return tuple(self.constraint_labels) + tuple(self.holonomic_labels)
+
+    @property
+    def kept(self) -> tuple:
+        """Dependent coordinates that are not cyclic: they stay in the closed state, their rates from the constraints."""
+        return tuple(q for q in self.dependent if q not in self.cyclic)
 
     @property
     def independent(self) -> tuple:
@@ -207,7 +260,7 @@ class ModelSpec:
         """Small coordinates, their rates, rates of cyclic independents (before quasi-velocities)."""
         tilts = tuple(q for q in self.independent if q not in self.cyclic)
         spins = tuple(q for q in self.independent if q in self.cyclic)
-        return tilts + tuple(self.velocity_of(q) for q in tilts) + tuple(
+        return tilts + self.kept + tuple(self.velocity_of(q) for q in tilts) + tuple(
             self.velocity_of(q) for q in spins
         )
 
@@ -255,8 +308,10 @@ def _symbols_ok(values, what: str, problems: list) -> bool:
 def _contract_problems(spec: ModelSpec) -> list:
     """Every violation of the :class:`ModelSpec` contract, as sentences."""
     problems: list = []
-    if not isinstance(spec.name, str) or not spec.name.isidentifier():
-        problems.append(f"`name` must be a Python identifier (it names the generated modules), got {spec.name!r}")
+    if not isinstance(spec.name, str) or not spec.name.isidentifier() or not spec.name.isascii() \
+            or keyword.iskeyword(spec.name):
+        problems.append(f"`name` must be an ASCII Python identifier and not a keyword (it names the generated "
+                        f"modules and their compiled code), got {spec.name!r}")
     ok = _symbols_ok(spec.coordinates, "coordinates", problems)
     ok &= _symbols_ok(spec.velocities, "velocities", problems)
     ok &= _symbols_ok(spec.params, "params", problems)
@@ -268,12 +323,19 @@ def _contract_problems(spec: ModelSpec) -> list:
         problems.append(f"`velocities` and `accelerations` need one entry per coordinate ({n}); got "
                         f"{len(spec.velocities)} and {len(spec.accelerations)}")
         return problems
-    names = [str(s) for s in spec.coordinates + spec.velocities + spec.params + tuple(u for u, _, _ in spec.quasi_velocities)]
-    clash = sorted({x for x in names if names.count(x) > 1})
+    names_ = [str(s) for s in spec.coordinates + spec.velocities + spec.params + tuple(u for u, _, _ in spec.quasi_velocities)]
+    clash = sorted({x for x in names_ if names_.count(x) > 1})
     if clash:
         problems.append(f"the names {clash} are used by more than one coordinate, velocity or parameter")
-    declared = set(spec.coordinates) | set(spec.velocities) | set(spec.params)
-    t_symbols = {s for s in declared if str(s) == "t"}
+    problems += names.problems(names_)
+    texts = {"description": spec.description, "pose_description": spec.pose_description,
+             **{f"label {x!r}": x for x in (*spec.constraint_labels, *spec.holonomic_labels)},
+             **{f"unit of {k}": u for k, u in spec.units.items()}}
+    bad = sorted(k for k, x in texts.items() if isinstance(x, str) and ('"""' in x or "\\" in x))
+    if bad:
+        problems.append(f"the texts {bad} hold triple quotes or a backslash, which the generated module's "
+                        f"documentation cannot show; remove them")
+    declared = set(spec.coordinates) | set(spec.velocities) | set(spec.params) | {t}
 
     def undeclared(e, what, allowed=declared):
         if not isinstance(e, sp.Basic):
@@ -281,8 +343,11 @@ def _contract_problems(spec: ModelSpec) -> list:
             return True
         extra = e.free_symbols - allowed
         if extra:
+            hint = ("; the time is `knifeedge.derive.t`" if "t" in map(str, extra) and t in allowed
+                    else "; only the right-hand side, the forces, the Lagrangian and the constraints may depend on "
+                         "the time" if t in e.free_symbols else "")
             problems.append(f"{what} contains undeclared symbols {sorted(map(str, extra))} "
-                            f"(declare them as coordinates, velocities or params)")
+                            f"(declare them as coordinates, velocities or params{hint})")
             return True
         if e.atoms(sp.Derivative) or any(isinstance(f, sp.core.function.AppliedUndef) for f in e.atoms(sp.Function)):
             problems.append(f"{what} contains functions of time or derivatives; use plain symbols for q and q_dot")
@@ -300,15 +365,31 @@ def _contract_problems(spec: ModelSpec) -> list:
         if undeclared(c, f"constraint {label!r}"):
             continue
         lin = sp.Matrix([c]).jacobian(qd)
-        if sp.expand(c - (lin * qd)[0]) != 0 or any(e.free_symbols & set(spec.velocities) for e in lin):
-            problems.append(f"constraint {label!r} must be linear and homogeneous in the velocities: {c}")
+        if sp.expand(c - (lin * qd)[0]).free_symbols & set(spec.velocities) or any(
+                e.free_symbols & set(spec.velocities) for e in lin):
+            problems.append(f"constraint {label!r} must be affine in the velocities, a(q, t) q_dot + b(q, t) = 0; "
+                            f"got {c}")
     if len(spec.constraint_labels) != len(spec.constraints):
         problems.append(f"`constraint_labels` needs one label per constraint ({len(spec.constraints)})")
+    for j, f in enumerate(spec.holonomic):
+        label = spec.holonomic_labels[j] if j < len(spec.holonomic_labels) else f"h{j + 1}"
+        if undeclared(f, f"holonomic constraint {label!r}"):
+            continue
+        if f.free_symbols & set(spec.velocities):
+            problems.append(f"holonomic constraint {label!r} must be a function f(q, t) of the coordinates (and the "
+                            f"time) equal to zero; it holds velocities: write it in `constraints` instead")
+        elif f.free_symbols & set(spec.cyclic):
+            problems.append(f"holonomic constraint {label!r} holds the cyclic coordinates "
+                            f"{sorted(map(str, f.free_symbols & set(spec.cyclic)))}, which the closed state does not "
+                            f"keep; remove them from `cyclic`")
+    if len(spec.holonomic_labels) != len(spec.holonomic):
+        problems.append(f"`holonomic_labels` needs one label per holonomic constraint ({len(spec.holonomic)})")
     not_coord = [q for q in spec.dependent if q not in spec.coordinates]
     if not_coord:
         problems.append(f"`dependent` entries {not_coord} are not coordinates")
-    elif len(spec.dependent) != len(spec.constraints):
-        problems.append(f"`dependent` must name one coordinate per constraint ({len(spec.constraints)}), "
+    elif len(spec.dependent) != len(spec.constraints) + len(spec.holonomic):
+        problems.append(f"`dependent` must name one coordinate per constraint and holonomic constraint "
+                        f"({len(spec.constraints) + len(spec.holonomic)}), "
                         f"got {len(spec.dependent)}")
     elif not spec.independent:
         problems.append(f"every velocity is constrained ({len(spec.constraints)} constraints on {n} coordinates, "
@@ -320,10 +401,12 @@ def _contract_problems(spec: ModelSpec) -> list:
         bad = [q for q in spec.cyclic if q not in spec.coordinates]
         if bad:
             problems.append(f"`cyclic` entries {bad} are not coordinates")
-        free = [q for q in spec.dependent if q in spec.coordinates and q not in spec.cyclic]
-        if free:
-            problems.append(f"dependent coordinates {free} must be cyclic (the closed state holds no dependent "
-                            f"coordinate); add them to `cyclic`")
+    timed = [what for what, e in (("lagrangian", spec.lagrangian), ("constraints", spec.velocity_constraints),
+                                  ("forces", spec.forces), ("dissipation", spec.dissipation))
+             if any(isinstance(x, sp.Basic) and x.has(t) for x in (e if isinstance(e, tuple) else (e,)))]
+    if timed and spec.small:
+        problems.append(f"the small-angle fidelities (`small`) need equations that do not depend on the time; the "
+                        f"{', '.join(timed)} do: leave `small` empty")
     bad = [q for q in spec.small if q not in spec.coordinates or q in spec.cyclic or q in spec.dependent]
     if bad:
         problems.append(f"`small` entries {bad} must be independent, non-cyclic coordinates")
@@ -376,6 +459,9 @@ def _contract_problems(spec: ModelSpec) -> list:
             except (TypeError, ValueError):
                 problems.append(f"default of {k} must be a number, got {v!r}")
                 continue
+            if not math.isfinite(fv):
+                problems.append(f"default of {k} must be finite, got {v!r}")
+                continue
             if str(k) in p_names and _param_domain(spec, sp.Symbol(str(k))) == "positive" and not fv > 0:
                 problems.append(f"default of {k} must be positive (its domain), got {v!r}")
     for fid, bounds in spec.validity.items():
@@ -385,6 +471,10 @@ def _contract_problems(spec: ModelSpec) -> list:
         bad = sorted(str(k) for k in bounds if str(k) not in state_names)
         if bad:
             problems.append(f"`validity[{fid!r}]` names {bad} that are not closed-state variables")
+        bad = sorted(str(k) for k, v in bounds.items() if not _finite_positive(v))
+        if bad:
+            problems.append(f"`validity[{fid!r}]` bounds of {bad} must be finite positive numbers (leave a state "
+                            f"out for no bound)")
     if spec.dissipation is not None:
         undeclared(spec.dissipation, "the `dissipation` function")
     if spec.forces:
@@ -398,6 +488,13 @@ def _contract_problems(spec: ModelSpec) -> list:
         if spec.extra_source and not re.search(rf"^(def |class )?{re.escape(name)}\b", spec.extra_source, re.M):
             problems.append(f"`exports` entry {name!r} is not defined at the top level of `extra_source`")
     return problems
+
+
+def _finite_positive(v) -> bool:
+    try:
+        return math.isfinite(float(v)) and float(v) > 0
+    except (TypeError, ValueError):
+        return False
 
 
 def _param_domain(spec: ModelSpec, q) -> str:
@@ -434,13 +531,25 @@ class ReducedSystem:
     pose_rates: dict
     #: rate of loss of ``energy`` by the non-conservative forces, ``-q_dot . Q`` (``None`` if conservative)
     power: sp.Expr | None = None
+    #: rate of gain of ``energy`` by the explicit time and the rheonomic constraints (``None`` if neither)
+    power_input: sp.Expr | None = None
+    #: rate of each dependent coordinate kept in the state (``spec.kept``), from the constraints
+    dependent_rates: dict = field(default_factory=dict)
+
+    @property
+    def time_dependent(self) -> bool:
+        """The equations depend on the time explicitly (``knifeedge.derive.t``)."""
+        exprs = [*self.explicit, *self.multipliers, self.energy, *self.pose_rates.values(),
+                 *self.dependent_rates.values(), *self.spec.holonomic,
+                 *([self.power] if self.power is not None else [])]
+        return self.power_input is not None or any(sp.sympify(e).has(t) for e in exprs)
 
     def state_rhs(self) -> list:
         """Right-hand side of ``d(state)/dt`` as a list of expressions, aligned with :attr:`state`."""
         spec = self.spec
         tilts = [q for q in spec.independent if q not in spec.cyclic]
         spins = [q for q in spec.independent if q in spec.cyclic]
-        rates = [spec.velocity_of(q) for q in tilts]
+        rates = [spec.velocity_of(q) for q in tilts] + [self.dependent_rates[q] for q in spec.kept]
         # ``explicit`` follows the order of ``spec.independent``, which may interleave tilts and spins
         natural = rates + [self.explicit[spec.independent.index(q)] for q in tilts + spins]
         by_name = dict(zip(map(str, spec.natural_state), natural))
@@ -454,11 +563,24 @@ def _lagrange_terms(spec: ModelSpec):
     p_mom = sp.Matrix([sp.diff(L, v) for v in qd])
     M = p_mom.jacobian(qd)
     h = p_mom.jacobian(q) * qd - sp.Matrix([sp.diff(L, c) for c in q])
+    if L.has(t):  # d/dt of the momenta holds their explicit time derivative
+        h += p_mom.diff(t)
     h -= generalized_forces(spec)
-    cons = sp.Matrix(spec.constraints)
+    cons = sp.Matrix(spec.velocity_constraints)
     A = cons.jacobian(qd)
     c = (A * qd).jacobian(q) * qd  # d/dt(A) q_dot
+    b = affine_terms(spec)
+    if b.has(t) or A.has(t) or any(e != 0 for e in b):  # rheonomic: + d(b)/dq q_dot + d(A q_dot + b)/dt
+        c += b.jacobian(q) * qd + (A * qd + b).diff(t)
     return M, h, A, c
+
+
+def affine_terms(spec: ModelSpec) -> sp.Matrix:
+    """``b(q, t)`` of the constraints ``A(q, t) q_dot + b(q, t) = 0`` (zero for homogeneous constraints)."""
+    cons = sp.Matrix(spec.velocity_constraints)
+    if not cons:
+        return sp.zeros(0, 1)
+    return (cons - cons.jacobian(sp.Matrix(spec.velocities)) * sp.Matrix(spec.velocities)).applyfunc(sp.expand)
 
 
 def generalized_forces(spec: ModelSpec) -> sp.Matrix:
@@ -479,12 +601,15 @@ def _split(spec: ModelSpec, A: sp.Matrix):
 
 def dependent_velocities(spec: ModelSpec, at: dict | None = None) -> dict:
     """Solve the constraints for the dependent velocities (at ``at`` if given)."""
-    A = sp.Matrix(spec.constraints).jacobian(sp.Matrix(spec.velocities))
+    A = sp.Matrix(spec.velocity_constraints).jacobian(sp.Matrix(spec.velocities))
+    b = affine_terms(spec)
     if at:
-        A = A.subs(at)
+        A, b = A.subs(at), b.subs(at)
     dep, ind, A_dep, A_ind = _split(spec, A)
     qd_ind = sp.Matrix([spec.velocities[i] for i in ind])
     sol = -A_dep.inv() * A_ind * qd_ind
+    if any(e != 0 for e in b):
+        sol -= A_dep.inv() * b
     sol = sol.applyfunc(lambda e: sp.factor(sp.trigsimp(sp.expand(e))))
     return {spec.velocities[i]: sol[k] for k, i in enumerate(dep)}
 
@@ -530,7 +655,9 @@ def derive(spec: ModelSpec) -> ReducedSystem:
 
     qd_ind = sp.Matrix([spec.velocities[i] for i in ind])
     qdd_ind = sp.Matrix([spec.accelerations[i] for i in ind])
-    dep_vel = dict(zip((spec.velocities[i] for i in dep), sp.expand(-A_dep_inv * A_ind * qd_ind)))
+    b = affine_terms(spec).subs(at)
+    dep_vel = dict(zip((spec.velocities[i] for i in dep), sp.expand(
+        -A_dep_inv * A_ind * qd_ind if all(e == 0 for e in b) else -A_dep_inv * (A_ind * qd_ind + b))))
     # dependent accelerations from the differentiated constraints
     dep_acc = dict(
         zip((spec.accelerations[i] for i in dep), sp.expand(-A_dep_inv * (A_ind * qdd_ind + c)))
@@ -567,10 +694,14 @@ def derive(spec: ModelSpec) -> ReducedSystem:
     L = spec.lagrangian.subs(at)
     energy = sum(v * sp.diff(L, v) for v in qd) - L
     energy = tidy(energy.subs(dep_vel), variables)
+    dropped = _dropped_potential(spec, at)
+    if dropped != 0:
+        energy = energy + dropped
     power = None
     if spec.dissipative:
         power = -(qd.T * generalized_forces(spec).subs(at))[0]
         power = tidy(sp.expand(power.subs(dep_vel)), variables)
+    power_input = _power_input(spec, L, b, multipliers, dep_vel, variables)
 
     # pose rates at a general pose
     general = dependent_velocities(spec)
@@ -590,10 +721,43 @@ def derive(spec: ModelSpec) -> ReducedSystem:
         energy=energy,
         pose_rates=pose_rates,
         power=power,
+        power_input=power_input,
+        dependent_rates={q: tidy(dep_vel[spec.velocity_of(q)], variables) for q in spec.kept},
     )
     if spec.quasi_velocities:
         system = _with_quasi_velocities(system, at, dep_vel, dep_acc, general)
     return system
+
+
+def _dropped_potential(spec: ModelSpec, at: dict) -> sp.Expr:
+    """The part of ``energy`` in the cyclic coordinates that their representative values leave out.
+
+    A potential such as ``-g sin(alpha) x`` on an incline keeps the equations symmetric under translation
+    (its force is constant) but not the energy: ``-(L0 - L0 at the representative point)``, ``L0`` the part of
+    the Lagrangian without velocities.  Its coordinates must be in ``pose`` (the energy then reads them from the
+    pose-extended state); else the model is refused rather than given a wrong energy.
+    """
+    L0 = spec.lagrangian.subs({v: 0 for v in spec.velocities})
+    dropped = sp.expand(L0.subs(at) - L0)
+    missing = sorted(map(str, dropped.free_symbols & (set(spec.cyclic) - set(spec.pose))))
+    if missing:
+        raise ModelSpecError(spec.error_message(
+            f"the energy holds the potential {dropped} of the cyclic coordinates {missing}, which the closed state "
+            f"does not keep; add them to `pose` (the energy then reads them from the pose-extended state)"))
+    return dropped
+
+
+def _power_input(spec: ModelSpec, L: sp.Expr, b: sp.Matrix, multipliers: sp.Matrix, dep_vel: dict, variables):
+    """Rate of gain of ``energy`` by the explicit time: ``-dL/dt - lambda . b`` (``None`` if scleronomic).
+
+    With ``M q_ddot + h = A^T lambda`` and ``A q_dot + b = 0``, the Jacobi integral
+    ``E = q_dot . dL/dq_dot - L`` changes at the rate ``-dL/dt + q_dot . Q + lambda . A q_dot``,
+    that is ``power_input - power_dissipated`` (Goldstein, *Classical Mechanics*, section 8.2).
+    """
+    if not (L.has(t) or any(e != 0 for e in b)):
+        return None
+    power = -sp.diff(L, t) - sum((lam * e for lam, e in zip(multipliers, b)), sp.S.Zero)
+    return tidy(sp.expand(sp.sympify(power).subs(dep_vel)), variables)
 
 
 def _quasi_rates(spec: ModelSpec, at: dict, dep_vel: dict, dep_acc: dict, acc_sub: dict) -> dict:
@@ -654,6 +818,8 @@ def _with_quasi_velocities(system: ReducedSystem, at: dict, dep_vel: dict, dep_a
         energy=tidy(system.energy.subs(back), variables),
         pose_rates=pose_rates,
         power=None if system.power is None else tidy(system.power.subs(back), variables),
+        power_input=None if system.power_input is None else tidy(system.power_input.subs(back), variables),
+        dependent_rates={q: tidy(e.subs(back), variables) for q, e in system.dependent_rates.items()},
     )
 
 
@@ -676,7 +842,7 @@ def unreduced_accelerations(spec: ModelSpec, values: dict, everything: bool = Fa
     dep_vel = dependent_velocities(spec, at={k: v for k, v in values.items() if k in spec.coordinates})
     dep_vel = {k: v.subs(values) for k, v in dep_vel.items()}
     pt = {**values, **dep_vel}
-    n, m = len(spec.coordinates), len(spec.constraints)
+    n, m = len(spec.coordinates), len(spec.velocity_constraints)
     K = sp.zeros(n + m, n + m)
     K[:n, :n] = M.subs(pt)
     K[:n, n:] = -A.T.subs(pt)
@@ -702,6 +868,7 @@ def check_symmetry(system: ReducedSystem, seed: int = 0, tol: float = 1e-20) -> 
     rng = random.Random(seed)
     pt = _random_point(spec.coordinates + tuple(spec.velocity_of(q) for q in spec.independent), rng)
     pt.update({s: sp.Rational(rng.randint(300, 1500), 1000) for s in spec.params})
+    pt[t] = sp.Rational(37, 100)
     if spec.quasi_velocities:
         acc, lam, pt = _quasi_point(spec, pt)
     else:

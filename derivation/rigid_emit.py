@@ -173,7 +173,7 @@ def power_dissipated(s, p):
     par_doc = "\n".join(f"    p[{i}] = {nm:<12} [{units.get(nm, '?')}] {domains[nm]}" for i, nm in enumerate(params))
     preset_doc = "\n".join(f"    {k}: {body.preset_sources.get(k, '')}" for k in sorted(body.presets))
     unpack_s, unpack_p = _unpack(state, "s"), _unpack(params, "p")
-    unpack_pose = [f"    {q} = s[{n + i}]" for i, q in enumerate(pose)]
+    unpack_pose = _unpack(pose, "s", start=n)
     model_file = body.source
     nl = "\n"
     ops = dict(rhs_ops, pose_rates=pose_ops, energy=energy_ops, multipliers=lam_ops)

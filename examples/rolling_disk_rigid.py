@@ -25,3 +25,5 @@ BODY = RigidBody(
     heading_axis=(0, 1, 0),
     source=__name__,
 )
+
+MODEL = BODY  # what `knifeedge derive` reads: a RigidBody is a model too

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/sleigh.py (model 'chaplygin_sleigh',
 constraints knife_edge) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:5ecbd7310dd683bd7a0afba7a0efbcf29a8e6bc236fce7890f14f9803e63f091
+SymPy 1.14.0; input hash sha256:ea57f398f9250fbe73e828cfa5116f09fea042c53b72b681b6f0dbb17ec0a7fc
 
 Chaplygin sleigh: a rigid body on the plane with a knife edge at its rear contact point (x, y) that forbids sideways motion; heading phi, centre of mass at distance a ahead of the contact, radius of gyration k about the centre of mass; v is the speed along the axis.
 
@@ -59,7 +59,7 @@ MULTIPLIER_NAMES = ('knife_edge',)
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '5ecbd7310dd683bd7a0afba7a0efbcf29a8e6bc236fce7890f14f9803e63f091'
+INPUT_HASH = 'ea57f398f9250fbe73e828cfa5116f09fea042c53b72b681b6f0dbb17ec0a7fc'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 9, 'constants': 5, 'rhs_q': 4, 'rhs_pose': 13, 'rhs_pose_q': 8, 'pose_rates': 4, 'energy': 9, 'multipliers': 6}
@@ -261,4 +261,4 @@ def body_outlines(s, p, uu):
         out[0, j, 2] = ((1.0/3.0))*k
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'c8a6c507dc8ab203ef480bfde1524f19d38e4e9d7a60094ffeffb5885bace359'
+MODULE_SHA256 = 'da05f63a73d6879a452c3191ccd554bf48887750907c6a81cc8d2885150f6bf3'

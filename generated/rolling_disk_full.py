@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:7a2d5416bf7451608807223a0f13ef1fcc5811dfb152d3eadd232b7e23950512
+SymPy 1.14.0; input hash sha256:e9363c365622d82f72aad8051fe6a0e9d37db3b9964fa619a70a6da24566aa16
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table: heading q1, lean q2 from the vertical, rotation q3 about the axle, contact point (x, y).
 
@@ -62,7 +62,7 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '7a2d5416bf7451608807223a0f13ef1fcc5811dfb152d3eadd232b7e23950512'
+INPUT_HASH = 'e9363c365622d82f72aad8051fe6a0e9d37db3b9964fa619a70a6da24566aa16'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 129, 'constants': 7, 'rhs_q': 125, 'rhs_pose': 134, 'rhs_pose_q': 130, 'pose_rates': 5, 'energy': 45, 'multipliers': 113}
@@ -505,4 +505,4 @@ def body_outlines(s, p, uu):
         out[0, j, 2] = _c5*_c7 + _c7
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'eddd3e5eea174b2a7f74b8418ae65c3b210dfe84631a63f21949871969ec4845'
+MODULE_SHA256 = '0eab60d88d48e0bfe7c337fea35f26acdf7f9d1f8353be562e8c375e990b0f0e'

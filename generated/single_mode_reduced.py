@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py and derivation/truncation.py.
-SymPy 1.14.0; input hash sha256:b2db4301368bc1f263131fe2706d243e9be38f027e7ed13b519370e171b3f4f9
+SymPy 1.14.0; input hash sha256:ed141df2bdb1fa9fa2420be14215513963b821660383d887912b4f5878ff6165
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -62,7 +62,7 @@ MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'b2db4301368bc1f263131fe2706d243e9be38f027e7ed13b519370e171b3f4f9'
+INPUT_HASH = 'ed141df2bdb1fa9fa2420be14215513963b821660383d887912b4f5878ff6165'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 11, 'constants': 7, 'rhs_q': 7, 'rhs_pose': 17, 'rhs_pose_q': 14, 'pose_rates': 7, 'energy': 23, 'multipliers': 7, 'frequencies': 5}
@@ -322,4 +322,4 @@ def frequencies(p):
     out[0] = math.sqrt(g)/math.sqrt(ell)
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'f13b3bdc8c1db05ceda20accdd027b2ea28d795de1d6f750a61ed80d24a7dfa6'
+MODULE_SHA256 = '85ec6144ed992361e63e1fb388b867291b454dbc10d6e71a327d92d168ceaa4b'

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/rigid_emit.py (make derive) from the rigid body 'two_mode_rigid'
 through derivation/rigid.py (Lagrange-d'Alembert in body quasi-velocities).
-SymPy 1.14.0; input hash sha256:945011d3c1d2d259abd630d1190f35e96c0198ec7fdd2610f3ebc54f298ca366
+SymPy 1.14.0; input hash sha256:0708e525d50d257b604719fc50bea6e7a7ef7eed63564a6e5f8a46121e6477b1
 
 Chiral knife edge of the paper's section III as the real rigid body: massless inverted-U bar of half-length L, masses M/2 a distance ell below its ends, contact at the lowest point of a circle of radius D in a vertical plane at the chiral angle alpha to the bar; per unit mass, exact in the tilts.
 
@@ -72,7 +72,7 @@ PRESETS = {}
 PRESET_SOURCES = {}
 #: the model file the body comes from
 SOURCE = 'knifeedge.derive.rigid_knife_edge'
-INPUT_HASH = '945011d3c1d2d259abd630d1190f35e96c0198ec7fdd2610f3ebc54f298ca366'
+INPUT_HASH = '0708e525d50d257b604719fc50bea6e7a7ef7eed63564a6e5f8a46121e6477b1'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 253, 'constants': 25, 'rhs_q': 221, 'rhs_pose': 293, 'rhs_pose_q': 261, 'pose_rates': 73, 'energy': 56, 'multipliers': 267}
@@ -987,4 +987,4 @@ def body_outlines(s, p, uu):
         out[0, j, 2] = _c16*_c23 - _c16*(-_c16*_c31 + _c22) + _c21*_c24 + _c24*_c30*_c31 + _c27*_c29*_c31 + _c27*_c8
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'b6aa2106749c29dcc25e7df906633e3bdec77d46152ccb27003c7435479c9435'
+MODULE_SHA256 = '9260e2cd587da70c91613da353eaa70e2c6dec00a9d8c5cf9227cb159b81205f'

@@ -144,7 +144,7 @@ def test_spec_problems_are_collected_and_name_the_users_line():
     msg = str(err.value)
     assert "3 problems" in msg and here in msg
     assert "undeclared symbols ['m']" in msg
-    assert "linear and homogeneous in the velocities" in msg
+    assert "must be affine in the velocities" in msg
     assert "`small` entries [x]" in msg
 
 

@@ -112,6 +112,11 @@ class Model:
         self.validity_doc: str = getattr(mod, "VALIDITY_DOC", "")
         self.multiplier_names: tuple = mod.MULTIPLIER_NAMES
         self.has_dissipation: bool = bool(mod.HAS_DISSIPATION)
+        #: the equations depend on the time explicitly: energy, multipliers, pose rates and powers need ``t``
+        self.time_dependent: bool = bool(getattr(mod, "TIME_DEPENDENT", False))
+        self.has_power_input: bool = bool(getattr(mod, "HAS_POWER_INPUT", False))
+        #: holonomic constraints whose values :meth:`holonomic_residual` gives
+        self.holonomic_names: tuple = tuple(getattr(mod, "HOLONOMIC_NAMES", ()))
         self.exports: tuple = mod.EXPORTS
         self._positive = tuple(d == "positive" for d in mod.PARAM_DOMAINS)
         self._nonnegative = tuple(d == "nonnegative" for d in mod.PARAM_DOMAINS)
@@ -263,14 +268,34 @@ class Model:
         return arr
 
     # -- compiled quantities ---------------------------------------------------
-    def energy(self, y, p) -> float | np.ndarray:
-        """Energy per unit mass; ``y`` of shape (n_state,) or (n_state, n_times)."""
-        y, p = self._states(y), self.check_params(p)
+    def _at(self, function, y, p, t, what: str):
+        """``function(y, p)`` (``(y, p, t)`` for a :attr:`time_dependent` model) of one state or of each column."""
+        if not self.time_dependent:
+            if y.ndim == 1:
+                return function(y, p)
+            return [function(np.ascontiguousarray(y[:, k]), p) for k in range(y.shape[1])]
+        if t is None:
+            raise ValueError(f"{what} of {self.name} depends on the time: pass `t` (one time per state)")
+        t = np.broadcast_to(np.asarray(t, dtype=float), y.shape[1:])
         if y.ndim == 1:
-            return float(self.module.energy(y, p))
-        return np.array([self.module.energy(np.ascontiguousarray(y[:, k]), p) for k in range(y.shape[1])])
+            return function(y, p, float(t))
+        return [function(np.ascontiguousarray(y[:, k]), p, float(t[k])) for k in range(y.shape[1])]
 
-    def multipliers(self, y, p) -> np.ndarray:
+    def energy(self, y, p, t=None) -> float | np.ndarray:
+        """Energy per unit mass; ``y`` of shape (n_state,) or (n_state, n_times).
+
+        ``t`` (a time, or one per state): needed when the model is :attr:`time_dependent`, whose energy is
+        not conserved but changes at the rate ``power_input - power_dissipated``.
+        """
+        needs_pose = bool(getattr(self.module, "ENERGY_NEEDS_POSE", False))
+        if needs_pose and not self.pose:
+            raise ValueError(f"the energy of {self.name} holds a potential of the pose coordinates "
+                             f"{self.pose_names}: load the model with `pose=True` and pass the pose-extended state")
+        y, p = self._states(y, pose=needs_pose), self.check_params(p)
+        e = self._at(self.module.energy, y, p, t, "the energy")
+        return float(e) if y.ndim == 1 else np.array(e)
+
+    def multipliers(self, y, p, t=None) -> np.ndarray:
         """Lagrange multipliers (contact forces per unit mass), in :attr:`multiplier_names` order.
 
         ``y`` of shape (n_state,) gives shape (n_constraints,); (n_state, n_times)
@@ -279,18 +304,17 @@ class Model:
         if not self.multiplier_names:
             raise ValueError(f"{self.name} at fidelity {self.fidelity!r} has no multipliers")
         y, p = self._states(y), self.check_params(p)
-        if y.ndim == 1:
-            return self.module.multipliers(y, p)
-        return np.stack([self.module.multipliers(np.ascontiguousarray(y[:, k]), p) for k in range(y.shape[1])], 1)
+        lam = self._at(self.module.multipliers, y, p, t, "the multipliers")
+        return lam if y.ndim == 1 else np.stack(lam, 1)
 
-    def pose_rates(self, y, p) -> np.ndarray:
+    def pose_rates(self, y, p, t=None) -> np.ndarray:
         """Rates of the pose coordinates :attr:`pose_names` at a pose-extended state (needs ``pose=True``)."""
         if not self.pose:
             raise ValueError("pose_rates needs the pose: load the model with `pose=True`")
         y = self._states(y, pose=True)
         if y.ndim != 1:
             raise ValueError(f"`y` must be one state of shape ({self.n_state},), got shape {y.shape}")
-        return self.module.pose_rates(y, self.check_params(p))
+        return self._at(self.module.pose_rates, y, self.check_params(p), t, "the pose rates")
 
     def _states(self, y, pose: bool = False) -> np.ndarray:
         """``y`` as finite float64 of shape (n, ) or (n, n_times): ``n`` the state's size, or the closed
@@ -316,7 +340,7 @@ class Model:
             raise ValueError(f"{self.name} at fidelity {self.fidelity!r} has no oscillating modes (no `frequencies`)")
         return self.module.frequencies(self.check_params(p))
 
-    def power_dissipated(self, y, p) -> float | np.ndarray:
+    def power_dissipated(self, y, p, t=None) -> float | np.ndarray:
         """Rate at which the non-conservative forces remove :meth:`energy`; 0 for a conservative model.
 
         ``energy(t) + integral_0^t power_dissipated dt = energy(0)`` along a run.
@@ -325,9 +349,32 @@ class Model:
         y, p = self._states(y), self.check_params(p)
         if not self.has_dissipation:
             return 0.0 if y.ndim == 1 else np.zeros(y.shape[1])
-        if y.ndim == 1:
-            return float(self.module.power_dissipated(y, p))
-        return np.array([self.module.power_dissipated(np.ascontiguousarray(y[:, k]), p) for k in range(y.shape[1])])
+        power = self._at(self.module.power_dissipated, y, p, t, "the dissipated power")
+        return float(power) if y.ndim == 1 else np.array(power)
+
+    def power_input(self, y, p, t=None) -> float | np.ndarray:
+        """Rate at which the explicit time and the rheonomic constraints add :meth:`energy`; 0 if they do not.
+
+        ``energy(t) = energy(0) + integral_0^t (power_input - power_dissipated) dt`` along a run.
+        """
+        y, p = self._states(y), self.check_params(p)
+        if not self.has_power_input:
+            return 0.0 if y.ndim == 1 else np.zeros(y.shape[1])
+        power = self._at(self.module.power_input, y, p, t, "the input power")
+        return float(power) if y.ndim == 1 else np.array(power)
+
+    def holonomic_residual(self, y, p, t=None) -> np.ndarray:
+        """Values of the holonomic constraints :attr:`holonomic_names` (zero on the constraint manifold).
+
+        The run integrates their time derivative, so along a run they drift from zero by about the
+        integrator's error; ``y`` of shape (n_state,) gives (n_holonomic,), (n_state, n_times) gives
+        (n_holonomic, n_times).
+        """
+        if not self.holonomic_names:
+            raise ValueError(f"{self.name} has no holonomic constraints")
+        y, p = self._states(y), self.check_params(p)
+        f = self._at(self.module.holonomic_residual, y, p, t, "the holonomic residual")
+        return f if y.ndim == 1 else np.stack(f, 1)
 
     def dissipated_work(self, t, y, p) -> np.ndarray:
         """Energy removed by the non-conservative forces from ``t[0]`` to each ``t`` (trapezoidal rule on the samples).
@@ -335,7 +382,7 @@ class Model:
         ``energy(y) + dissipated_work(t, y, p)`` is constant along a run, to the
         accuracy of the quadrature (sample the run densely, e.g. with ``t_eval``).
         """
-        power = self.power_dissipated(y, p)
+        power = self.power_dissipated(y, p, t)
         t = np.asarray(t, dtype=float)
         out = np.zeros_like(t)
         if t.size > 1:

@@ -100,7 +100,12 @@ class SimulationResult:
     @property
     def energy(self) -> np.ndarray:
         """Energy per unit mass along the trajectory."""
-        return self.model.energy(self.y, self.p)
+        return self.model.energy(self.y, self.p, self.t)
+
+    @property
+    def holonomic_residual(self) -> np.ndarray:
+        """Values of the model's holonomic constraints along the trajectory, shape (n_holonomic, n_times)."""
+        return self.model.holonomic_residual(self.y, self.p, self.t)
 
 
 @dataclass(frozen=True)
