@@ -140,7 +140,8 @@ def size_problems(text: str) -> list:
         args, body = fns.get(name, ((), ""))
         if len(args) < at + 2:
             continue
-        size = n + npose if pose else n
+        # a potential in a coordinate dropped by a symmetry makes ``energy`` read the pose (ENERGY_NEEDS_POSE)
+        size = n + npose if pose or (name == "energy" and lit.get("ENERGY_NEEDS_POSE") is True) else n
         n_params = n_q if name.endswith("q_into") else n_par
         if any(i >= size for i in _indices(body, args[at])):
             problems.append(f"{name} reads the state past its {size} declared entries")
