@@ -18,7 +18,7 @@ from pathlib import Path
 import sympy as sp
 from sympy.printing.pycode import PythonCodePrinter
 
-from . import averaging, drawing, engine, models, truncation
+from . import averaging, drawing, engine, jacobian, models, truncation
 from .averaging import AmplitudeSystem
 from .fidelities import FIDELITIES
 
@@ -469,7 +469,7 @@ def multipliers(s, p):
 {nl.join(unpack_p)}
 {nl.join(lam_lines)}
     return out
-''' + drawing.module_source(system) + extra_src
+''' + drawing.module_source(system) + extra_src + jacobian.block_source(rates, system.state, spec.params)
 
 
 def _coefficient_block(name: str, exprs, params, doc: str) -> tuple[str, int]:
@@ -586,7 +586,7 @@ def invariants(s, p):
 {nl.join(_unpack(params, "p"))}
 {nl.join(inv_lines)}
     return out
-{freq_src}{extra_src}'''
+{freq_src}{extra_src}''' + jacobian.block_source(system.rates, system.state, spec.params)
 
 
 def _amplitude_defaults(system: AmplitudeSystem) -> dict:

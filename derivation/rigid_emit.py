@@ -17,7 +17,7 @@ from pathlib import Path
 
 import sympy as sp
 
-from . import drawing, emit, rigid
+from . import drawing, emit, jacobian, rigid
 from .emit import _cse_block, _rhs_source, _unpack
 
 
@@ -237,4 +237,5 @@ def multipliers(s, p):
 {nl.join(unpack_p)}
 {nl.join(lam_lines)}
     return out
-{_INITIAL_STATE.format(n=n, n_pose=n + npose, VERTICAL=VERTICAL_CHECK)}''' + drawing.module_source(system)
+{_INITIAL_STATE.format(n=n, n_pose=n + npose, VERTICAL=VERTICAL_CHECK)}''' + drawing.module_source(system) \
+        + jacobian.block_source(rates, system.state, spec.params)

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/sleigh.py (model 'chaplygin_sleigh',
 constraints knife_edge) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:9852abd7ca03bf928c6fa4e19fad265dad913556912af15b4b3371dfce987a14
+SymPy 1.14.0; input hash sha256:6636dbae8295be87570295ff1ffb1b794fde98a82dcf330eb9f1149f9d662e6b
 
 Chaplygin sleigh: a rigid body on the plane with a knife edge at its rear contact point (x, y) that forbids sideways motion; heading phi, centre of mass at distance a ahead of the contact, radius of gyration k about the centre of mass; v is the speed along the axis.
 
@@ -59,7 +59,7 @@ MULTIPLIER_NAMES = ('knife_edge',)
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '9852abd7ca03bf928c6fa4e19fad265dad913556912af15b4b3371dfce987a14'
+INPUT_HASH = '6636dbae8295be87570295ff1ffb1b794fde98a82dcf330eb9f1149f9d662e6b'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 9, 'constants': 5, 'rhs_q': 4, 'rhs_pose': 13, 'rhs_pose_q': 8, 'pose_rates': 4, 'energy': 9, 'multipliers': 6}
@@ -259,4 +259,35 @@ def body_outlines(s, p, uu):
         out[0, j, 0] = -_c0*_c2 + _c3*_c4 + x
         out[0, j, 1] = _c0*_c4 + _c2*_c3 + y
         out[0, j, 2] = ((1.0/3.0))*k
+    return out
+
+
+#: operation counts of the Jacobians (derivation/jacobian.py)
+OP_COUNTS.update(jacobian=14, jacobian_p=25)
+
+@njit(cache=True)
+def jacobian(s, p):
+    """d(state rate)/d(state): J[i, j] = d rhs_i / d s_j, shape (2, 2) (14 operations)."""
+    out = np.zeros((2, 2))
+    v = s[0]
+    phi_dot = s[1]
+    a = p[0]
+    k = p[1]
+    out[0, 1] = 2*a*phi_dot
+    out[1, 0] = -a*phi_dot/((a*a) + (k*k))
+    out[1, 1] = -a*v/((a*a) + (k*k))
+    return out
+
+
+@njit(cache=True)
+def jacobian_p(s, p):
+    """d(state rate)/d(parameters): J[i, j] = d rhs_i / d p_j, shape (2, 2) (25 operations)."""
+    out = np.zeros((2, 2))
+    v = s[0]
+    phi_dot = s[1]
+    a = p[0]
+    k = p[1]
+    out[0, 0] = (phi_dot*phi_dot)
+    out[1, 0] = 2*(a*a)*phi_dot*v/(((a*a) + (k*k))*((a*a) + (k*k))) - phi_dot*v/((a*a) + (k*k))
+    out[1, 1] = 2*a*k*phi_dot*v/(((a*a) + (k*k))*((a*a) + (k*k)))
     return out

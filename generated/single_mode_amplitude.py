@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:37afd509bbe07ac5181a2f2ba30b267f7b6ee98915f64ac3f67a499a45fb0426
+SymPy 1.14.0; input hash sha256:723fea44e5dac0a0c50f380e62f88200f46ca193cccc997c0715ce693e7cd510
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -67,7 +67,7 @@ HAS_DISSIPATION = False
 EXPORTS = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy',)
-INPUT_HASH = '37afd509bbe07ac5181a2f2ba30b267f7b6ee98915f64ac3f67a499a45fb0426'
+INPUT_HASH = '723fea44e5dac0a0c50f380e62f88200f46ca193cccc997c0715ce693e7cd510'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 10, 'constants': 6, 'rhs_q': 4, 'energy': 9, 'invariants': 9, 'frequencies': 5, 'growth_rates': 2, 'drive_rates': 5}
@@ -188,4 +188,43 @@ def drive_rates(p):
     L = p[2]
     D = p[3]
     out[0] = -(1.0/2.0)*D*g/(L*L)
+    return out
+
+
+#: operation counts of the Jacobians (derivation/jacobian.py)
+OP_COUNTS.update(jacobian=11, jacobian_p=26)
+
+@njit(cache=True)
+def jacobian(s, p):
+    """d(state rate)/d(state): J[i, j] = d rhs_i / d s_j, shape (2, 2) (11 operations)."""
+    out = np.zeros((2, 2))
+    A_theta = s[0]
+    A_phi = s[1]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    _c0 = ((1.0/2.0))*D
+    out[0, 0] = A_phi*_c0/ell
+    out[0, 1] = A_theta*_c0/ell
+    out[1, 0] = -2*A_theta*_c0*g/(L*L)
+    return out
+
+
+@njit(cache=True)
+def jacobian_p(s, p):
+    """d(state rate)/d(parameters): J[i, j] = d rhs_i / d p_j, shape (2, 4) (26 operations)."""
+    out = np.zeros((2, 4))
+    A_theta = s[0]
+    A_phi = s[1]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    _c0 = ((1.0/2.0))*D
+    out[0, 1] = -A_phi*A_theta*_c0/(ell*ell)
+    out[0, 3] = ((1.0/2.0))*A_phi*A_theta/ell
+    out[1, 0] = -(A_theta*A_theta)*_c0/(L*L)
+    out[1, 2] = 2*(A_theta*A_theta)*_c0*g/(L*L*L)
+    out[1, 3] = -(1.0/2.0)*(A_theta*A_theta)*g/(L*L)
     return out

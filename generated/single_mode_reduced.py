@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py and derivation/truncation.py.
-SymPy 1.14.0; input hash sha256:2bb1b3c1cff80a751160dbbb2e57f3f1d14adcc0f9b426ef06b9a781035e1cef
+SymPy 1.14.0; input hash sha256:02598139f4be4e54cd7f1c4606e452b536986657eba2378d247e298660240032
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -62,7 +62,7 @@ MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '2bb1b3c1cff80a751160dbbb2e57f3f1d14adcc0f9b426ef06b9a781035e1cef'
+INPUT_HASH = '02598139f4be4e54cd7f1c4606e452b536986657eba2378d247e298660240032'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 11, 'constants': 7, 'rhs_q': 7, 'rhs_pose': 17, 'rhs_pose_q': 14, 'pose_rates': 7, 'energy': 23, 'multipliers': 7, 'frequencies': 5}
@@ -320,4 +320,46 @@ def frequencies(p):
     L = p[2]
     D = p[3]
     out[0] = math.sqrt(g)/math.sqrt(ell)
+    return out
+
+
+#: operation counts of the Jacobians (derivation/jacobian.py)
+OP_COUNTS.update(jacobian=12, jacobian_p=27)
+
+@njit(cache=True)
+def jacobian(s, p):
+    """d(state rate)/d(state): J[i, j] = d rhs_i / d s_j, shape (3, 3) (12 operations)."""
+    out = np.zeros((3, 3))
+    theta = s[0]
+    theta_dot = s[1]
+    phi_dot = s[2]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    out[0, 1] = 1
+    out[1, 0] = -g/ell
+    out[1, 1] = D*phi_dot/ell
+    out[1, 2] = D*theta_dot/ell
+    out[2, 0] = -2*D*g*theta/(L*L)
+    return out
+
+
+@njit(cache=True)
+def jacobian_p(s, p):
+    """d(state rate)/d(parameters): J[i, j] = d rhs_i / d p_j, shape (3, 4) (27 operations)."""
+    out = np.zeros((3, 4))
+    theta = s[0]
+    theta_dot = s[1]
+    phi_dot = s[2]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    out[1, 0] = -theta/ell
+    out[1, 1] = -(D*phi_dot*theta_dot - g*theta)/(ell*ell)
+    out[1, 3] = phi_dot*theta_dot/ell
+    out[2, 0] = -D*(theta*theta)/(L*L)
+    out[2, 2] = 2*D*g*(theta*theta)/(L*L*L)
+    out[2, 3] = -g*(theta*theta)/(L*L)
     return out

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:9ac2ed5c84a8605355f7a2fe3d7ab553c4a79e2460d7cbc599ba9b8c7920924a
+SymPy 1.14.0; input hash sha256:5f10659616b506c2c56c8c92b7b133c873299d2d8a8af924e00cd01271fcf38a
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -71,7 +71,7 @@ HAS_DISSIPATION = False
 EXPORTS = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy', 'log_A1_A2')
-INPUT_HASH = '9ac2ed5c84a8605355f7a2fe3d7ab553c4a79e2460d7cbc599ba9b8c7920924a'
+INPUT_HASH = '5f10659616b506c2c56c8c92b7b133c873299d2d8a8af924e00cd01271fcf38a'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 24, 'constants': 14, 'rhs_q': 10, 'energy': 12, 'invariants': 19, 'frequencies': 12, 'growth_rates': 11, 'drive_rates': 12}
@@ -236,4 +236,75 @@ def drive_rates(p):
     _c2 = (ell*ell)
     out[0] = _c1
     out[1] = -_c1*_c2/(_c0 + _c2)
+    return out
+
+
+#: operation counts of the Jacobians (derivation/jacobian.py)
+OP_COUNTS.update(jacobian=32, jacobian_p=127)
+
+@njit(cache=True)
+def jacobian(s, p):
+    """d(state rate)/d(state): J[i, j] = d rhs_i / d s_j, shape (3, 3) (32 operations)."""
+    out = np.zeros((3, 3))
+    A1 = s[0]
+    A2 = s[1]
+    A_phi = s[2]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+    _c0 = ((1.0/4.0))*D*math.sin(2*alpha)
+    _c1 = A_phi*_c0
+    _c2 = (L*L)
+    _c3 = (ell*ell)
+    _c4 = _c2 + _c3
+    _c5 = 1/_c4
+    out[0, 0] = -_c1/ell
+    out[0, 2] = -A1*_c0/ell
+    out[1, 1] = _c1*_c5*ell
+    out[1, 2] = A2*_c0*_c5*ell
+    out[2, 0] = 2*A1*_c0*_c4*_c5*g/_c2
+    out[2, 1] = -2*A2*_c0*_c3*_c5*g/_c2
+    return out
+
+
+@njit(cache=True)
+def jacobian_p(s, p):
+    """d(state rate)/d(parameters): J[i, j] = d rhs_i / d p_j, shape (3, 5) (127 operations)."""
+    out = np.zeros((3, 5))
+    A1 = s[0]
+    A2 = s[1]
+    A_phi = s[2]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+    _c0 = ((1.0/4.0))*D*math.sin(2*alpha)
+    _d0_3 = ((1.0/4.0))*math.sin(2*alpha)
+    _d0_4 = ((1.0/2.0))*D*math.cos(2*alpha)
+    _c1 = A_phi*_c0
+    _d1_3 = A_phi*_d0_3
+    _d1_4 = A_phi*_d0_4
+    _c2 = (L*L)
+    _d2_2 = 2*L
+    _c3 = (ell*ell)
+    _d3_1 = 2*ell
+    _c4 = _c2 + _c3
+    _c5 = 1/_c4
+    _d5_1 = -_d3_1/(_c4*_c4)
+    _d5_2 = -_d2_2/(_c4*_c4)
+    out[0, 1] = A1*_c1/(ell*ell)
+    out[0, 3] = -A1*_d1_3/ell
+    out[0, 4] = -A1*_d1_4/ell
+    out[1, 1] = A2*_c1*_c5 + A2*_c1*_d5_1*ell
+    out[1, 2] = A2*_c1*_d5_2*ell
+    out[1, 3] = A2*_c5*_d1_3*ell
+    out[1, 4] = A2*_c5*_d1_4*ell
+    out[2, 0] = _c0*_c5*((A1*A1)*_c4 - (A2*A2)*_c3)/_c2
+    out[2, 1] = (A1*A1)*_c0*_c5*_d3_1*g/_c2 - (A2*A2)*_c0*_c5*_d3_1*g/_c2 + _c0*_d5_1*g*((A1*A1)*_c4 - (A2*A2)*_c3)/_c2
+    out[2, 2] = (A1*A1)*_c0*_c5*_d2_2*g/_c2 + _c0*_d5_2*g*((A1*A1)*_c4 - (A2*A2)*_c3)/_c2 - _c0*_c5*_d2_2*g*((A1*A1)*_c4 - (A2*A2)*_c3)/(_c2*_c2)
+    out[2, 3] = _c5*_d0_3*g*((A1*A1)*_c4 - (A2*A2)*_c3)/_c2
+    out[2, 4] = _c5*_d0_4*g*((A1*A1)*_c4 - (A2*A2)*_c3)/_c2
     return out

@@ -299,6 +299,24 @@ class Model:
             raise ValueError("`y` must be finite")
         return np.ascontiguousarray(arr)
 
+    def jacobian(self, y, p) -> np.ndarray:
+        """``d rhs / d y`` of the closed state at ``y`` (generated exactly, ``derivation/jacobian.py``).
+
+        ``y``: the closed state, or the pose-extended state (its pose is ignored: the closed state's rates
+        do not depend on it).  Returns shape (n_closed, n_closed), ``J[i, j] = d rate_i / d y_j``.
+        """
+        return self.module.jacobian(self._closed(y), self.check_params(p))
+
+    def jacobian_p(self, y, p) -> np.ndarray:
+        """``d rhs / d p`` of the closed state at ``y``: shape (n_closed, n_params), ``J[i, j] = d rate_i / d p_j``."""
+        return self.module.jacobian_p(self._closed(y), self.check_params(p))
+
+    def _closed(self, y) -> np.ndarray:
+        y = self._states(y)
+        if y.ndim != 1:
+            raise ValueError(f"`y` must be one state of shape ({len(self.closed_state_names)},), got shape {y.shape}")
+        return np.ascontiguousarray(y[:len(self.closed_state_names)])
+
     def frequencies(self, p) -> np.ndarray:
         """Angular frequencies of the small oscillations of :attr:`tilt_names` at zero spin (1/time).
 
