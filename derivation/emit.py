@@ -18,7 +18,7 @@ from pathlib import Path
 import sympy as sp
 from sympy.printing.pycode import PythonCodePrinter
 
-from . import averaging, drawing, engine, jacobian, models, truncation
+from . import averaging, drawing, engine, jacobian, models, steady, truncation
 from .averaging import AmplitudeSystem
 from .fidelities import FIDELITIES
 
@@ -469,7 +469,8 @@ def multipliers(s, p):
 {nl.join(unpack_p)}
 {nl.join(lam_lines)}
     return out
-''' + drawing.module_source(system) + extra_src + jacobian.block_source(rates, system.state, spec.params)
+''' + drawing.module_source(system) + extra_src + jacobian.block_source(rates, system.state, spec.params) \
+        + steady.block_source(spec.steady, system.state, spec.params)
 
 
 def _coefficient_block(name: str, exprs, params, doc: str) -> tuple[str, int]:
@@ -586,7 +587,8 @@ def invariants(s, p):
 {nl.join(_unpack(params, "p"))}
 {nl.join(inv_lines)}
     return out
-{freq_src}{extra_src}''' + jacobian.block_source(system.rates, system.state, spec.params)
+{freq_src}{extra_src}''' + jacobian.block_source(system.rates, system.state, spec.params) \
+        + steady.block_source(spec.steady, system.state, spec.params, rename=rename)
 
 
 def _amplitude_defaults(system: AmplitudeSystem) -> dict:

@@ -186,6 +186,8 @@ class RigidBody:
     source: str = ""
     defaults: dict = field(default_factory=dict)
     default_state: dict = field(default_factory=dict)
+    #: families of steady motions (:class:`~knifeedge.derive.steady.Steady`)
+    steady: tuple = ()
 
     def check(self) -> None:
         """Collect every problem of the description and raise one ``ValueError``."""

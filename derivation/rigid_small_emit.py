@@ -15,7 +15,7 @@ from pathlib import Path
 
 import sympy as sp
 
-from . import emit, jacobian, rigid, rigid_small
+from . import emit, jacobian, rigid, rigid_small, steady
 from .emit import _cse_block, _rhs_source, _unpack
 from .rigid_emit import VERTICAL_CHECK
 
@@ -251,4 +251,5 @@ SYMPY_VERSION = {sp.__version__!r}
 OP_COUNTS = {ops!r}
 
 
-{rhs_src}{extra}{initial}''' + jacobian.block_source(system.rates, system.state, spec.params)
+{rhs_src}{extra}{initial}''' + jacobian.block_source(system.rates, system.state, spec.params) \
+        + steady.block_source(body.steady, system.state, spec.params)

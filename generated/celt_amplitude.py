@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/rigid_small_emit.py (make derive) from the rigid body 'celt'
 through derivation/rigid.py and derivation/rigid_small.py.
-SymPy 1.14.0; input hash sha256:d3751c067fc92360815653414f7da1779724f4c7275e18d8711269da45927c84
+SymPy 1.14.0; input hash sha256:b44701c421184f27d8ed7250ec7fb603aed2aacb4397a27a11df9a5821b9c1eb
 
 Classical rattleback (celt): a rigid body with an ellipsoidal bottom (semi-axes a, b, c along the body axes x, y, z; centre of mass a distance h below the ellipsoid's centre), inertia tensor about the centre of mass with entries I_xx..I_yz in body axes, rolling without slipping on a horizontal table under gravity g, dissipation torque -sigma*omega.  State: upward vertical n and angular velocity omega in body axes, vertical spin omega_n = omega.n; pose: heading psi of the body x axis, centre of mass (x, y).
 
@@ -63,7 +63,7 @@ EXPORTS = ('PRESETS', 'PRESET_SOURCES', 'initial_state', 'modes', 'moffatt_tokie
 PRESETS = {'kane_levinson_1982': {'a': 0.2, 'b': 0.03, 'c': 0.02, 'h': 0.01, 'm': 1.0, 'g': 9.81, 'I_xx': 0.0002, 'I_yy': 0.0016, 'I_zz': 0.0017, 'I_xy': 2e-05, 'sigma': 0.0}, 'schoemer': {'a': 1.618033988749895, 'b': 1.0, 'c': 1.0, 'h': 0.1875, 'm': 0.2, 'g': 9.81, 'I_xx': 0.05796875, 'I_yy': 0.09032943, 'I_zz': 0.12236068, 'I_xy': -0.025, 'sigma': 0.0}}
 PRESET_SOURCES = {'kane_levinson_1982': 'Kane & Levinson, Int. J. Non-Linear Mech. 17 (1982) 175-186', 'schoemer': "E. Schoemer's rattleback (golden-ratio ellipsoid)"}
 SOURCE = 'knifeedge.derive.celt'
-INPUT_HASH = 'd3751c067fc92360815653414f7da1779724f4c7275e18d8711269da45927c84'
+INPUT_HASH = 'b44701c421184f27d8ed7250ec7fb603aed2aacb4397a27a11df9a5821b9c1eb'
 SYMPY_VERSION = '1.14.0'
 OP_COUNTS = {'rhs': 688, 'constants': 669, 'rhs_q': 22, 'energy': 208, 'power_dissipated': 780, 'modes': 133, 'moffatt_tokieda': 351}
 
@@ -2335,4 +2335,60 @@ def jacobian_p(s, p):
     out[2, 8] = (A_pitch*A_pitch)*_d105_8*(-_c102 + _c111) + (A_roll*A_roll)*_d154_8*(_c152 - _c155) - _c89*_d88_8 + _d100_8*((A_pitch*A_pitch)*_c102 + (A_roll*A_roll)*_c155) + _d110_8*((A_pitch*A_pitch)*_c111 + (A_roll*A_roll)*_c152) + _d123_8*((A_pitch*A_pitch)*_c124 + (A_roll*A_roll)*_c156) + _d127_8*((A_pitch*A_pitch)*_c104*_c124 + (A_roll*A_roll)*_c153*_c156) + _d131_8*((A_pitch*A_pitch)*_c102*_c89 + (A_roll*A_roll)*_c155*_c89) + _d133_8*((A_pitch*A_pitch)*_c111*_c89 + (A_roll*A_roll)*_c152*_c89) + _d139_8*((A_pitch*A_pitch)*_c124*_c89 + (A_roll*A_roll)*_c156*_c89) + _d147_8*((A_pitch*A_pitch)*_c102*_c140 + (A_roll*A_roll)*_c140*_c155) + _d149_8*((A_pitch*A_pitch)*_c111*_c140 + (A_roll*A_roll)*_c140*_c152) + _d150_8*((A_pitch*A_pitch)*_c124*_c140 + (A_roll*A_roll)*_c140*_c156)
     out[2, 9] = (A_pitch*A_pitch)*_c124*_c127*_d104_9 + (A_pitch*A_pitch)*_d102_9*(_c100 - _c105 + _c131*_c89 + _c140*_c147) + (A_pitch*A_pitch)*_d105_9*(-_c102 + _c111) + (A_pitch*A_pitch)*_d111_9*(_c105 + _c110 + _c133*_c89 + _c140*_c149) + (A_pitch*A_pitch)*_d124_9*(_c104*_c127 + _c123 + _c139*_c89 + _c140*_c150) + (A_roll*A_roll)*_c127*_c156*_d153_9 + (A_roll*A_roll)*_d152_9*(_c110 + _c133*_c89 + _c140*_c149 + _c154) + (A_roll*A_roll)*_d154_9*(_c152 - _c155) + (A_roll*A_roll)*_d155_9*(_c100 + _c131*_c89 + _c140*_c147 - _c154) + (A_roll*A_roll)*_d156_9*(_c123 + _c127*_c153 + _c139*_c89 + _c140*_c150) + _d100_9*((A_pitch*A_pitch)*_c102 + (A_roll*A_roll)*_c155) + _d110_9*((A_pitch*A_pitch)*_c111 + (A_roll*A_roll)*_c152) + _d123_9*((A_pitch*A_pitch)*_c124 + (A_roll*A_roll)*_c156) + _d131_9*((A_pitch*A_pitch)*_c102*_c89 + (A_roll*A_roll)*_c155*_c89) + _d133_9*((A_pitch*A_pitch)*_c111*_c89 + (A_roll*A_roll)*_c152*_c89) + _d139_9*((A_pitch*A_pitch)*_c124*_c89 + (A_roll*A_roll)*_c156*_c89) + _d147_9*((A_pitch*A_pitch)*_c102*_c140 + (A_roll*A_roll)*_c140*_c155) + _d149_9*((A_pitch*A_pitch)*_c111*_c140 + (A_roll*A_roll)*_c140*_c152) + _d150_9*((A_pitch*A_pitch)*_c124*_c140 + (A_roll*A_roll)*_c140*_c156)
     out[2, 10] = omega_z*((A_pitch*A_pitch)*(_c102*_c131 + _c111*_c133 + _c124*_c139) + (A_roll*A_roll)*(_c131*_c155 + _c133*_c152 + _c139*_c156) - _c88)
+    return out
+
+
+
+#: families of steady motions (derivation/steady.py): name -> the family's parameter ``value`` (``value_state`` is
+#: the state equal to it), what the motion is, and names of the modes by their largest state
+STEADY_FAMILIES = {'steady_spin': {'value': 'Omega', 'value_state': 'omega_z', 'description': 'upright spin about the body z axis (n = e_z) at the rate Omega', 'mode_names': {'A_pitch': 'pitch', 'A_roll': 'roll', 'n_x': 'pitch', 'n_y': 'roll'}}}
+
+
+@njit(cache=True)
+def steady_state(_family, _value, p):
+    """Row 0: the closed state of family number ``_family`` of STEADY_FAMILIES at ``_value``; row 1: its derivative
+    in ``_value`` (the family's tangent)."""
+    out = np.zeros((2, 3))
+    a = p[0]
+    b = p[1]
+    c = p[2]
+    h = p[3]
+    m = p[4]
+    g = p[5]
+    I_xx = p[6]
+    I_yy = p[7]
+    I_zz = p[8]
+    I_xy = p[9]
+    sigma = p[10]
+    if _family == 0:
+        Omega = _value
+        out[0, 2] = Omega
+        out[1, 2] = 1
+
+    return out
+
+
+#: functions of the closed state fixed by construction; their gradients are not physical directions
+STATE_INVARIANTS = ()
+
+
+@njit(cache=True)
+def invariant_gradients(s, p):
+    """Gradients of STATE_INVARIANTS, shape (0, 3)."""
+    out = np.zeros((0, 3))
+    A_pitch = s[0]
+    A_roll = s[1]
+    omega_z = s[2]
+    a = p[0]
+    b = p[1]
+    c = p[2]
+    h = p[3]
+    m = p[4]
+    g = p[5]
+    I_xx = p[6]
+    I_yy = p[7]
+    I_zz = p[8]
+    I_xy = p[9]
+    sigma = p[10]
+
     return out

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/rigid_emit.py (make derive) from the rigid body 'celt'
 through derivation/rigid.py (Lagrange-d'Alembert in body quasi-velocities).
-SymPy 1.14.0; input hash sha256:2bdbe5c1ce4164dc7d564b2f94f8b1ad5c5630341f47ea025951d630e7ee7277
+SymPy 1.14.0; input hash sha256:50fa72dc6ea5985096b3113ea9d0cd1adf88fbaa5c970fee5f123506d4c65066
 
 Classical rattleback (celt): a rigid body with an ellipsoidal bottom (semi-axes a, b, c along the body axes x, y, z; centre of mass a distance h below the ellipsoid's centre), inertia tensor about the centre of mass with entries I_xx..I_yz in body axes, rolling without slipping on a horizontal table under gravity g, dissipation torque -sigma*omega.  State: upward vertical n and angular velocity omega in body axes, vertical spin omega_n = omega.n; pose: heading psi of the body x axis, centre of mass (x, y).
 
@@ -81,7 +81,7 @@ PRESETS = {'kane_levinson_1982': {'a': 0.2, 'b': 0.03, 'c': 0.02, 'h': 0.01, 'm'
 PRESET_SOURCES = {'kane_levinson_1982': 'Kane & Levinson, Int. J. Non-Linear Mech. 17 (1982) 175-186', 'schoemer': "E. Schoemer's rattleback (golden-ratio ellipsoid)"}
 #: the model file the body comes from
 SOURCE = 'knifeedge.derive.celt'
-INPUT_HASH = '2bdbe5c1ce4164dc7d564b2f94f8b1ad5c5630341f47ea025951d630e7ee7277'
+INPUT_HASH = '50fa72dc6ea5985096b3113ea9d0cd1adf88fbaa5c970fee5f123506d4c65066'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 247, 'constants': 23, 'rhs_q': 250, 'rhs_pose': 285, 'rhs_pose_q': 286, 'pose_rates': 71, 'energy': 72, 'multipliers': 265, 'power_dissipated': 6}
@@ -1832,4 +1832,80 @@ def jacobian_p(s, p):
     out[6, 10] = _d65_10*n_x + _d67_10*n_y + _d68_10*n_z
     out[6, 11] = _d65_11*n_x + _d67_11*n_y + _d68_11*n_z
     out[6, 12] = _d65_12*n_x + _d67_12*n_y + _d68_12*n_z
+    return out
+
+
+
+#: families of steady motions (derivation/steady.py): name -> the family's parameter ``value`` (``value_state`` is
+#: the state equal to it), what the motion is, and names of the modes by their largest state
+STEADY_FAMILIES = {'steady_spin': {'value': 'Omega', 'value_state': 'omega_z', 'description': 'upright spin about the body z axis (n = e_z) at the rate Omega', 'mode_names': {'A_pitch': 'pitch', 'A_roll': 'roll', 'n_x': 'pitch', 'n_y': 'roll'}}}
+
+
+@njit(cache=True)
+def steady_state(_family, _value, p):
+    """Row 0: the closed state of family number ``_family`` of STEADY_FAMILIES at ``_value``; row 1: its derivative
+    in ``_value`` (the family's tangent)."""
+    out = np.zeros((2, 7))
+    a = p[0]
+    b = p[1]
+    c = p[2]
+    h = p[3]
+    m = p[4]
+    g = p[5]
+    I_xx = p[6]
+    I_yy = p[7]
+    I_zz = p[8]
+    I_xy = p[9]
+    I_xz = p[10]
+    I_yz = p[11]
+    sigma = p[12]
+    if _family == 0:
+        Omega = _value
+        out[0, 2] = 1
+        out[0, 5] = Omega
+        out[0, 6] = Omega
+        out[1, 5] = 1
+        out[1, 6] = 1
+
+    return out
+
+
+#: functions of the closed state fixed by construction; their gradients are not physical directions
+STATE_INVARIANTS = ('|n|^2 = 1 (n is a unit vector)', 'omega_n = omega . n (the spin carried as a state)')
+
+
+@njit(cache=True)
+def invariant_gradients(s, p):
+    """Gradients of STATE_INVARIANTS, shape (2, 7)."""
+    out = np.zeros((2, 7))
+    n_x = s[0]
+    n_y = s[1]
+    n_z = s[2]
+    omega_x = s[3]
+    omega_y = s[4]
+    omega_z = s[5]
+    omega_n = s[6]
+    a = p[0]
+    b = p[1]
+    c = p[2]
+    h = p[3]
+    m = p[4]
+    g = p[5]
+    I_xx = p[6]
+    I_yy = p[7]
+    I_zz = p[8]
+    I_xy = p[9]
+    I_xz = p[10]
+    I_yz = p[11]
+    sigma = p[12]
+    out[0, 0] = 2*n_x
+    out[0, 1] = 2*n_y
+    out[0, 2] = 2*n_z
+    out[1, 0] = -omega_x
+    out[1, 1] = -omega_y
+    out[1, 2] = -omega_z
+    out[1, 3] = -n_x
+    out[1, 4] = -n_y
+    out[1, 5] = -n_z
+    out[1, 6] = 1
     return out

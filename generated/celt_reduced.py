@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/rigid_small_emit.py (make derive) from the rigid body 'celt'
 through derivation/rigid.py and derivation/rigid_small.py.
-SymPy 1.14.0; input hash sha256:40f555c6e74ecb688983f971a50379c75799f1bfa73f98cb7a7f6e647bc3ef6e
+SymPy 1.14.0; input hash sha256:09bc112e9c61e38076db7e6d24f8ae7eabd5e5043904766aecec41fa3e6316ca
 
 Classical rattleback (celt): a rigid body with an ellipsoidal bottom (semi-axes a, b, c along the body axes x, y, z; centre of mass a distance h below the ellipsoid's centre), inertia tensor about the centre of mass with entries I_xx..I_yz in body axes, rolling without slipping on a horizontal table under gravity g, dissipation torque -sigma*omega.  State: upward vertical n and angular velocity omega in body axes, vertical spin omega_n = omega.n; pose: heading psi of the body x axis, centre of mass (x, y).
 
@@ -65,7 +65,7 @@ EXPORTS = ('PRESETS', 'PRESET_SOURCES', 'initial_state')
 PRESETS = {'kane_levinson_1982': {'a': 0.2, 'b': 0.03, 'c': 0.02, 'h': 0.01, 'm': 1.0, 'g': 9.81, 'I_xx': 0.0002, 'I_yy': 0.0016, 'I_zz': 0.0017, 'I_xy': 2e-05, 'sigma': 0.0}, 'schoemer': {'a': 1.618033988749895, 'b': 1.0, 'c': 1.0, 'h': 0.1875, 'm': 0.2, 'g': 9.81, 'I_xx': 0.05796875, 'I_yy': 0.09032943, 'I_zz': 0.12236068, 'I_xy': -0.025, 'sigma': 0.0}}
 PRESET_SOURCES = {'kane_levinson_1982': 'Kane & Levinson, Int. J. Non-Linear Mech. 17 (1982) 175-186', 'schoemer': "E. Schoemer's rattleback (golden-ratio ellipsoid)"}
 SOURCE = 'knifeedge.derive.celt'
-INPUT_HASH = '40f555c6e74ecb688983f971a50379c75799f1bfa73f98cb7a7f6e647bc3ef6e'
+INPUT_HASH = '09bc112e9c61e38076db7e6d24f8ae7eabd5e5043904766aecec41fa3e6316ca'
 SYMPY_VERSION = '1.14.0'
 OP_COUNTS = {'rhs': 606, 'constants': 511, 'rhs_q': 108, 'energy': 85, 'power_dissipated': 6}
 
@@ -1409,4 +1409,62 @@ def jacobian_p(s, p):
     out[4, 8] = -_c0*_c13*_c27*_d70_8*n_x + _c0*_d71_8*n_x*(_c73 + 1) + _c1*_c20*_c31*_d107_8*omega_y + _c45*_c74*_d93_8 - _c45*_c74*_d95_8 + _c45*_c74*_d96_8 + _c74*_d76_8*omega_z*(-_c5*_c72*_c77 - _c77) - _c78*_c90*_d84_8 + _c78*_d80_8*omega_z*(-_c5*_c72*_c81 - _c81) - _c90*_d103_8*n_x*n_y + _d100_8*(_c1*omega_y*(_c52 - 1) - _c36*n_x*n_y) + _d102_8*(_c1*omega_y*(_c109 - _c110 - _c111) + n_x*n_y*(_c82 - _c86 + _c89)) + _d104_8*(-_c0*_c109*omega_x + n_x*n_y*(_c86 - _c89)) + _d105_8*(_c46*n_y*(_c73 - _c94 + 1) + n_x*n_y*(_c36 - _c88)) + _d106_8*(_c46*n_y*(-_c73 + _c94 - 1) + n_x*n_y*(-_c36 + _c88)) + _d108_8*(-_c0*_c16*omega_y - _c0*_c56*omega_x) + _d112_8*(_c0*_c64*omega_y - _c0*omega_x) + _d113_8*(-_c1*_c49*omega_x + _c1*omega_y*(1 - _c52)) + _d115_8*(_c1*omega_y - _c46*n_y) + _d116_8*(-_c1*omega_y + _c46*n_y) + _d117_8*(-_c1*omega_y + _c46*n_y) + _d118_8*(_c1*omega_y - _c46*n_y) + _d120_8*(-_c0*omega_x + _c46*n_y) + _d22_8*(2*I_xy*_c10*_c15*_c27*_c45*_c74*_c75*h + _c0*omega_x*(I_xx*_c15*_c24*_c27*_c55*h*m + _c10*_c11*_c15*_c24*_c27*_c55 + 3*_c10*_c15*_c24*_c55*c*h + _c15*_c2*_c24*_c27*h*m + _c24*m) + _c1*omega_x*(I_xx*I_xy*_c15*_c31*m + I_xy*_c10*_c15*_c3*_c31 + 3*I_xy*_c10*_c15*_c31*_c5 + I_xy*_c15*_c19*_c31*m) + _c45*_c78*(I_xy*_c10*_c15*_c5*_c72*_c79 + I_xy*_c10*_c15*_c79) + _c78*(2*I_xy*_c10*_c15*_c24*g*h + I_xy*_c10*_c15*_c27*_c79*g)) - _d23_8*omega_z + _d30_8*n_y*omega_x + _d34_8*n_x*omega_x + _d58_8*n_x*omega_y + _d61_8*n_y*omega_y + _d65_8*(-(omega_x*omega_x) + (omega_y*omega_y)) + _d66_8*(-_c0*_c60*omega_x - _c1*_c42*omega_x + omega_x*omega_y) + _d67_8*(_c0*omega_y*(-_c26 + _c29) + _c1*omega_y*(_c33 - _c47) - omega_x*omega_y) + _d68_8*(_c74*omega_z*(2*_c10*_c15*_c19*_c27*_c75*h*sigma + _c72*_c75*m*sigma) + _c78*omega_z*(2*_c10*_c15*_c27*_c55*_c79*h*sigma + _c72*_c79*m*sigma)) + _d85_8*(_c1*omega_x*(-_c110 - _c111) + _c74*(_c82 - _c86 + _c89)) + _d87_8*(_c45*_c74*(-_c73 - 1) + _c74*(-_c36 + _c88)) + _d91_8*(-_c45*_c78*_c94 - _c78*_c88) + _d92_8*(_c0*omega_y*(-_c109 + _c110 + _c111) - _c78*_c89) + _d97_8*(_c0*omega_y - _c1*omega_x - _c45*_c78) + _d99_8*(-_c0*_c52*omega_x - _c0*_c64*omega_y + _c36*n_x*n_y)
     out[4, 9] = -_c0*_c108*_d16_9*omega_y - _c0*_c108*_d56_9*omega_x - _c0*_c13*_c27*_d70_9*n_x + _c0*_c15*_c22*_c24*_c27*_d2_9*h*m*omega_x - _c0*_c66*_d60_9*omega_x + _c0*_d26_9*omega_y*(1 - _c67) + _c0*_d29_9*omega_y*(_c67 - 1) - _c0*_d63_9*omega_x + _c0*_d64_9*omega_y*(_c112 - _c99) + _c0*_d71_9*n_x*(_c73 + 1) + _c1*_c107*_c31*_d20_9*omega_y - _c1*_c113*_d49_9*omega_x - _c1*_c66*_d42_9*omega_x + _c1*_c67*_d33_9*omega_y - _c1*_c67*_d47_9*omega_y - _c1*_d43_9*omega_x + _c1*_d53_9*omega_y + _c1*omega_x*(I_xx*_c15*_c22*_c31*m + _c10*_c15*_c22*_c3*_c31 + 3*_c10*_c15*_c22*_c31*_c5 + _c15*_c19*_c22*_c31*m) + 2*_c10*_c15*_c22*_c27*_c45*_c74*_c75*h + _c22*(-(omega_x*omega_x) + (omega_y*omega_y)) + _c45*_c74*_d93_9 - _c45*_c74*_d95_9 + _c45*_c74*_d96_9 + _c45*_c78*(_c10*_c15*_c22*_c5*_c72*_c79 + _c10*_c15*_c22*_c79) + _c74*_d77_9*omega_z*(-_c5*_c72*_c76 - _c76) - _c78*_c90*_d84_9 + _c78*_d81_9*omega_z*(-_c5*_c72*_c80 - _c80) + _c78*(2*_c10*_c15*_c22*_c24*g*h + _c10*_c15*_c22*_c27*_c79*g) - _c90*_d103_9*n_x*n_y + _d102_9*(_c1*omega_y*(_c109 - _c110 - _c111) + n_x*n_y*(_c82 - _c86 + _c89)) + _d104_9*(-_c0*_c109*omega_x + n_x*n_y*(_c86 - _c89)) + _d105_9*(_c46*n_y*(_c73 - _c94 + 1) + n_x*n_y*(_c36 - _c88)) + _d106_9*(_c46*n_y*(-_c73 + _c94 - 1) + n_x*n_y*(-_c36 + _c88)) + _d116_9*(-_c1*omega_y + _c46*n_y) + _d117_9*(-_c1*omega_y + _c46*n_y) + _d118_9*(_c1*omega_y - _c46*n_y) + _d120_9*(-_c0*omega_x + _c46*n_y) + _d15_9*(2*I_xy*_c10*_c22*_c27*_c45*_c74*_c75*h + _c0*omega_x*(I_xx*_c22*_c24*_c27*_c55*h*m + _c10*_c11*_c22*_c24*_c27*_c55 + 3*_c10*_c22*_c24*_c55*c*h + _c2*_c22*_c24*_c27*h*m) + _c1*omega_x*(I_xx*I_xy*_c22*_c31*m + I_xy*_c10*_c22*_c3*_c31 + 3*I_xy*_c10*_c22*_c31*_c5 + I_xy*_c19*_c22*_c31*m) + 2*_c10*_c19*_c27*_c68*_c74*_c75*h*omega_z*sigma + 2*_c10*_c27*_c55*_c68*_c78*_c79*h*omega_z*sigma + _c45*_c78*(I_xy*_c10*_c22*_c5*_c72*_c79 + I_xy*_c10*_c22*_c79) + _c78*(2*I_xy*_c10*_c22*_c24*g*h + I_xy*_c10*_c22*_c27*_c79*g)) + _d30_9*n_y*omega_x + _d34_9*n_x*omega_x + _d52_9*(-_c0*_c99*omega_x + _c1*omega_y*(_c100 - _c113)) + _d58_9*n_x*omega_y + _d61_9*n_y*omega_y + _d85_9*(_c1*omega_x*(-_c110 - _c111) + _c74*(_c82 - _c86 + _c89)) + _d87_9*(_c45*_c74*(-_c73 - 1) + _c74*(-_c36 + _c88)) + _d91_9*(-_c45*_c78*_c94 - _c78*_c88) + _d92_9*(_c0*omega_y*(-_c109 + _c110 + _c111) - _c78*_c89) + _d97_9*(_c0*omega_y - _c1*omega_x - _c45*_c78)
     out[4, 10] = -_c0*_c13*_c27*_d70_10*n_x + _c0*_d71_10*n_x*(_c73 + 1) - _c22*omega_z + _c74*_d77_10*omega_z*(-_c5*_c72*_c76 - _c76) + _c74*omega_z*(2*_c10*_c15*_c19*_c27*_c68*_c75*h + _c68*_c72*_c75*m) + _c78*_d81_10*omega_z*(-_c5*_c72*_c80 - _c80) + _c78*omega_z*(2*_c10*_c15*_c27*_c55*_c68*_c79*h + _c68*_c72*_c79*m) + _d30_10*n_y*omega_x + _d34_10*n_x*omega_x + _d58_10*n_x*omega_y + _d61_10*n_y*omega_y
+    return out
+
+
+
+#: families of steady motions (derivation/steady.py): name -> the family's parameter ``value`` (``value_state`` is
+#: the state equal to it), what the motion is, and names of the modes by their largest state
+STEADY_FAMILIES = {'steady_spin': {'value': 'Omega', 'value_state': 'omega_z', 'description': 'upright spin about the body z axis (n = e_z) at the rate Omega', 'mode_names': {'A_pitch': 'pitch', 'A_roll': 'roll', 'n_x': 'pitch', 'n_y': 'roll'}}}
+
+
+@njit(cache=True)
+def steady_state(_family, _value, p):
+    """Row 0: the closed state of family number ``_family`` of STEADY_FAMILIES at ``_value``; row 1: its derivative
+    in ``_value`` (the family's tangent)."""
+    out = np.zeros((2, 5))
+    a = p[0]
+    b = p[1]
+    c = p[2]
+    h = p[3]
+    m = p[4]
+    g = p[5]
+    I_xx = p[6]
+    I_yy = p[7]
+    I_zz = p[8]
+    I_xy = p[9]
+    sigma = p[10]
+    if _family == 0:
+        Omega = _value
+        out[0, 4] = Omega
+        out[1, 4] = 1
+
+    return out
+
+
+#: functions of the closed state fixed by construction; their gradients are not physical directions
+STATE_INVARIANTS = ()
+
+
+@njit(cache=True)
+def invariant_gradients(s, p):
+    """Gradients of STATE_INVARIANTS, shape (0, 5)."""
+    out = np.zeros((0, 5))
+    n_x = s[0]
+    n_y = s[1]
+    omega_x = s[2]
+    omega_y = s[3]
+    omega_z = s[4]
+    a = p[0]
+    b = p[1]
+    c = p[2]
+    h = p[3]
+    m = p[4]
+    g = p[5]
+    I_xx = p[6]
+    I_yy = p[7]
+    I_zz = p[8]
+    I_xy = p[9]
+    sigma = p[10]
+
     return out

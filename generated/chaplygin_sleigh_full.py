@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/sleigh.py (model 'chaplygin_sleigh',
 constraints knife_edge) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:6636dbae8295be87570295ff1ffb1b794fde98a82dcf330eb9f1149f9d662e6b
+SymPy 1.14.0; input hash sha256:b9e830788356595fa4c59e2e01ff45eb17c5bc14d4ac1e6ae7051feec891f865
 
 Chaplygin sleigh: a rigid body on the plane with a knife edge at its rear contact point (x, y) that forbids sideways motion; heading phi, centre of mass at distance a ahead of the contact, radius of gyration k about the centre of mass; v is the speed along the axis.
 
@@ -59,7 +59,7 @@ MULTIPLIER_NAMES = ('knife_edge',)
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '6636dbae8295be87570295ff1ffb1b794fde98a82dcf330eb9f1149f9d662e6b'
+INPUT_HASH = 'b9e830788356595fa4c59e2e01ff45eb17c5bc14d4ac1e6ae7051feec891f865'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 9, 'constants': 5, 'rhs_q': 4, 'rhs_pose': 13, 'rhs_pose_q': 8, 'pose_rates': 4, 'energy': 9, 'multipliers': 6}
@@ -290,4 +290,41 @@ def jacobian_p(s, p):
     out[0, 0] = (phi_dot*phi_dot)
     out[1, 0] = 2*(a*a)*phi_dot*v/(((a*a) + (k*k))*((a*a) + (k*k))) - phi_dot*v/((a*a) + (k*k))
     out[1, 1] = 2*a*k*phi_dot*v/(((a*a) + (k*k))*((a*a) + (k*k)))
+    return out
+
+
+
+#: families of steady motions (derivation/steady.py): name -> the family's parameter ``value`` (``value_state`` is
+#: the state equal to it), what the motion is, and names of the modes by their largest state
+STEADY_FAMILIES = {'straight': {'value': 'V', 'value_state': 'v', 'description': 'straight running at the speed V (phi_dot = 0)', 'mode_names': {}}}
+
+
+@njit(cache=True)
+def steady_state(_family, _value, p):
+    """Row 0: the closed state of family number ``_family`` of STEADY_FAMILIES at ``_value``; row 1: its derivative
+    in ``_value`` (the family's tangent)."""
+    out = np.zeros((2, 2))
+    a = p[0]
+    k = p[1]
+    if _family == 0:
+        V = _value
+        out[0, 0] = V
+        out[1, 0] = 1
+
+    return out
+
+
+#: functions of the closed state fixed by construction; their gradients are not physical directions
+STATE_INVARIANTS = ()
+
+
+@njit(cache=True)
+def invariant_gradients(s, p):
+    """Gradients of STATE_INVARIANTS, shape (0, 2)."""
+    out = np.zeros((0, 2))
+    v = s[0]
+    phi_dot = s[1]
+    a = p[0]
+    k = p[1]
+
     return out

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk_damped',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:9c16ee95d50b747f501404e86d35c864d6ed8d08b69ebbec14464262f107a6e5
+SymPy 1.14.0; input hash sha256:f252b168dda1dc2463d19399114b31a53cd2e571bdd9881f907e588070992fe1
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table, its rotation resisted by a viscous torque -c r^2 omega per unit mass (Rayleigh function c r^2 |omega|^2/2).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = True
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '9c16ee95d50b747f501404e86d35c864d6ed8d08b69ebbec14464262f107a6e5'
+INPUT_HASH = 'f252b168dda1dc2463d19399114b31a53cd2e571bdd9881f907e588070992fe1'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 182, 'constants': 20, 'rhs_q': 178, 'rhs_pose': 186, 'rhs_pose_q': 183, 'pose_rates': 5, 'energy': 45, 'multipliers': 195, 'power_dissipated': 19}
@@ -844,4 +844,45 @@ def jacobian_p(s, p):
     out[2, 1] = 10*_c26*_c35*_c8*_d37_1/r - 8*_c26*_c39*_d31_1/r + _c26*_d32_1*(-_c16 - _c20)/r + _c26*_d34_1*(_c1*_c4 + _c4**7)/r + _c26*_d38_1*(_c0*_c10 + _c28*_c4)/r + _c26*_d40_1*(_c10*_c13 + _c16*_c8)/r - _c26*(_c0*_c10*_c38 + _c1*_c34*_c4 + _c10*_c13*_c40 - _c16*_c32 + _c16*_c40*_c8 - _c20*_c32 + _c28*_c29 + _c28*_c38*_c4 + _c29*_c30 - 8*_c31*_c39 + _c34*_c4**7 + 10*_c35*_c37*_c8 + 8*_c36*g)/(r*r)
     out[2, 2] = -8*_c26*_c39*_d31_2/r + _c26*_d32_2*(-_c16 - _c20)/r
     out[3, 2] = ((40.0/3.0))*_c0*_c27*_d19_2 + ((1.0/3.0))*_c27*_d15_2*(10*_c0 + 40*_c35) + ((1.0/3.0))*_c27*_d46_2*(-_c14 - _c17) + ((1.0/3.0))*_c27*q3_dot*(-_c11 - _c18*_c8 - _c9)
+    return out
+
+
+
+#: families of steady motions (derivation/steady.py): name -> the family's parameter ``value`` (``value_state`` is
+#: the state equal to it), what the motion is, and names of the modes by their largest state
+STEADY_FAMILIES = {'upright_rolling': {'value': 'Omega', 'value_state': 'q3_dot', 'description': 'upright rolling (q2 = 0) in a straight line at the axle rate Omega', 'mode_names': {'q1_dot': 'heading', 'q2': 'lean', 'q2_dot': 'lean'}}}
+
+
+@njit(cache=True)
+def steady_state(_family, _value, p):
+    """Row 0: the closed state of family number ``_family`` of STEADY_FAMILIES at ``_value``; row 1: its derivative
+    in ``_value`` (the family's tangent)."""
+    out = np.zeros((2, 4))
+    g = p[0]
+    r = p[1]
+    c = p[2]
+    if _family == 0:
+        Omega = _value
+        out[0, 3] = Omega
+        out[1, 3] = 1
+
+    return out
+
+
+#: functions of the closed state fixed by construction; their gradients are not physical directions
+STATE_INVARIANTS = ()
+
+
+@njit(cache=True)
+def invariant_gradients(s, p):
+    """Gradients of STATE_INVARIANTS, shape (0, 4)."""
+    out = np.zeros((0, 4))
+    q2 = s[0]
+    q1_dot = s[1]
+    q2_dot = s[2]
+    q3_dot = s[3]
+    g = p[0]
+    r = p[1]
+    c = p[2]
+
     return out

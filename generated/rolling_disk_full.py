@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:5373ae719a7dbeda5fcbe3e5be3b100204b9c091613ecf15270f075a50a8f956
+SymPy 1.14.0; input hash sha256:39bf4843555f24e897bcee4b21a8c91f46a118b6b1a6f4f302d302a545390aa4
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table: heading q1, lean q2 from the vertical, rotation q3 about the axle, contact point (x, y).
 
@@ -62,7 +62,7 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '5373ae719a7dbeda5fcbe3e5be3b100204b9c091613ecf15270f075a50a8f956'
+INPUT_HASH = '39bf4843555f24e897bcee4b21a8c91f46a118b6b1a6f4f302d302a545390aa4'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 129, 'constants': 7, 'rhs_q': 125, 'rhs_pose': 134, 'rhs_pose_q': 130, 'pose_rates': 5, 'energy': 45, 'multipliers': 113}
@@ -629,4 +629,43 @@ def jacobian_p(s, p):
     _c25 = (_c2*_c2*_c2)
     out[2, 0] = 8*_c11*_c20/r + 4*_c11*(_c13 + _c15)/r
     out[2, 1] = 10*_c11*_c19*_c25*_d22_1/r + _c11*_d18_1*(_c1*_c2 + _c2**7)/r + _c11*_d23_1*(_c0*_c21 + _c13*_c2)/r + _c11*_d24_1*(_c21*_c4 + _c25*_c8)/r - _c11*(_c0*_c21*_c23 + _c1*_c18*_c2 + _c13*_c14 + _c13*_c2*_c23 + _c14*_c15 + _c18*_c2**7 + 10*_c19*_c22*_c25 + 8*_c20*g + _c21*_c24*_c4 + _c24*_c25*_c8)/(r*r)
+    return out
+
+
+
+#: families of steady motions (derivation/steady.py): name -> the family's parameter ``value`` (``value_state`` is
+#: the state equal to it), what the motion is, and names of the modes by their largest state
+STEADY_FAMILIES = {'upright_rolling': {'value': 'Omega', 'value_state': 'q3_dot', 'description': 'upright rolling (q2 = 0) in a straight line at the axle rate Omega', 'mode_names': {'q1_dot': 'heading', 'q2': 'lean', 'q2_dot': 'lean'}}}
+
+
+@njit(cache=True)
+def steady_state(_family, _value, p):
+    """Row 0: the closed state of family number ``_family`` of STEADY_FAMILIES at ``_value``; row 1: its derivative
+    in ``_value`` (the family's tangent)."""
+    out = np.zeros((2, 4))
+    g = p[0]
+    r = p[1]
+    if _family == 0:
+        Omega = _value
+        out[0, 3] = Omega
+        out[1, 3] = 1
+
+    return out
+
+
+#: functions of the closed state fixed by construction; their gradients are not physical directions
+STATE_INVARIANTS = ()
+
+
+@njit(cache=True)
+def invariant_gradients(s, p):
+    """Gradients of STATE_INVARIANTS, shape (0, 4)."""
+    out = np.zeros((0, 4))
+    q2 = s[0]
+    q1_dot = s[1]
+    q2_dot = s[2]
+    q3_dot = s[3]
+    g = p[0]
+    r = p[1]
+
     return out

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:723fea44e5dac0a0c50f380e62f88200f46ca193cccc997c0715ce693e7cd510
+SymPy 1.14.0; input hash sha256:d390ea22f8a7b320f5aa6c75ce9769978ad1dfa59b7b2af53f8dc370e0c33b58
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -67,7 +67,7 @@ HAS_DISSIPATION = False
 EXPORTS = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy',)
-INPUT_HASH = '723fea44e5dac0a0c50f380e62f88200f46ca193cccc997c0715ce693e7cd510'
+INPUT_HASH = 'd390ea22f8a7b320f5aa6c75ce9769978ad1dfa59b7b2af53f8dc370e0c33b58'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 10, 'constants': 6, 'rhs_q': 4, 'energy': 9, 'invariants': 9, 'frequencies': 5, 'growth_rates': 2, 'drive_rates': 5}
@@ -227,4 +227,45 @@ def jacobian_p(s, p):
     out[1, 0] = -(A_theta*A_theta)*_c0/(L*L)
     out[1, 2] = 2*(A_theta*A_theta)*_c0*g/(L*L*L)
     out[1, 3] = -(1.0/2.0)*(A_theta*A_theta)*g/(L*L)
+    return out
+
+
+
+#: families of steady motions (derivation/steady.py): name -> the family's parameter ``value`` (``value_state`` is
+#: the state equal to it), what the motion is, and names of the modes by their largest state
+STEADY_FAMILIES = {'steady_spin': {'value': 'Omega', 'value_state': 'A_phi', 'description': 'upright steady spin theta = 0 at the rate Omega', 'mode_names': {'A_theta': 'tilt', 'theta_dot': 'tilt'}}}
+
+
+@njit(cache=True)
+def steady_state(_family, _value, p):
+    """Row 0: the closed state of family number ``_family`` of STEADY_FAMILIES at ``_value``; row 1: its derivative
+    in ``_value`` (the family's tangent)."""
+    out = np.zeros((2, 2))
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    if _family == 0:
+        Omega = _value
+        out[0, 1] = Omega
+        out[1, 1] = 1
+
+    return out
+
+
+#: functions of the closed state fixed by construction; their gradients are not physical directions
+STATE_INVARIANTS = ()
+
+
+@njit(cache=True)
+def invariant_gradients(s, p):
+    """Gradients of STATE_INVARIANTS, shape (0, 2)."""
+    out = np.zeros((0, 2))
+    A_theta = s[0]
+    A_phi = s[1]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+
     return out

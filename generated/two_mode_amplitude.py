@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:5f10659616b506c2c56c8c92b7b133c873299d2d8a8af924e00cd01271fcf38a
+SymPy 1.14.0; input hash sha256:208207b8c70d61dbfb72095fd968bf98f26c58e44ca1849226a9a59619c6ad10
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -71,7 +71,7 @@ HAS_DISSIPATION = False
 EXPORTS = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy', 'log_A1_A2')
-INPUT_HASH = '5f10659616b506c2c56c8c92b7b133c873299d2d8a8af924e00cd01271fcf38a'
+INPUT_HASH = '208207b8c70d61dbfb72095fd968bf98f26c58e44ca1849226a9a59619c6ad10'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 24, 'constants': 14, 'rhs_q': 10, 'energy': 12, 'invariants': 19, 'frequencies': 12, 'growth_rates': 11, 'drive_rates': 12}
@@ -307,4 +307,48 @@ def jacobian_p(s, p):
     out[2, 2] = (A1*A1)*_c0*_c5*_d2_2*g/_c2 + _c0*_d5_2*g*((A1*A1)*_c4 - (A2*A2)*_c3)/_c2 - _c0*_c5*_d2_2*g*((A1*A1)*_c4 - (A2*A2)*_c3)/(_c2*_c2)
     out[2, 3] = _c5*_d0_3*g*((A1*A1)*_c4 - (A2*A2)*_c3)/_c2
     out[2, 4] = _c5*_d0_4*g*((A1*A1)*_c4 - (A2*A2)*_c3)/_c2
+    return out
+
+
+
+#: families of steady motions (derivation/steady.py): name -> the family's parameter ``value`` (``value_state`` is
+#: the state equal to it), what the motion is, and names of the modes by their largest state
+STEADY_FAMILIES = {'steady_spin': {'value': 'Omega', 'value_state': 'A_phi', 'description': 'upright steady spin theta1 = theta2 = 0 at the rate Omega', 'mode_names': {'A1': 'theta1', 'A2': 'theta2', 'theta1_dot': 'theta1', 'theta2_dot': 'theta2'}}}
+
+
+@njit(cache=True)
+def steady_state(_family, _value, p):
+    """Row 0: the closed state of family number ``_family`` of STEADY_FAMILIES at ``_value``; row 1: its derivative
+    in ``_value`` (the family's tangent)."""
+    out = np.zeros((2, 3))
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+    if _family == 0:
+        Omega = _value
+        out[0, 2] = Omega
+        out[1, 2] = 1
+
+    return out
+
+
+#: functions of the closed state fixed by construction; their gradients are not physical directions
+STATE_INVARIANTS = ()
+
+
+@njit(cache=True)
+def invariant_gradients(s, p):
+    """Gradients of STATE_INVARIANTS, shape (0, 3)."""
+    out = np.zeros((0, 3))
+    A1 = s[0]
+    A2 = s[1]
+    A_phi = s[2]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+
     return out

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:63201b2d85c73cf418b4163469f0680f3e655d76a5b87be2ee5f497620763552
+SymPy 1.14.0; input hash sha256:90f1525bed521d63f46fce67f3b5d947e002c4c0bca0a923a3f659a8cc3e2628
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -65,7 +65,7 @@ MULTIPLIER_NAMES = ('Const22', 'Const23')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '63201b2d85c73cf418b4163469f0680f3e655d76a5b87be2ee5f497620763552'
+INPUT_HASH = '90f1525bed521d63f46fce67f3b5d947e002c4c0bca0a923a3f659a8cc3e2628'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 152, 'constants': 107, 'rhs_q': 65, 'rhs_pose': 166, 'rhs_pose_q': 76, 'pose_rates': 13, 'energy': 58, 'multipliers': 166, 'frequencies': 12}
@@ -869,4 +869,50 @@ def jacobian_p(s, p):
     out[4, 2] = D*_c21*_c29*_c32*_d4_2 + D*_c26*_c29*_c34*_d23_2*theta1 + D*_c29*_d0_2*(-8*_c13*_c30*theta1 + _c28*_c34*theta2) + D*_c29*_d31_2*(-_c24*theta1 + _c27) + D*_d29_2*(_c0*_c28*_c34*theta2 - _c2*_c33 + _c21*_c32*_c4 + _c23*_c26*_c34*theta1 - _c24*_c31*theta1 + _c27*_c31 - 8*_c30*theta1*(_c0*_c13 + 2*_c15 + _c22))
     out[4, 3] = D*_c29*_d31_3*(-_c24*theta1 + _c27) + D*_c29*_d34_3*(_c0*_c28*theta2 + _c23*_c26*theta1) + D*_d29_3*(_c0*_c28*_c34*theta2 - _c2*_c33 + _c21*_c32*_c4 + _c23*_c26*_c34*theta1 - _c24*_c31*theta1 + _c27*_c31 - 8*_c30*theta1*(_c0*_c13 + 2*_c15 + _c22)) + _c29*(_c0*_c28*_c34*theta2 - _c2*_c33 + _c21*_c32*_c4 + _c23*_c26*_c34*theta1 - _c24*_c31*theta1 + _c27*_c31 - 8*_c30*theta1*(_c0*_c13 + 2*_c15 + _c22))
     out[4, 4] = -8*D*_c0*_c29*_c30*_d13_4*theta1 + D*_c0*_c29*_c34*_d28_4*theta2 - D*_c2*_c29*_d33_4 + D*_c21*_c29*_c4*_d32_4 + D*_c23*_c29*_c34*_d26_4*theta1 - 16*D*_c29*_c30*_d15_4*theta1 - D*_c29*_c31*_d24_4*theta1 + D*_c29*_c31*_d27_4 + D*_d29_4*(_c0*_c28*_c34*theta2 - _c2*_c33 + _c21*_c32*_c4 + _c23*_c26*_c34*theta1 - _c24*_c31*theta1 + _c27*_c31 - 8*_c30*theta1*(_c0*_c13 + 2*_c15 + _c22))
+    return out
+
+
+
+#: families of steady motions (derivation/steady.py): name -> the family's parameter ``value`` (``value_state`` is
+#: the state equal to it), what the motion is, and names of the modes by their largest state
+STEADY_FAMILIES = {'steady_spin': {'value': 'Omega', 'value_state': 'phi_dot', 'description': 'upright steady spin theta1 = theta2 = 0 at the rate Omega', 'mode_names': {'A1': 'theta1', 'A2': 'theta2', 'theta1': 'theta1', 'theta1_dot': 'theta1', 'theta2': 'theta2', 'theta2_dot': 'theta2'}}}
+
+
+@njit(cache=True)
+def steady_state(_family, _value, p):
+    """Row 0: the closed state of family number ``_family`` of STEADY_FAMILIES at ``_value``; row 1: its derivative
+    in ``_value`` (the family's tangent)."""
+    out = np.zeros((2, 5))
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+    if _family == 0:
+        Omega = _value
+        out[0, 4] = Omega
+        out[1, 4] = 1
+
+    return out
+
+
+#: functions of the closed state fixed by construction; their gradients are not physical directions
+STATE_INVARIANTS = ()
+
+
+@njit(cache=True)
+def invariant_gradients(s, p):
+    """Gradients of STATE_INVARIANTS, shape (0, 5)."""
+    out = np.zeros((0, 5))
+    theta1 = s[0]
+    theta2 = s[1]
+    theta1_dot = s[2]
+    theta2_dot = s[3]
+    phi_dot = s[4]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+
     return out

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py and derivation/truncation.py.
-SymPy 1.14.0; input hash sha256:890aec7260c535ea3b4c814546f9a0185ff63def35a4ea3a3b3944050d4b0e06
+SymPy 1.14.0; input hash sha256:ea39fa2bb176e7ce6db2bcc8a28a8258ca217cd98ef9662688b3db7a8088cdef
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -65,7 +65,7 @@ MULTIPLIER_NAMES = ('Const22', 'Const23')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '890aec7260c535ea3b4c814546f9a0185ff63def35a4ea3a3b3944050d4b0e06'
+INPUT_HASH = 'ea39fa2bb176e7ce6db2bcc8a28a8258ca217cd98ef9662688b3db7a8088cdef'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 80, 'constants': 52, 'rhs_q': 35, 'rhs_pose': 91, 'rhs_pose_q': 46, 'pose_rates': 13, 'energy': 58, 'multipliers': 56, 'frequencies': 12}
@@ -654,4 +654,50 @@ def jacobian_p(s, p):
     out[4, 2] = ((1.0/8.0))*D*_c11*_c8*_d5_2*(theta1*theta1)/_c5 + ((1.0/8.0))*D*_c8*_d13_2*(-_c12*(_c9*_c9*_c9*_c9) + 8*_c15*theta2)/_c5 + ((1.0/8.0))*D*_c8*_d14_2*(_c12*_c15 + theta2*(math.cos(4*alpha) - 1))/_c5 + ((1.0/8.0))*D*_d8_2*(-_c11*_c6*(theta2*theta2) + _c11*_c7*(theta1*theta1) - _c12*_c13*(_c9*_c9*_c9*_c9) + _c12*_c14*_c15 - _c12*g*theta2*(_c4*_c5 + 2*_c4*_c6 - _c6) + 8*_c13*_c15*theta2 + _c14*theta2*(math.cos(4*alpha) - 1))/_c5 + _d5_2*(-(1.0/8.0)*D*_c12*_c4*_c8*g*theta2/_c5 - (1.0/8.0)*D*_c8*(-_c11*_c6*(theta2*theta2) + _c11*_c7*(theta1*theta1) - _c12*_c13*(_c9*_c9*_c9*_c9) + _c12*_c14*_c15 - _c12*g*theta2*(_c4*_c5 + 2*_c4*_c6 - _c6) + 8*_c13*_c15*theta2 + _c14*theta2*(math.cos(4*alpha) - 1))/(_c5*_c5))
     out[4, 3] = ((1.0/8.0))*D*_c8*_d13_3*(-_c12*(_c9*_c9*_c9*_c9) + 8*_c15*theta2)/_c5 + ((1.0/8.0))*D*_c8*_d14_3*(_c12*_c15 + theta2*(math.cos(4*alpha) - 1))/_c5 + ((1.0/8.0))*_c8*(-_c11*_c6*(theta2*theta2) + _c11*_c7*(theta1*theta1) - _c12*_c13*(_c9*_c9*_c9*_c9) + _c12*_c14*_c15 - _c12*g*theta2*(_c4*_c5 + 2*_c4*_c6 - _c6) + 8*_c13*_c15*theta2 + _c14*theta2*(math.cos(4*alpha) - 1))/_c5
     out[4, 4] = -(1.0/2.0)*D*_c12*_c13*_c8*(_c9*_c9*_c9)*_d9_4/_c5 - (1.0/8.0)*D*_c12*_c8*_d4_4*g*theta2*(_c5 + 2*_c6)/_c5 - (1.0/2.0)*D*_c14*_c8*theta2*math.sin(4*alpha)/_c5 + ((1.0/8.0))*D*_c8*_d11_4*(-_c6*(theta2*theta2) + _c7*(theta1*theta1))/_c5 + ((1.0/8.0))*D*_c8*_d15_4*(_c12*_c14 + 8*_c13*theta2)/_c5
+    return out
+
+
+
+#: families of steady motions (derivation/steady.py): name -> the family's parameter ``value`` (``value_state`` is
+#: the state equal to it), what the motion is, and names of the modes by their largest state
+STEADY_FAMILIES = {'steady_spin': {'value': 'Omega', 'value_state': 'phi_dot', 'description': 'upright steady spin theta1 = theta2 = 0 at the rate Omega', 'mode_names': {'A1': 'theta1', 'A2': 'theta2', 'theta1': 'theta1', 'theta1_dot': 'theta1', 'theta2': 'theta2', 'theta2_dot': 'theta2'}}}
+
+
+@njit(cache=True)
+def steady_state(_family, _value, p):
+    """Row 0: the closed state of family number ``_family`` of STEADY_FAMILIES at ``_value``; row 1: its derivative
+    in ``_value`` (the family's tangent)."""
+    out = np.zeros((2, 5))
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+    if _family == 0:
+        Omega = _value
+        out[0, 4] = Omega
+        out[1, 4] = 1
+
+    return out
+
+
+#: functions of the closed state fixed by construction; their gradients are not physical directions
+STATE_INVARIANTS = ()
+
+
+@njit(cache=True)
+def invariant_gradients(s, p):
+    """Gradients of STATE_INVARIANTS, shape (0, 5)."""
+    out = np.zeros((0, 5))
+    theta1 = s[0]
+    theta2 = s[1]
+    theta1_dot = s[2]
+    theta2_dot = s[3]
+    phi_dot = s[4]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+
     return out

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/rigid_emit.py (make derive) from the rigid body 'two_mode_rigid'
 through derivation/rigid.py (Lagrange-d'Alembert in body quasi-velocities).
-SymPy 1.14.0; input hash sha256:db1eab704c1e61bcb7d2c62868877994d4a54ff8db4d01c692e54edbf6cc1986
+SymPy 1.14.0; input hash sha256:cd22fba57cd6502797576e627871a54b3a17d4b796c1cf54a2f051e2f168d03f
 
 Chiral knife edge of the paper's section III as the real rigid body: massless inverted-U bar of half-length L, masses M/2 a distance ell below its ends, contact at the lowest point of a circle of radius D in a vertical plane at the chiral angle alpha to the bar; per unit mass, exact in the tilts.
 
@@ -72,7 +72,7 @@ PRESETS = {}
 PRESET_SOURCES = {}
 #: the model file the body comes from
 SOURCE = 'knifeedge.derive.rigid_knife_edge'
-INPUT_HASH = 'db1eab704c1e61bcb7d2c62868877994d4a54ff8db4d01c692e54edbf6cc1986'
+INPUT_HASH = 'cd22fba57cd6502797576e627871a54b3a17d4b796c1cf54a2f051e2f168d03f'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 253, 'constants': 25, 'rhs_q': 221, 'rhs_pose': 293, 'rhs_pose_q': 261, 'pose_rates': 73, 'energy': 56, 'multipliers': 267}
@@ -1511,4 +1511,64 @@ def jacobian_p(s, p):
     out[6, 2] = _d65_2*n_x + _d67_2*n_y + _d68_2*n_z
     out[6, 3] = _d65_3*n_x + _d67_3*n_y + _d68_3*n_z
     out[6, 4] = _d65_4*n_x + _d67_4*n_y + _d68_4*n_z
+    return out
+
+
+
+#: families of steady motions (derivation/steady.py): name -> the family's parameter ``value`` (``value_state`` is
+#: the state equal to it), what the motion is, and names of the modes by their largest state
+STEADY_FAMILIES = {'steady_spin': {'value': 'Omega', 'value_state': 'omega_z', 'description': 'upright spin about the body z axis (n = e_z) at the rate Omega', 'mode_names': {'A_pitch': 'pitch', 'A_roll': 'roll', 'n_x': 'pitch', 'n_y': 'roll'}}}
+
+
+@njit(cache=True)
+def steady_state(_family, _value, p):
+    """Row 0: the closed state of family number ``_family`` of STEADY_FAMILIES at ``_value``; row 1: its derivative
+    in ``_value`` (the family's tangent)."""
+    out = np.zeros((2, 7))
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+    if _family == 0:
+        Omega = _value
+        out[0, 2] = 1
+        out[0, 5] = Omega
+        out[0, 6] = Omega
+        out[1, 5] = 1
+        out[1, 6] = 1
+
+    return out
+
+
+#: functions of the closed state fixed by construction; their gradients are not physical directions
+STATE_INVARIANTS = ('|n|^2 = 1 (n is a unit vector)', 'omega_n = omega . n (the spin carried as a state)')
+
+
+@njit(cache=True)
+def invariant_gradients(s, p):
+    """Gradients of STATE_INVARIANTS, shape (2, 7)."""
+    out = np.zeros((2, 7))
+    n_x = s[0]
+    n_y = s[1]
+    n_z = s[2]
+    omega_x = s[3]
+    omega_y = s[4]
+    omega_z = s[5]
+    omega_n = s[6]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+    out[0, 0] = 2*n_x
+    out[0, 1] = 2*n_y
+    out[0, 2] = 2*n_z
+    out[1, 0] = -omega_x
+    out[1, 1] = -omega_y
+    out[1, 2] = -omega_z
+    out[1, 3] = -n_x
+    out[1, 4] = -n_y
+    out[1, 5] = -n_z
+    out[1, 6] = 1
     return out
