@@ -110,7 +110,7 @@ common = dict(
     # upright rolling along a straight line (decaying under the damping torque of rolling_disk_damped)
     steady=(Steady("upright_rolling", sp.Symbol("Omega", real=True), {q3_dot: sp.Symbol("Omega", real=True)},
                    "upright rolling (q2 = 0) in a straight line at the axle rate Omega",
-                   {"q2": "lean", "q2_dot": "lean", "q1_dot": "heading"}),),
+                   {"q2": "lean", "q2_dot": "lean"}),),
 )
 
 units = {x: "m", y: "m", q1: "rad", q2: "rad", q3: "rad", g: "m/s^2", r: "m"}

@@ -54,6 +54,7 @@ def test_two_mode_slow_spin_growth_is_the_averaged_two_mode_equations():
     np.testing.assert_allclose(got, sorted(amp.module.growth_rates(p)), rtol=1e-6)
 
 
+@pytest.mark.slow  # the celt's Jacobian compiles in 10-20 s cold
 @pytest.mark.parametrize("preset", ["kane_levinson_1982", "schoemer"])
 def test_celt_slow_spin_slopes_are_moffatt_tokieda(preset):
     m, amp = ke.load("celt"), ke.load("celt", "amplitude")
@@ -64,6 +65,7 @@ def test_celt_slow_spin_slopes_are_moffatt_tokieda(preset):
     assert slopes["roll"] == pytest.approx(-mu, rel=1e-8)
 
 
+@pytest.mark.slow
 def test_celt_trivial_directions_are_separated_by_construction():
     m = ke.load("celt")
     p = m.preset("kane_levinson_1982")  # damped: the spin decays along the family
@@ -98,3 +100,17 @@ def test_bad_family_and_interval_are_named():
         ke.stability(m, p, "straight", [1.0])
     with pytest.raises(ValueError, match="`interval`"):
         ke.stability_boundaries(m, p, "steady_spin", (1.0, 0.0))
+
+
+@pytest.mark.slow  # the celt's Jacobian
+def test_docs_snippets_run(tmp_path, monkeypatch):
+    """Every Python block of docs/stability.md runs as pasted."""
+    import re
+    from pathlib import Path
+
+    text = (Path(__file__).resolve().parent.parent / "docs" / "stability.md").read_text()
+    blocks = re.findall(r"```python\n(.*?)```", text, flags=re.S)
+    assert len(blocks) >= 2
+    monkeypatch.chdir(tmp_path)
+    for code in blocks:
+        exec(compile(code, "docs/stability.md", "exec"), {})

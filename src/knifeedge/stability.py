@@ -120,7 +120,7 @@ def _basis(rows: np.ndarray, n: int) -> tuple:
 def _name(vector: np.ndarray, names: tuple, mode_names: dict, skip: str) -> str:
     weights = np.abs(vector)
     labelled = [i for i, nm in enumerate(names) if nm in mode_names]
-    if labelled and weights[labelled].max() > 0:
+    if labelled and weights[labelled].max() > 1e-8 * weights.max():
         i = max(labelled, key=lambda j: weights[j])
         return mode_names[names[i]]
     order = [i for i in np.argsort(-weights) if names[i] != skip] or [int(np.argmax(weights))]
