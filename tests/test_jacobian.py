@@ -120,3 +120,16 @@ def test_implicit_scipy_methods_use_the_generated_jacobian(method, monkeypatch):
     run = ke.simulate(m, y0, (0.0, 20.0), p, method=method, rtol=1e-8, atol=1e-10)
     assert calls, f"{method} never called the generated Jacobian"
     np.testing.assert_allclose(run.y[:, -1], ref.y[:, -1], rtol=0, atol=1e-5)
+
+
+def test_a_module_written_before_the_jacobians_says_regenerate():
+    import types
+
+    m = ke.load("single_mode")
+    dropped = ("jacobian", "jacobian_p", "invariant_gradients", "steady_state", "STEADY_FAMILIES", "STATE_INVARIANTS")
+    old = ke.Model(types.SimpleNamespace(**{k: v for k, v in vars(m.module).items() if k not in dropped}), False)
+    p = m.params(m.default_params)
+    y = m.state(theta=0.01, theta_dot=0.0, phi_dot=0.1)
+    for call in (lambda: old.jacobian(y, p), lambda: ke.linearize(old, y, p), lambda: ke.lyapunov(old, y, p, 1.0)):
+        with pytest.raises(ValueError, match="regenerate"):
+            call()

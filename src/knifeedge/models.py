@@ -305,13 +305,18 @@ class Model:
         ``y``: the closed state, or the pose-extended state (its pose is ignored: the closed state's rates
         do not depend on it).  Returns shape (n_closed, n_closed), ``J[i, j] = d rate_i / d y_j``.
         """
-        return self.module.jacobian(self._closed(y), self.check_params(p))
+        y = self._closed(y)
+        return self.module.jacobian(y, self.check_params(p))
 
     def jacobian_p(self, y, p) -> np.ndarray:
         """``d rhs / d p`` of the closed state at ``y``: shape (n_closed, n_params), ``J[i, j] = d rate_i / d p_j``."""
-        return self.module.jacobian_p(self._closed(y), self.check_params(p))
+        y = self._closed(y)
+        return self.module.jacobian_p(y, self.check_params(p))
 
     def _closed(self, y) -> np.ndarray:
+        if not hasattr(self.module, "invariant_gradients"):
+            raise ValueError(f"the module of {self.name} ({self.fidelity}) was written without Jacobians and steady "
+                             f"motions by an older knifeedge: regenerate it (make derive, or knifeedge derive)")
         y = self._states(y)
         if y.ndim != 1:
             raise ValueError(f"`y` must be one state of shape ({len(self.closed_state_names)},), got shape {y.shape}")
