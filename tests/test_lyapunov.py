@@ -68,3 +68,19 @@ def test_at_an_asymptotically_stable_steady_spin_the_exponents_are_the_eigenvalu
     res = ke.lyapunov(m, y0, p, 4000.0, tau=1.0)
     # the exponents approach their limits like log(transient)/T
     np.testing.assert_allclose(res.exponents, expected, rtol=0, atol=2e-3)
+
+
+@pytest.mark.slow
+def test_on_an_integrable_body_the_exponents_fall_like_log_t_over_t():
+    """The rolling disk is integrable (Chaplygin; Appell and Korteweg): near stable upright rolling its motion is
+    quasi-periodic, every exponent is 0, and the finite-time estimates fall like log(T)/T."""
+    m = ke.load("rolling_disk")
+    p = m.params(g=9.81, r=0.1)
+    y0 = m.state(q2=0.05, q1_dot=0.0, q2_dot=0.0, q3_dot=8.0)  # above the critical 5.72 rad/s
+    largest = {}
+    for t_end in (1e3, 1e4):
+        res = ke.lyapunov(m, y0, p, t_end)
+        largest[t_end] = float(np.abs(res.exponents).max())
+        assert 0.3 < largest[t_end] * t_end / np.log(t_end) < 3.0
+    expected = (np.log(1e4) / 1e4) / (np.log(1e3) / 1e3)  # 0.133
+    assert largest[1e4] / largest[1e3] == pytest.approx(expected, rel=0.3)
