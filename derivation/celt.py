@@ -22,6 +22,7 @@ from __future__ import annotations
 import sympy as sp
 
 from .rigid import Ellipsoid, RigidBody
+from .steady import UPRIGHT_SPIN
 
 a, b, c, h, m, g = sp.symbols("a b c h m g", positive=True)
 I_xx, I_yy, I_zz = sp.symbols("I_xx I_yy I_zz", positive=True)
@@ -47,6 +48,7 @@ def celt() -> RigidBody:
     inertia = sp.Matrix([[I_xx, I_xy, I_xz], [I_xy, I_yy, I_yz], [I_xz, I_yz, I_zz]])
     return RigidBody(
         name="celt",
+        steady=(UPRIGHT_SPIN,),
         mass=m,
         inertia=inertia,
         shape=Ellipsoid(a, b, c, centre=(0, 0, h)),

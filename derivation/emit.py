@@ -20,7 +20,7 @@ from sympy.printing.pycode import PythonCodePrinter
 
 from knifeedge.modulecheck import seal
 
-from . import averaging, drawing, engine, models, names, truncation
+from . import averaging, drawing, engine, jacobian, models, names, steady, truncation
 from .averaging import AmplitudeSystem
 from .fidelities import FIDELITIES
 
@@ -504,7 +504,8 @@ def multipliers({args}):
 {nl.join(unpack_p)}
 {nl.join(lam_lines)}
     return out
-''' + drawing.module_source(system) + extra_src
+''' + drawing.module_source(system) + extra_src + jacobian.block_source(rates, system.state, spec.params) \
+        + steady.block_source(spec.steady, system.state, spec.params)
 
 
 def _model_metadata(system) -> str:
@@ -639,7 +640,8 @@ def invariants(s, p):
 {nl.join(_unpack(params, "p"))}
 {nl.join(inv_lines)}
     return out
-{freq_src}{extra_src}'''
+{freq_src}{extra_src}''' + jacobian.block_source(system.rates, system.state, spec.params) \
+        + steady.block_source(spec.steady, system.state, spec.params, rename=rename)
 
 
 def _amplitude_defaults(system: AmplitudeSystem) -> dict:

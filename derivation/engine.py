@@ -188,6 +188,8 @@ class ModelSpec:
     extra_source: str = ""
     exports: tuple = ()
     drawing: object = None
+    #: families of steady motions (:class:`~knifeedge.derive.steady.Steady`), written into the modules
+    steady: tuple = ()
     #: ``file:line`` where the spec was constructed (set automatically; named in every error)
     defined_at: str = field(default="", init=False, compare=False)
 

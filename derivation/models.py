@@ -12,6 +12,7 @@ from __future__ import annotations
 import sympy as sp
 
 from .engine import ModelSpec
+from .steady import Steady
 from .sleigh import DIMENSIONS as _SLEIGH_DIMENSIONS, chaplygin_sleigh
 
 t = sp.Symbol("t", real=True)
@@ -25,6 +26,8 @@ x_ddot, y_ddot, phi_ddot = sp.symbols("x_ddot y_ddot phi_ddot", real=True)
 theta, theta_dot, theta_ddot = sp.symbols("theta theta_dot theta_ddot", real=True)
 theta1, theta1_dot, theta1_ddot = sp.symbols("theta1 theta1_dot theta1_ddot", real=True)
 theta2, theta2_dot, theta2_ddot = sp.symbols("theta2 theta2_dot theta2_ddot", real=True)
+#: the spin rate of the steady spins (derivation/steady.py)
+Omega = sp.Symbol("Omega", real=True)
 
 #: unit vector along the bar, u_phi = (cos phi, sin phi)
 u_phi = sp.Matrix([sp.cos(phi), sp.sin(phi)])
@@ -102,6 +105,8 @@ def _single_mode() -> ModelSpec:
         units=units((x, y, theta, phi, g, ell, L, D)),
         defaults={g: 1.0, ell: 1.0, L: 1.0, D: 1.0, theta: 1e-3, phi_dot: 0.1},
         reversal_events=(phi_dot,),
+        steady=(Steady("steady_spin", Omega, {phi_dot: Omega}, "upright steady spin theta = 0 at the rate Omega",
+                       {"theta": "tilt", "theta_dot": "tilt", "A_theta": "tilt"}),),
         validity={"reduced": {theta: SMALL_TILT["single_mode"]}, "amplitude": {theta: SMALL_TILT["single_mode"]}},
         validity_description=VALIDITY_DESCRIPTION,
         description=(
@@ -138,6 +143,10 @@ def _two_mode() -> ModelSpec:
         units=units((x, y, theta1, theta2, phi, g, ell, L, D, alpha)),
         defaults={g: 1.0, ell: 1.0, L: 2.0, D: 0.5, alpha: sp.pi / 4, theta1: 1e-3, theta2: 1e-3, phi_dot: 0.1},
         reversal_events=(phi_dot,),
+        steady=(Steady("steady_spin", Omega, {phi_dot: Omega},
+                       "upright steady spin theta1 = theta2 = 0 at the rate Omega",
+                       {"theta1": "theta1", "theta1_dot": "theta1", "A1": "theta1", "theta2": "theta2",
+                        "theta2_dot": "theta2", "A2": "theta2"}),),
         validity={fid: {theta1: SMALL_TILT["two_mode"], theta2: SMALL_TILT["two_mode"]}
                   for fid in ("reduced", "amplitude")},
         validity_description=VALIDITY_DESCRIPTION,

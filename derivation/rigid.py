@@ -207,6 +207,8 @@ class RigidBody:
     defaults: dict = field(default_factory=dict)
     default_state: dict = field(default_factory=dict)
     hangs: bool = False
+    #: families of steady motions (:class:`~knifeedge.derive.steady.Steady`)
+    steady: tuple = ()
 
     def check(self) -> None:
         """Collect every problem of the description and raise one ``ValueError``."""

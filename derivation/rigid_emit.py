@@ -17,7 +17,7 @@ from pathlib import Path
 
 import sympy as sp
 
-from . import drawing, emit, rigid
+from . import drawing, emit, jacobian, rigid, steady
 from .emit import _cse_block, _rhs_source, _unpack
 
 
@@ -280,4 +280,6 @@ def multipliers(s, p):
 {nl.join(lam_lines)}
     return out
 {_INITIAL_STATE.format(n=n, n_pose=n + npose, VERTICAL=VERTICAL_CHECK)}''' + body_values_source(body, spec.params) \
-        + drawing.module_source(system)
+        + drawing.module_source(system) \
+        + jacobian.block_source(rates, system.state, spec.params) \
+        + steady.block_source(body.steady, system.state, spec.params, steady.rigid_invariants(system.state))

@@ -28,6 +28,7 @@ import sympy as sp
 
 from . import models
 from .rigid import Circle, RigidBody
+from .steady import UPRIGHT_SPIN
 
 g, ell, L, D, alpha = models.g, models.ell, models.L, models.D, models.alpha
 x, y, phi = models.x, models.y, models.phi
@@ -40,6 +41,7 @@ def knife_edge_body() -> RigidBody:
     """The two-mode knife edge as a :class:`RigidBody` (per unit mass)."""
     return RigidBody(
         name="two_mode_rigid",
+        steady=(UPRIGHT_SPIN,),
         mass=sp.S.One,
         inertia=sp.diag(0, L**2, L**2),
         shape=Circle(D, axis=(-sp.sin(alpha), sp.cos(alpha), 0), centre=(0, 0, ell + D)),

@@ -15,7 +15,7 @@ from pathlib import Path
 
 import sympy as sp
 
-from . import emit, rigid, rigid_emit, rigid_small
+from . import emit, jacobian, rigid, rigid_emit, rigid_small, steady
 from .emit import _cse_block, _rhs_source, _unpack
 from .rigid_emit import VERTICAL_CHECK
 
@@ -251,4 +251,6 @@ SYMPY_VERSION = {sp.__version__!r}
 OP_COUNTS = {ops!r}
 
 
-{rhs_src}{extra}{initial}''' + rigid_emit.body_values_source(body, spec.params)
+{rhs_src}{extra}{initial}''' + rigid_emit.body_values_source(body, spec.params) \
+        + jacobian.block_source(system.rates, system.state, spec.params) \
+        + steady.block_source(body.steady, system.state, spec.params)

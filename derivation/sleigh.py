@@ -19,6 +19,7 @@ from __future__ import annotations
 import sympy as sp
 
 from .engine import ModelSpec
+from .steady import Steady
 
 a, k = sp.symbols("a k", positive=True)
 x, y, phi = sp.symbols("x y phi", real=True)
@@ -55,6 +56,8 @@ def chaplygin_sleigh() -> ModelSpec:
         units={a: "length", k: "length", x: "length", y: "length", phi: "rad", v: "length/time"},
         defaults={a: 0.5, k: 0.8, v: 0.1, phi_dot: 0.5},
         reversal_events=(phi_dot,),
+        steady=(Steady("straight", sp.Symbol("V", real=True), {v: sp.Symbol("V", real=True)},
+                       "straight running at the speed V (phi_dot = 0)"),),
         description=(
             "Chaplygin sleigh: a rigid body on the plane with a knife edge at its rear contact point "
             "(x, y) that forbids sideways motion; heading phi, centre of mass at distance a ahead of "

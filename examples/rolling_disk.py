@@ -28,6 +28,7 @@ import sympy as sp
 
 from knifeedge.derive import ModelSpec
 from knifeedge.derive.drawing import Drawing, u
+from knifeedge.derive.steady import Steady
 
 g, r, c = sp.symbols("g r c", positive=True)
 x, y, q1, q2, q3 = sp.symbols("x y q1 q2 q3", real=True)
@@ -106,6 +107,10 @@ common = dict(
     validity={"full": {q2: math.pi / 2}},
     validity_description="the disk lies flat on the table at |q2| = pi/2; beyond, it would pass through it",
     drawing=drawing,
+    # upright rolling along a straight line (decaying under the damping torque of rolling_disk_damped)
+    steady=(Steady("upright_rolling", sp.Symbol("Omega", real=True), {q3_dot: sp.Symbol("Omega", real=True)},
+                   "upright rolling (q2 = 0) in a straight line at the axle rate Omega",
+                   {"q2": "lean", "q2_dot": "lean"}),),
 )
 
 units = {x: "m", y: "m", q1: "rad", q2: "rad", q3: "rad", g: "m/s^2", r: "m"}

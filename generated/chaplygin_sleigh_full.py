@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/sleigh.py (model 'chaplygin_sleigh',
 constraints knife_edge) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:ea57f398f9250fbe73e828cfa5116f09fea042c53b72b681b6f0dbb17ec0a7fc
+SymPy 1.14.0; input hash sha256:34d40b708f83ea71ff25ff20e009938c4d50867578effe805f23a2cb99fbb8a5
 
 Chaplygin sleigh: a rigid body on the plane with a knife edge at its rear contact point (x, y) that forbids sideways motion; heading phi, centre of mass at distance a ahead of the contact, radius of gyration k about the centre of mass; v is the speed along the axis.
 
@@ -59,7 +59,7 @@ MULTIPLIER_NAMES = ('knife_edge',)
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'ea57f398f9250fbe73e828cfa5116f09fea042c53b72b681b6f0dbb17ec0a7fc'
+INPUT_HASH = '34d40b708f83ea71ff25ff20e009938c4d50867578effe805f23a2cb99fbb8a5'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 9, 'constants': 5, 'rhs_q': 4, 'rhs_pose': 13, 'rhs_pose_q': 8, 'pose_rates': 4, 'energy': 9, 'multipliers': 6}
@@ -260,5 +260,73 @@ def body_outlines(s, p, uu):
         out[0, j, 1] = _c0*_c4 + _c2*_c3 + y
         out[0, j, 2] = ((1.0/3.0))*k
     return out
+
+
+#: operation counts of the Jacobians (derivation/jacobian.py)
+OP_COUNTS.update(jacobian=14, jacobian_p=25)
+
+@njit(cache=True)
+def jacobian(s, p):
+    """d(state rate)/d(state): J[i, j] = d rhs_i / d s_j, shape (2, 2) (14 operations)."""
+    out = np.zeros((2, 2))
+    v = s[0]
+    phi_dot = s[1]
+    a = p[0]
+    k = p[1]
+    out[0, 1] = 2*a*phi_dot
+    out[1, 0] = -a*phi_dot/((a*a) + (k*k))
+    out[1, 1] = -a*v/((a*a) + (k*k))
+    return out
+
+
+@njit(cache=True)
+def jacobian_p(s, p):
+    """d(state rate)/d(parameters): J[i, j] = d rhs_i / d p_j, shape (2, 2) (25 operations)."""
+    out = np.zeros((2, 2))
+    v = s[0]
+    phi_dot = s[1]
+    a = p[0]
+    k = p[1]
+    out[0, 0] = (phi_dot*phi_dot)
+    out[1, 0] = 2*(a*a)*phi_dot*v/(((a*a) + (k*k))*((a*a) + (k*k))) - phi_dot*v/((a*a) + (k*k))
+    out[1, 1] = 2*a*k*phi_dot*v/(((a*a) + (k*k))*((a*a) + (k*k)))
+    return out
+
+
+
+#: families of steady motions (derivation/steady.py): name -> the family's parameter ``value`` (``value_state`` is
+#: the state equal to it), what the motion is, and names of the modes by their largest state
+STEADY_FAMILIES = {'straight': {'value': 'V', 'value_state': 'v', 'description': 'straight running at the speed V (phi_dot = 0)', 'mode_names': {}}}
+
+
+@njit(cache=True)
+def steady_state(_family, _value, p):
+    """Row 0: the closed state of family number ``_family`` of STEADY_FAMILIES at ``_value``; row 1: its derivative
+    in ``_value`` (the family's tangent)."""
+    out = np.zeros((2, 2))
+    a = p[0]
+    k = p[1]
+    if _family == 0:
+        V = _value
+        out[0, 0] = V
+        out[1, 0] = 1
+
+    return out
+
+
+#: functions of the closed state fixed by construction; their gradients are not physical directions
+STATE_INVARIANTS = ()
+
+
+@njit(cache=True)
+def invariant_gradients(s, p):
+    """Gradients of STATE_INVARIANTS, shape (0, 2)."""
+    out = np.zeros((0, 2))
+    v = s[0]
+    phi_dot = s[1]
+    a = p[0]
+    k = p[1]
+
+    return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'da05f63a73d6879a452c3191ccd554bf48887750907c6a81cc8d2885150f6bf3'
+MODULE_SHA256 = '82c495c23fc790eacde0601334946f8b3aab4f93fdec33cafbb9a836f6bd9944'

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk_damped',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:fab00a0a5f5a6e80fd89a9235ea3dfd07d336d2a0d8f15b7c00e253c242583a3
+SymPy 1.14.0; input hash sha256:baf39d231e6aa1cb75e386255ba2734b0820c2d3430df83ed3910e076c0a19f4
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table, its rotation resisted by a viscous torque -c r^2 omega per unit mass (Rayleigh function c r^2 |omega|^2/2).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = True
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'fab00a0a5f5a6e80fd89a9235ea3dfd07d336d2a0d8f15b7c00e253c242583a3'
+INPUT_HASH = 'baf39d231e6aa1cb75e386255ba2734b0820c2d3430df83ed3910e076c0a19f4'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 182, 'constants': 20, 'rhs_q': 178, 'rhs_pose': 186, 'rhs_pose_q': 183, 'pose_rates': 5, 'energy': 45, 'multipliers': 195, 'power_dissipated': 19}
@@ -644,5 +644,247 @@ def power_dissipated(s, p):
     _c1 = (q3_dot*q3_dot)
     power_dissipated = c*(r*r)*((_c0*_c0)*_c1 + 2*_c0*q1_dot*q3_dot + _c1*((math.cos(q2))*(math.cos(q2))) + (q1_dot*q1_dot) + (q2_dot*q2_dot))
     return power_dissipated
+
+
+#: operation counts of the Jacobians (derivation/jacobian.py)
+OP_COUNTS.update(jacobian=910, jacobian_p=191)
+
+@njit(cache=True)
+def jacobian(s, p):
+    """d(state rate)/d(state): J[i, j] = d rhs_i / d s_j, shape (4, 4) (910 operations)."""
+    out = np.zeros((4, 4))
+    q2 = s[0]
+    q1_dot = s[1]
+    q2_dot = s[2]
+    q3_dot = s[3]
+    g = p[0]
+    r = p[1]
+    c = p[2]
+    _c0 = math.sin(q2)
+    _d0_0 = math.cos(q2)
+    _c1 = _c0**6
+    _d1_0 = 6*_c0**5*_d0_0
+    _c2 = q2_dot*q3_dot
+    _c3 = _c1*_c2
+    _d3_0 = _c2*_d1_0
+    _d3_2 = _c1*q3_dot
+    _d3_3 = _c1*q2_dot
+    _c4 = math.cos(q2)
+    _d4_0 = -math.sin(q2)
+    _c5 = _c4**6
+    _d5_0 = 6*_c4**5*_d4_0
+    _c6 = _c2*_c5
+    _d6_0 = _c2*_d5_0
+    _d6_2 = _c5*q3_dot
+    _d6_3 = _c5*q2_dot
+    _c7 = c*q1_dot
+    _c8 = (_c4*_c4*_c4)
+    _d8_0 = 3*(_c4*_c4)*_d4_0
+    _c9 = 2*_c8
+    _d9_0 = 2*_d8_0
+    _c10 = _c4**5
+    _d10_0 = 5*(_c4*_c4*_c4*_c4)*_d4_0
+    _c11 = 8*_c10
+    _d11_0 = 8*_d10_0
+    _c12 = 4*_c2
+    _d12_2 = 4*q3_dot
+    _d12_3 = 4*q2_dot
+    _c13 = (_c0*_c0)
+    _d13_0 = 2*_c0*_d0_0
+    _c14 = 2*_c13
+    _d14_0 = 2*_d13_0
+    _c15 = _c4*_c7
+    _d15_0 = _c7*_d4_0
+    _d15_1 = _c4*c
+    _c16 = (_c0*_c0*_c0*_c0)
+    _d16_0 = 4*(_c0*_c0*_c0)*_d0_0
+    _c17 = 8*_c16
+    _d17_0 = 8*_d16_0
+    _c18 = 16*_c13
+    _d18_0 = 16*_d13_0
+    _c19 = _c7*_c8
+    _d19_0 = _c7*_d8_0
+    _d19_1 = _c8*c
+    _c20 = (_c4*_c4*_c4*_c4)
+    _d20_0 = 4*(_c4*_c4*_c4)*_d4_0
+    _c21 = _c13*_c20
+    _d21_0 = _c13*_d20_0 + _c20*_d13_0
+    _c22 = 3*_c2
+    _d22_2 = 3*q3_dot
+    _d22_3 = 3*q2_dot
+    _c23 = (_c4*_c4)
+    _d23_0 = 2*_c4*_d4_0
+    _c24 = _c16*_c23
+    _d24_0 = _c16*_d23_0 + _c23*_d16_0
+    _c25 = 24*_c2
+    _d25_2 = 24*q3_dot
+    _d25_3 = 24*q2_dot
+    _c26 = 1/(4*_c1 + _c14*_c23 + _c16 + _c20 + 12*_c21 + 12*_c24 + 4*_c5)
+    _d26_0 = -_c14*_d23_0/((4*_c1 + _c14*_c23 + _c16 + _c20 + 12*_c21 + 12*_c24 + 4*_c5)*(4*_c1 + _c14*_c23 + _c16 + _c20 + 12*_c21 + 12*_c24 + 4*_c5)) - _c23*_d14_0/((4*_c1 + _c14*_c23 + _c16 + _c20 + 12*_c21 + 12*_c24 + 4*_c5)*(4*_c1 + _c14*_c23 + _c16 + _c20 + 12*_c21 + 12*_c24 + 4*_c5)) - _d16_0/((4*_c1 + _c14*_c23 + _c16 + _c20 + 12*_c21 + 12*_c24 + 4*_c5)*(4*_c1 + _c14*_c23 + _c16 + _c20 + 12*_c21 + 12*_c24 + 4*_c5)) - 4*_d1_0/((4*_c1 + _c14*_c23 + _c16 + _c20 + 12*_c21 + 12*_c24 + 4*_c5)*(4*_c1 + _c14*_c23 + _c16 + _c20 + 12*_c21 + 12*_c24 + 4*_c5)) - _d20_0/((4*_c1 + _c14*_c23 + _c16 + _c20 + 12*_c21 + 12*_c24 + 4*_c5)*(4*_c1 + _c14*_c23 + _c16 + _c20 + 12*_c21 + 12*_c24 + 4*_c5)) - 12*_d21_0/((4*_c1 + _c14*_c23 + _c16 + _c20 + 12*_c21 + 12*_c24 + 4*_c5)*(4*_c1 + _c14*_c23 + _c16 + _c20 + 12*_c21 + 12*_c24 + 4*_c5)) - 12*_d24_0/((4*_c1 + _c14*_c23 + _c16 + _c20 + 12*_c21 + 12*_c24 + 4*_c5)*(4*_c1 + _c14*_c23 + _c16 + _c20 + 12*_c21 + 12*_c24 + 4*_c5)) - 4*_d5_0/((4*_c1 + _c14*_c23 + _c16 + _c20 + 12*_c21 + 12*_c24 + 4*_c5)*(4*_c1 + _c14*_c23 + _c16 + _c20 + 12*_c21 + 12*_c24 + 4*_c5))
+    _c27 = _c26/_c4
+    _d27_0 = -_c26*_d4_0/(_c4*_c4) + _d26_0/_c4
+    _c28 = _c0**5
+    _d28_0 = 5*(_c0*_c0*_c0*_c0)*_d0_0
+    _c29 = 4*g
+    _c30 = _c0*_c20
+    _d30_0 = _c0*_d20_0 + _c20*_d0_0
+    _c31 = c*q2_dot*r
+    _d31_2 = c*r
+    _c32 = 4*_c31
+    _d32_2 = 4*_d31_2
+    _c33 = q1_dot*q3_dot*r
+    _d33_1 = q3_dot*r
+    _d33_3 = q1_dot*r
+    _c34 = 6*_c33
+    _d34_1 = 6*_d33_1
+    _d34_3 = 6*_d33_3
+    _c35 = (_c0*_c0*_c0)
+    _d35_0 = 3*(_c0*_c0)*_d0_0
+    _c36 = _c23*_c35
+    _d36_0 = _c23*_d35_0 + _c35*_d23_0
+    _c37 = (q1_dot*q1_dot)*r
+    _d37_1 = 2*q1_dot*r
+    _c38 = 5*_c37
+    _d38_1 = 5*_d37_1
+    _c39 = _c13*_c23
+    _d39_0 = _c13*_d23_0 + _c23*_d13_0
+    _c40 = 18*_c33
+    _d40_1 = 18*_d33_1
+    _d40_3 = 18*_d33_3
+    _c41 = c*q3_dot
+    _c42 = q1_dot*q2_dot
+    _c43 = 5*_c42
+    _d43_1 = 5*q2_dot
+    _d43_2 = 5*q1_dot
+    _c44 = 20*_c42
+    _d44_1 = 20*q2_dot
+    _d44_2 = 20*q1_dot
+    _c45 = 6*_c2
+    _d45_2 = 6*q3_dot
+    _d45_3 = 6*q2_dot
+    _c46 = _c4*_c41
+    _d46_0 = _c41*_d4_0
+    _d46_3 = _c4*c
+    _c47 = 72*_c2
+    _d47_2 = 72*q3_dot
+    _d47_3 = 72*q2_dot
+    out[0, 2] = 1
+    out[1, 0] = -16*_c0**7*_c12*_c27*_d0_0 - 16*_c12*_c27*_c4**7*_d4_0 - 2*_c15*_c27*_d14_0 - 2*_c15*_c27*_d17_0 - 2*_c16*_c25*_c27*_d20_0 - 2*_c18*_c27*_d19_0 - 2*_c20*_c25*_c27*_d16_0 - 2*_c22*_c27*_d21_0 - 2*_c22*_c27*_d24_0 - 32*_c27*_c3*_d23_0 - 2*_c27*_c7*_d11_0 - 2*_c27*_c7*_d9_0 - 2*_c27*_d15_0*(_c14 + _c17) - 2*_c27*_d18_0*(_c19 + _c6) - 2*_c27*_d3_0*(16*_c23 + 1) - 2*_c27*_d6_0*(_c18 + 1) + _d27_0*(-2*_c0**8*_c12 - 2*_c11*_c7 - 2*_c12*_c4**8 - 2*_c14*_c15 - 2*_c15*_c17 - 2*_c16*_c20*_c25 - 2*_c18*_c19 - 2*_c18*_c6 - 2*_c21*_c22 - 2*_c22*_c24 - 32*_c23*_c3 - 2*_c3 - 2*_c6 - 2*_c7*_c9)
+    out[1, 1] = -2*_c18*_c27*_d19_1 - 2*_c27*_d15_1*(_c14 + _c17) - 2*_c27*c*(_c11 + _c9)
+    out[1, 2] = -2*_c16*_c20*_c27*_d25_2 - 2*_c27*_d12_2*(_c0**8 + _c4**8) - 2*_c27*_d22_2*(_c21 + _c24) - 2*_c27*_d3_2*(16*_c23 + 1) - 2*_c27*_d6_2*(_c18 + 1)
+    out[1, 3] = -2*_c16*_c20*_c27*_d25_3 - 2*_c27*_d12_3*(_c0**8 + _c4**8) - 2*_c27*_d22_3*(_c21 + _c24) - 2*_c27*_d3_3*(16*_c23 + 1) - 2*_c27*_d6_3*(_c18 + 1)
+    out[2, 0] = _c10*_c26*_c38*_d0_0/r + _c10*_c26*_c40*_d13_0/r + _c26*_c29*_d30_0/r - 8*_c26*_c31*_d39_0/r - _c26*_c32*_d20_0/r + _c26*_c34*_c4*_d1_0/r + 10*_c26*_c37*_c8*_d35_0/r + _c26*_d10_0*(_c0*_c38 + _c13*_c40)/r + _c26*_d16_0*(-_c32 + _c40*_c8)/r + _c26*_d28_0*(_c29 + _c38*_c4)/r + 8*_c26*_d36_0*g/r + _c26*_d4_0*(_c1*_c34 + _c28*_c38 + 7*_c34*_c4**6)/r + _c26*_d8_0*(_c16*_c40 + 10*_c35*_c37)/r + _d26_0*(_c0*_c10*_c38 + _c1*_c34*_c4 + _c10*_c13*_c40 - _c16*_c32 + _c16*_c40*_c8 - _c20*_c32 + _c28*_c29 + _c28*_c38*_c4 + _c29*_c30 - 8*_c31*_c39 + _c34*_c4**7 + 10*_c35*_c37*_c8 + 8*_c36*g)/r
+    out[2, 1] = 10*_c26*_c35*_c8*_d37_1/r + _c26*_d34_1*(_c1*_c4 + _c4**7)/r + _c26*_d38_1*(_c0*_c10 + _c28*_c4)/r + _c26*_d40_1*(_c10*_c13 + _c16*_c8)/r
+    out[2, 2] = -8*_c26*_c39*_d31_2/r + _c26*_d32_2*(-_c16 - _c20)/r
+    out[2, 3] = _c26*_d34_3*(_c1*_c4 + _c4**7)/r + _c26*_d40_3*(_c10*_c13 + _c16*_c8)/r
+    out[3, 0] = ((40.0/3.0))*_c0*_c27*_d19_0 + 8*_c0*_c27*_d6_0 - (1.0/3.0)*_c18*_c27*_c41*_d8_0 + 4*_c2*_c27*_d36_0 + ((1.0/3.0))*_c27*_c28*_c47*_d23_0 - (1.0/3.0)*_c27*_c41*_c8*_d18_0 - (1.0/3.0)*_c27*_c41*_d11_0 - (1.0/3.0)*_c27*_c41*_d9_0 - (40.0/3.0)*_c27*_c42*_d21_0 - (1.0/3.0)*_c27*_c43*_d39_0 - (1.0/3.0)*_c27*_c44*_d24_0 - (1.0/3.0)*_c27*_c44*_d5_0 + ((1.0/3.0))*_c27*_c45*_d30_0 - (1.0/3.0)*_c27*_c46*_d14_0 - (1.0/3.0)*_c27*_c46*_d17_0 + ((1.0/3.0))*_c27*_d0_0*(7*_c0**6*_c25 + 10*_c15 + 40*_c19 + 24*_c6) + ((1.0/3.0))*_c27*_d15_0*(10*_c0 + 40*_c35) + ((1.0/3.0))*_c27*_d20_0*(_c35*_c47 - _c43) + ((1.0/3.0))*_c27*_d28_0*(_c23*_c47 + _c45) + ((1.0/3.0))*_c27*_d35_0*(40*_c15 + _c20*_c47) + ((1.0/3.0))*_c27*_d46_0*(-_c14 - _c17) + _d27_0*(((1.0/3.0))*_c0**7*_c25 + ((10.0/3.0))*_c0*_c15 + ((40.0/3.0))*_c0*_c19 + 8*_c0*_c6 - (1.0/3.0)*_c11*_c41 - (1.0/3.0)*_c14*_c46 + ((40.0/3.0))*_c15*_c35 - (1.0/3.0)*_c17*_c46 - (1.0/3.0)*_c18*_c41*_c8 + 4*_c2*_c36 + ((1.0/3.0))*_c20*_c35*_c47 - (1.0/3.0)*_c20*_c43 - (40.0/3.0)*_c21*_c42 + ((1.0/3.0))*_c23*_c28*_c47 - (1.0/3.0)*_c24*_c44 + ((1.0/3.0))*_c28*_c45 + ((1.0/3.0))*_c30*_c45 - (1.0/3.0)*_c39*_c43 - (1.0/3.0)*_c41*_c9 - (1.0/3.0)*_c44*_c5)
+    out[3, 1] = ((40.0/3.0))*_c0*_c27*_d19_1 - (40.0/3.0)*_c21*_c27*q2_dot + ((1.0/3.0))*_c27*_d15_1*(10*_c0 + 40*_c35) + ((1.0/3.0))*_c27*_d43_1*(-_c20 - _c39) + ((1.0/3.0))*_c27*_d44_1*(-_c24 - _c5)
+    out[3, 2] = ((1.0/3.0))*_c0**7*_c27*_d25_2 + 8*_c0*_c27*_d6_2 - (40.0/3.0)*_c21*_c27*q1_dot + 4*_c27*_c36*q3_dot + ((1.0/3.0))*_c27*_d43_2*(-_c20 - _c39) + ((1.0/3.0))*_c27*_d44_2*(-_c24 - _c5) + ((1.0/3.0))*_c27*_d45_2*(_c28 + _c30) + ((1.0/3.0))*_c27*_d47_2*(_c20*_c35 + _c23*_c28)
+    out[3, 3] = ((1.0/3.0))*_c0**7*_c27*_d25_3 + 8*_c0*_c27*_d6_3 + 4*_c27*_c36*q2_dot + ((1.0/3.0))*_c27*_d45_3*(_c28 + _c30) + ((1.0/3.0))*_c27*_d46_3*(-_c14 - _c17) + ((1.0/3.0))*_c27*_d47_3*(_c20*_c35 + _c23*_c28) + ((1.0/3.0))*_c27*c*(-_c11 - _c18*_c8 - _c9)
+    return out
+
+
+@njit(cache=True)
+def jacobian_p(s, p):
+    """d(state rate)/d(parameters): J[i, j] = d rhs_i / d p_j, shape (4, 3) (191 operations)."""
+    out = np.zeros((4, 3))
+    q2 = s[0]
+    q1_dot = s[1]
+    q2_dot = s[2]
+    q3_dot = s[3]
+    g = p[0]
+    r = p[1]
+    c = p[2]
+    _c0 = math.sin(q2)
+    _c1 = _c0**6
+    _c4 = math.cos(q2)
+    _c5 = _c4**6
+    _c8 = (_c4*_c4*_c4)
+    _c9 = 2*_c8
+    _c10 = _c4**5
+    _c11 = 8*_c10
+    _c13 = (_c0*_c0)
+    _c14 = 2*_c13
+    _d15_2 = _c4*q1_dot
+    _c16 = (_c0*_c0*_c0*_c0)
+    _c17 = 8*_c16
+    _c18 = 16*_c13
+    _d19_2 = _c8*q1_dot
+    _c20 = (_c4*_c4*_c4*_c4)
+    _c21 = _c13*_c20
+    _c23 = (_c4*_c4)
+    _c24 = _c16*_c23
+    _c26 = 1/(4*_c1 + _c14*_c23 + _c16 + _c20 + 12*_c21 + 12*_c24 + 4*_c5)
+    _c27 = _c26/_c4
+    _c28 = _c0**5
+    _c29 = 4*g
+    _c30 = _c0*_c20
+    _c31 = c*q2_dot*r
+    _d31_1 = c*q2_dot
+    _d31_2 = q2_dot*r
+    _c32 = 4*_c31
+    _d32_1 = 4*_d31_1
+    _d32_2 = 4*_d31_2
+    _c33 = q1_dot*q3_dot*r
+    _d33_1 = q1_dot*q3_dot
+    _c34 = 6*_c33
+    _d34_1 = 6*_d33_1
+    _c35 = (_c0*_c0*_c0)
+    _c36 = _c23*_c35
+    _c37 = (q1_dot*q1_dot)*r
+    _d37_1 = (q1_dot*q1_dot)
+    _c38 = 5*_c37
+    _d38_1 = 5*_d37_1
+    _c39 = _c13*_c23
+    _c40 = 18*_c33
+    _d40_1 = 18*_d33_1
+    _d46_2 = _c4*q3_dot
+    out[1, 2] = -2*_c18*_c27*_d19_2 - 2*_c27*_d15_2*(_c14 + _c17) - 2*_c27*q1_dot*(_c11 + _c9)
+    out[2, 0] = 8*_c26*_c36/r + 4*_c26*(_c28 + _c30)/r
+    out[2, 1] = 10*_c26*_c35*_c8*_d37_1/r - 8*_c26*_c39*_d31_1/r + _c26*_d32_1*(-_c16 - _c20)/r + _c26*_d34_1*(_c1*_c4 + _c4**7)/r + _c26*_d38_1*(_c0*_c10 + _c28*_c4)/r + _c26*_d40_1*(_c10*_c13 + _c16*_c8)/r - _c26*(_c0*_c10*_c38 + _c1*_c34*_c4 + _c10*_c13*_c40 - _c16*_c32 + _c16*_c40*_c8 - _c20*_c32 + _c28*_c29 + _c28*_c38*_c4 + _c29*_c30 - 8*_c31*_c39 + _c34*_c4**7 + 10*_c35*_c37*_c8 + 8*_c36*g)/(r*r)
+    out[2, 2] = -8*_c26*_c39*_d31_2/r + _c26*_d32_2*(-_c16 - _c20)/r
+    out[3, 2] = ((40.0/3.0))*_c0*_c27*_d19_2 + ((1.0/3.0))*_c27*_d15_2*(10*_c0 + 40*_c35) + ((1.0/3.0))*_c27*_d46_2*(-_c14 - _c17) + ((1.0/3.0))*_c27*q3_dot*(-_c11 - _c18*_c8 - _c9)
+    return out
+
+
+
+#: families of steady motions (derivation/steady.py): name -> the family's parameter ``value`` (``value_state`` is
+#: the state equal to it), what the motion is, and names of the modes by their largest state
+STEADY_FAMILIES = {'upright_rolling': {'value': 'Omega', 'value_state': 'q3_dot', 'description': 'upright rolling (q2 = 0) in a straight line at the axle rate Omega', 'mode_names': {'q2': 'lean', 'q2_dot': 'lean'}}}
+
+
+@njit(cache=True)
+def steady_state(_family, _value, p):
+    """Row 0: the closed state of family number ``_family`` of STEADY_FAMILIES at ``_value``; row 1: its derivative
+    in ``_value`` (the family's tangent)."""
+    out = np.zeros((2, 4))
+    g = p[0]
+    r = p[1]
+    c = p[2]
+    if _family == 0:
+        Omega = _value
+        out[0, 3] = Omega
+        out[1, 3] = 1
+
+    return out
+
+
+#: functions of the closed state fixed by construction; their gradients are not physical directions
+STATE_INVARIANTS = ()
+
+
+@njit(cache=True)
+def invariant_gradients(s, p):
+    """Gradients of STATE_INVARIANTS, shape (0, 4)."""
+    out = np.zeros((0, 4))
+    q2 = s[0]
+    q1_dot = s[1]
+    q2_dot = s[2]
+    q3_dot = s[3]
+    g = p[0]
+    r = p[1]
+    c = p[2]
+
+    return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'eb4b7b480ff5c37943e40bfa47301d1dbaa32479f850d07966f855fb3c052d3f'
+MODULE_SHA256 = '8817628dc2f32366e5a9fa546b706c92370126477f17df397a2ae8cdf445a334'

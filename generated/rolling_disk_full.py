@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:e9363c365622d82f72aad8051fe6a0e9d37db3b9964fa619a70a6da24566aa16
+SymPy 1.14.0; input hash sha256:a10673155ea765585d3723e87a618a1a2cc3b9d2f96e000bd2ba97bb4d8c64b4
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table: heading q1, lean q2 from the vertical, rotation q3 about the axle, contact point (x, y).
 
@@ -62,7 +62,7 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'e9363c365622d82f72aad8051fe6a0e9d37db3b9964fa619a70a6da24566aa16'
+INPUT_HASH = 'a10673155ea765585d3723e87a618a1a2cc3b9d2f96e000bd2ba97bb4d8c64b4'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 129, 'constants': 7, 'rhs_q': 125, 'rhs_pose': 134, 'rhs_pose_q': 130, 'pose_rates': 5, 'energy': 45, 'multipliers': 113}
@@ -504,5 +504,170 @@ def body_outlines(s, p, uu):
         out[0, j, 1] = -_c6*r + r*(_c0*_c4 - _c5*_c6) + y
         out[0, j, 2] = _c5*_c7 + _c7
     return out
+
+
+#: operation counts of the Jacobians (derivation/jacobian.py)
+OP_COUNTS.update(jacobian=643, jacobian_p=109)
+
+@njit(cache=True)
+def jacobian(s, p):
+    """d(state rate)/d(state): J[i, j] = d rhs_i / d s_j, shape (4, 4) (643 operations)."""
+    out = np.zeros((4, 4))
+    q2 = s[0]
+    q1_dot = s[1]
+    q2_dot = s[2]
+    q3_dot = s[3]
+    g = p[0]
+    r = p[1]
+    _c0 = math.sin(q2)
+    _d0_0 = math.cos(q2)
+    _c1 = _c0**6
+    _d1_0 = 6*_c0**5*_d0_0
+    _c2 = math.cos(q2)
+    _d2_0 = -math.sin(q2)
+    _c3 = _c2**6
+    _d3_0 = 6*_c2**5*_d2_0
+    _c4 = (_c0*_c0)
+    _d4_0 = 2*_c0*_d0_0
+    _c5 = (_c2*_c2*_c2*_c2)
+    _d5_0 = 4*(_c2*_c2*_c2)*_d2_0
+    _c6 = _c4*_c5
+    _d6_0 = _c4*_d5_0 + _c5*_d4_0
+    _c7 = (_c2*_c2)
+    _d7_0 = 2*_c2*_d2_0
+    _c8 = (_c0*_c0*_c0*_c0)
+    _d8_0 = 4*(_c0*_c0*_c0)*_d0_0
+    _c9 = _c7*_c8
+    _d9_0 = _c7*_d8_0 + _c8*_d7_0
+    _c10 = _c4*_c7
+    _d10_0 = _c4*_d7_0 + _c7*_d4_0
+    _c11 = 1/(4*_c1 + 2*_c10 + 4*_c3 + _c5 + 12*_c6 + _c8 + 12*_c9)
+    _d11_0 = -2*_d10_0/((4*_c1 + 2*_c10 + 4*_c3 + _c5 + 12*_c6 + _c8 + 12*_c9)*(4*_c1 + 2*_c10 + 4*_c3 + _c5 + 12*_c6 + _c8 + 12*_c9)) - 4*_d1_0/((4*_c1 + 2*_c10 + 4*_c3 + _c5 + 12*_c6 + _c8 + 12*_c9)*(4*_c1 + 2*_c10 + 4*_c3 + _c5 + 12*_c6 + _c8 + 12*_c9)) - 4*_d3_0/((4*_c1 + 2*_c10 + 4*_c3 + _c5 + 12*_c6 + _c8 + 12*_c9)*(4*_c1 + 2*_c10 + 4*_c3 + _c5 + 12*_c6 + _c8 + 12*_c9)) - _d5_0/((4*_c1 + 2*_c10 + 4*_c3 + _c5 + 12*_c6 + _c8 + 12*_c9)*(4*_c1 + 2*_c10 + 4*_c3 + _c5 + 12*_c6 + _c8 + 12*_c9)) - 12*_d6_0/((4*_c1 + 2*_c10 + 4*_c3 + _c5 + 12*_c6 + _c8 + 12*_c9)*(4*_c1 + 2*_c10 + 4*_c3 + _c5 + 12*_c6 + _c8 + 12*_c9)) - _d8_0/((4*_c1 + 2*_c10 + 4*_c3 + _c5 + 12*_c6 + _c8 + 12*_c9)*(4*_c1 + 2*_c10 + 4*_c3 + _c5 + 12*_c6 + _c8 + 12*_c9)) - 12*_d9_0/((4*_c1 + 2*_c10 + 4*_c3 + _c5 + 12*_c6 + _c8 + 12*_c9)*(4*_c1 + 2*_c10 + 4*_c3 + _c5 + 12*_c6 + _c8 + 12*_c9))
+    _c12 = _c11*q2_dot/_c2
+    _d12_0 = -_c11*_d2_0*q2_dot/(_c2*_c2) + _d11_0*q2_dot/_c2
+    _d12_2 = _c11/_c2
+    _c13 = _c0**5
+    _d13_0 = 5*(_c0*_c0*_c0*_c0)*_d0_0
+    _c14 = 4*g
+    _c15 = _c0*_c5
+    _d15_0 = _c0*_d5_0 + _c5*_d0_0
+    _c16 = 6*q3_dot
+    _c17 = q1_dot*r
+    _c18 = _c16*_c17
+    _d18_1 = _c16*r
+    _d18_3 = 6*_c17
+    _c19 = (_c0*_c0*_c0)
+    _d19_0 = 3*(_c0*_c0)*_d0_0
+    _c20 = _c19*_c7
+    _d20_0 = _c19*_d7_0 + _c7*_d19_0
+    _c21 = _c2**5
+    _d21_0 = 5*(_c2*_c2*_c2*_c2)*_d2_0
+    _c22 = (q1_dot*q1_dot)*r
+    _d22_1 = 2*q1_dot*r
+    _c23 = 5*_c22
+    _d23_1 = 5*_d22_1
+    _c24 = 18*_c17*q3_dot
+    _d24_1 = 18*q3_dot*r
+    _d24_3 = 18*_c17
+    _c25 = (_c2*_c2*_c2)
+    _d25_0 = 3*(_c2*_c2)*_d2_0
+    _c26 = 5*q1_dot
+    _c27 = 20*q1_dot
+    _c28 = 24*q3_dot
+    _c29 = 72*q3_dot
+    out[0, 2] = 1
+    out[1, 0] = -64*_c0**7*_c12*_d0_0*q3_dot - 32*_c1*_c12*_d7_0*q3_dot - 64*_c12*_c2**7*_d2_0*q3_dot - 32*_c12*_c3*_d4_0*q3_dot - 48*_c12*_c5*_d8_0*q3_dot - 48*_c12*_c8*_d5_0*q3_dot - 2*_c12*_d1_0*q3_dot*(16*_c7 + 1) - 2*_c12*_d3_0*q3_dot*(16*_c4 + 1) - 6*_c12*_d6_0*q3_dot - 6*_c12*_d9_0*q3_dot - 2*_d12_0*q3_dot*(4*_c0**8 + 16*_c1*_c7 + _c1 + 4*_c2**8 + 16*_c3*_c4 + _c3 + 24*_c5*_c8 + 3*_c6 + 3*_c9)
+    out[1, 2] = -2*_d12_2*q3_dot*(4*_c0**8 + 16*_c1*_c7 + _c1 + 4*_c2**8 + 16*_c3*_c4 + _c3 + 24*_c5*_c8 + 3*_c6 + 3*_c9)
+    out[1, 3] = -2*_c12*(4*_c0**8 + 16*_c1*_c7 + _c1 + 4*_c2**8 + 16*_c3*_c4 + _c3 + 24*_c5*_c8 + 3*_c6 + 3*_c9)
+    out[2, 0] = _c11*_c14*_d15_0/r + _c11*_c18*_c2*_d1_0/r + _c11*_c21*_c23*_d0_0/r + _c11*_c21*_c24*_d4_0/r + 10*_c11*_c22*_c25*_d19_0/r + _c11*_c24*_c25*_d8_0/r + _c11*_d13_0*(_c14 + _c2*_c23)/r + 8*_c11*_d20_0*g/r + _c11*_d21_0*(_c0*_c23 + _c24*_c4)/r + _c11*_d25_0*(10*_c19*_c22 + _c24*_c8)/r + _c11*_d2_0*(_c1*_c18 + _c13*_c23 + 7*_c18*_c2**6)/r + _d11_0*(_c0*_c21*_c23 + _c1*_c18*_c2 + _c13*_c14 + _c13*_c2*_c23 + _c14*_c15 + _c18*_c2**7 + 10*_c19*_c22*_c25 + 8*_c20*g + _c21*_c24*_c4 + _c24*_c25*_c8)/r
+    out[2, 1] = 10*_c11*_c19*_c25*_d22_1/r + _c11*_d18_1*(_c1*_c2 + _c2**7)/r + _c11*_d23_1*(_c0*_c21 + _c13*_c2)/r + _c11*_d24_1*(_c21*_c4 + _c25*_c8)/r
+    out[2, 3] = _c11*_d18_3*(_c1*_c2 + _c2**7)/r + _c11*_d24_3*(_c21*_c4 + _c25*_c8)/r
+    out[3, 0] = ((1.0/3.0))*_c12*_c13*_c29*_d7_0 + ((1.0/3.0))*_c12*_c16*_d15_0 - (1.0/3.0)*_c12*_c26*_d10_0 - (1.0/3.0)*_c12*_c27*_d9_0 + ((1.0/3.0))*_c12*_c29*_c5*_d19_0 + ((1.0/3.0))*_c12*_d0_0*(7*_c0**6*_c28 + _c28*_c3) + ((1.0/3.0))*_c12*_d13_0*(_c16 + _c29*_c7) + 4*_c12*_d20_0*q3_dot + ((1.0/3.0))*_c12*_d3_0*(_c0*_c28 - _c27) + ((1.0/3.0))*_c12*_d5_0*(_c19*_c29 - _c26) - (40.0/3.0)*_c12*_d6_0*q1_dot + _d12_0*(((1.0/3.0))*_c0**7*_c28 + ((1.0/3.0))*_c0*_c28*_c3 - (1.0/3.0)*_c10*_c26 + ((1.0/3.0))*_c13*_c16 + ((1.0/3.0))*_c13*_c29*_c7 + ((1.0/3.0))*_c15*_c16 + ((1.0/3.0))*_c19*_c29*_c5 + 4*_c20*q3_dot - (1.0/3.0)*_c26*_c5 - (1.0/3.0)*_c27*_c3 - (1.0/3.0)*_c27*_c9 - (40.0/3.0)*_c6*q1_dot)
+    out[3, 1] = -(40.0/3.0)*_c12*_c6 + ((5.0/3.0))*_c12*(-_c10 - _c5) + ((20.0/3.0))*_c12*(-_c3 - _c9)
+    out[3, 2] = _d12_2*(((1.0/3.0))*_c0**7*_c28 + ((1.0/3.0))*_c0*_c28*_c3 - (1.0/3.0)*_c10*_c26 + ((1.0/3.0))*_c13*_c16 + ((1.0/3.0))*_c13*_c29*_c7 + ((1.0/3.0))*_c15*_c16 + ((1.0/3.0))*_c19*_c29*_c5 + 4*_c20*q3_dot - (1.0/3.0)*_c26*_c5 - (1.0/3.0)*_c27*_c3 - (1.0/3.0)*_c27*_c9 - (40.0/3.0)*_c6*q1_dot)
+    out[3, 3] = 4*_c12*_c20 + 8*_c12*(_c0**7 + _c0*_c3) + 2*_c12*(_c13 + _c15) + 24*_c12*(_c13*_c7 + _c19*_c5)
+    return out
+
+
+@njit(cache=True)
+def jacobian_p(s, p):
+    """d(state rate)/d(parameters): J[i, j] = d rhs_i / d p_j, shape (4, 2) (109 operations)."""
+    out = np.zeros((4, 2))
+    q2 = s[0]
+    q1_dot = s[1]
+    q3_dot = s[3]
+    g = p[0]
+    r = p[1]
+    _c0 = math.sin(q2)
+    _c1 = _c0**6
+    _c2 = math.cos(q2)
+    _c3 = _c2**6
+    _c4 = (_c0*_c0)
+    _c5 = (_c2*_c2*_c2*_c2)
+    _c6 = _c4*_c5
+    _c7 = (_c2*_c2)
+    _c8 = (_c0*_c0*_c0*_c0)
+    _c9 = _c7*_c8
+    _c10 = _c4*_c7
+    _c11 = 1/(4*_c1 + 2*_c10 + 4*_c3 + _c5 + 12*_c6 + _c8 + 12*_c9)
+    _c13 = _c0**5
+    _c14 = 4*g
+    _c15 = _c0*_c5
+    _c16 = 6*q3_dot
+    _c17 = q1_dot*r
+    _c18 = _c16*_c17
+    _d18_1 = _c16*q1_dot
+    _c19 = (_c0*_c0*_c0)
+    _c20 = _c19*_c7
+    _c21 = _c2**5
+    _c22 = (q1_dot*q1_dot)*r
+    _d22_1 = (q1_dot*q1_dot)
+    _c23 = 5*_c22
+    _d23_1 = 5*_d22_1
+    _c24 = 18*_c17*q3_dot
+    _d24_1 = 18*q1_dot*q3_dot
+    _c25 = (_c2*_c2*_c2)
+    out[2, 0] = 8*_c11*_c20/r + 4*_c11*(_c13 + _c15)/r
+    out[2, 1] = 10*_c11*_c19*_c25*_d22_1/r + _c11*_d18_1*(_c1*_c2 + _c2**7)/r + _c11*_d23_1*(_c0*_c21 + _c13*_c2)/r + _c11*_d24_1*(_c21*_c4 + _c25*_c8)/r - _c11*(_c0*_c21*_c23 + _c1*_c18*_c2 + _c13*_c14 + _c13*_c2*_c23 + _c14*_c15 + _c18*_c2**7 + 10*_c19*_c22*_c25 + 8*_c20*g + _c21*_c24*_c4 + _c24*_c25*_c8)/(r*r)
+    return out
+
+
+
+#: families of steady motions (derivation/steady.py): name -> the family's parameter ``value`` (``value_state`` is
+#: the state equal to it), what the motion is, and names of the modes by their largest state
+STEADY_FAMILIES = {'upright_rolling': {'value': 'Omega', 'value_state': 'q3_dot', 'description': 'upright rolling (q2 = 0) in a straight line at the axle rate Omega', 'mode_names': {'q2': 'lean', 'q2_dot': 'lean'}}}
+
+
+@njit(cache=True)
+def steady_state(_family, _value, p):
+    """Row 0: the closed state of family number ``_family`` of STEADY_FAMILIES at ``_value``; row 1: its derivative
+    in ``_value`` (the family's tangent)."""
+    out = np.zeros((2, 4))
+    g = p[0]
+    r = p[1]
+    if _family == 0:
+        Omega = _value
+        out[0, 3] = Omega
+        out[1, 3] = 1
+
+    return out
+
+
+#: functions of the closed state fixed by construction; their gradients are not physical directions
+STATE_INVARIANTS = ()
+
+
+@njit(cache=True)
+def invariant_gradients(s, p):
+    """Gradients of STATE_INVARIANTS, shape (0, 4)."""
+    out = np.zeros((0, 4))
+    q2 = s[0]
+    q1_dot = s[1]
+    q2_dot = s[2]
+    q3_dot = s[3]
+    g = p[0]
+    r = p[1]
+
+    return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '0eab60d88d48e0bfe7c337fea35f26acdf7f9d1f8353be562e8c375e990b0f0e'
+MODULE_SHA256 = '655246581e603239b69843cd36e2cd4deb3c1da10f510caafcb1da4e9a65ac18'

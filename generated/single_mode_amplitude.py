@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:056607605fa2f973dced03325c19e932c79881c5027ea1e9f1e918bbbd46cae5
+SymPy 1.14.0; input hash sha256:9b7e689c828bad160595ff4b1cdd5dda117bc9e1aa81c1ce910db0a08065e5d4
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -67,7 +67,7 @@ HAS_DISSIPATION = False
 EXPORTS = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy',)
-INPUT_HASH = '056607605fa2f973dced03325c19e932c79881c5027ea1e9f1e918bbbd46cae5'
+INPUT_HASH = '9b7e689c828bad160595ff4b1cdd5dda117bc9e1aa81c1ce910db0a08065e5d4'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 10, 'constants': 6, 'rhs_q': 4, 'energy': 9, 'invariants': 9, 'frequencies': 5, 'growth_rates': 2, 'drive_rates': 5}
@@ -189,5 +189,85 @@ def drive_rates(p):
     D = p[3]
     out[0] = -(1.0/2.0)*D*g/(L*L)
     return out
+
+
+#: operation counts of the Jacobians (derivation/jacobian.py)
+OP_COUNTS.update(jacobian=11, jacobian_p=26)
+
+@njit(cache=True)
+def jacobian(s, p):
+    """d(state rate)/d(state): J[i, j] = d rhs_i / d s_j, shape (2, 2) (11 operations)."""
+    out = np.zeros((2, 2))
+    A_theta = s[0]
+    A_phi = s[1]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    _c0 = ((1.0/2.0))*D
+    out[0, 0] = A_phi*_c0/ell
+    out[0, 1] = A_theta*_c0/ell
+    out[1, 0] = -2*A_theta*_c0*g/(L*L)
+    return out
+
+
+@njit(cache=True)
+def jacobian_p(s, p):
+    """d(state rate)/d(parameters): J[i, j] = d rhs_i / d p_j, shape (2, 4) (26 operations)."""
+    out = np.zeros((2, 4))
+    A_theta = s[0]
+    A_phi = s[1]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    _c0 = ((1.0/2.0))*D
+    out[0, 1] = -A_phi*A_theta*_c0/(ell*ell)
+    out[0, 3] = ((1.0/2.0))*A_phi*A_theta/ell
+    out[1, 0] = -(A_theta*A_theta)*_c0/(L*L)
+    out[1, 2] = 2*(A_theta*A_theta)*_c0*g/(L*L*L)
+    out[1, 3] = -(1.0/2.0)*(A_theta*A_theta)*g/(L*L)
+    return out
+
+
+
+#: families of steady motions (derivation/steady.py): name -> the family's parameter ``value`` (``value_state`` is
+#: the state equal to it), what the motion is, and names of the modes by their largest state
+STEADY_FAMILIES = {'steady_spin': {'value': 'Omega', 'value_state': 'A_phi', 'description': 'upright steady spin theta = 0 at the rate Omega', 'mode_names': {'A_theta': 'tilt', 'theta_dot': 'tilt'}}}
+
+
+@njit(cache=True)
+def steady_state(_family, _value, p):
+    """Row 0: the closed state of family number ``_family`` of STEADY_FAMILIES at ``_value``; row 1: its derivative
+    in ``_value`` (the family's tangent)."""
+    out = np.zeros((2, 2))
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    if _family == 0:
+        Omega = _value
+        out[0, 1] = Omega
+        out[1, 1] = 1
+
+    return out
+
+
+#: functions of the closed state fixed by construction; their gradients are not physical directions
+STATE_INVARIANTS = ()
+
+
+@njit(cache=True)
+def invariant_gradients(s, p):
+    """Gradients of STATE_INVARIANTS, shape (0, 2)."""
+    out = np.zeros((0, 2))
+    A_theta = s[0]
+    A_phi = s[1]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+
+    return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'a7ff99db6494933466d6110bda60615ec6916885c70911c90c6fbee795a839c4'
+MODULE_SHA256 = '5fee393ff0e9b6c651c69b52cd1d8f76c02505a821125dc1fe7273b864f95761'

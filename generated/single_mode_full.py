@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:6f631a8404f0c68252515ed16dc422000f19cc61a41c25f9366f430c1e2bac20
+SymPy 1.14.0; input hash sha256:6ce472412d1a787ed643c9b9eb6b9c58ddc8c7ee094e32c1a8e09497aef6e9d2
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -62,7 +62,7 @@ MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '6f631a8404f0c68252515ed16dc422000f19cc61a41c25f9366f430c1e2bac20'
+INPUT_HASH = '6ce472412d1a787ed643c9b9eb6b9c58ddc8c7ee094e32c1a8e09497aef6e9d2'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 20, 'constants': 13, 'rhs_q': 10, 'rhs_pose': 27, 'rhs_pose_q': 17, 'pose_rates': 7, 'energy': 23, 'multipliers': 7, 'frequencies': 5}
@@ -332,5 +332,96 @@ def frequencies(p):
     D = p[3]
     out[0] = math.sqrt(g)/math.sqrt(ell)
     return out
+
+
+#: operation counts of the Jacobians (derivation/jacobian.py)
+OP_COUNTS.update(jacobian=25, jacobian_p=72)
+
+@njit(cache=True)
+def jacobian(s, p):
+    """d(state rate)/d(state): J[i, j] = d rhs_i / d s_j, shape (3, 3) (25 operations)."""
+    out = np.zeros((3, 3))
+    theta = s[0]
+    theta_dot = s[1]
+    phi_dot = s[2]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    _c0 = (L*L)
+    _c1 = 1/_c0
+    out[0, 1] = 1
+    out[1, 0] = _c1*(-3*(D*D)*g*(theta*theta) - _c0*g)/ell
+    out[1, 1] = D*_c0*_c1*phi_dot/ell
+    out[1, 2] = D*_c0*_c1*theta_dot/ell
+    out[2, 0] = -2*D*_c1*g*theta
+    return out
+
+
+@njit(cache=True)
+def jacobian_p(s, p):
+    """d(state rate)/d(parameters): J[i, j] = d rhs_i / d p_j, shape (3, 4) (72 operations)."""
+    out = np.zeros((3, 4))
+    theta = s[0]
+    theta_dot = s[1]
+    phi_dot = s[2]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    _c0 = (L*L)
+    _d0_2 = 2*L
+    _c1 = 1/_c0
+    _d1_2 = -_d0_2/(_c0*_c0)
+    out[1, 0] = _c1*(-(D*D)*(theta*theta*theta) - _c0*theta)/ell
+    out[1, 1] = -_c1*(-(D*D)*g*(theta*theta*theta) + D*_c0*phi_dot*theta_dot - _c0*g*theta)/(ell*ell)
+    out[1, 2] = _c1*_d0_2*(D*phi_dot*theta_dot - g*theta)/ell + _d1_2*(-(D*D)*g*(theta*theta*theta) + D*_c0*phi_dot*theta_dot - _c0*g*theta)/ell
+    out[1, 3] = _c1*(-2*D*g*(theta*theta*theta) + _c0*phi_dot*theta_dot)/ell
+    out[2, 0] = -D*_c1*(theta*theta)
+    out[2, 2] = -D*_d1_2*g*(theta*theta)
+    out[2, 3] = -_c1*g*(theta*theta)
+    return out
+
+
+
+#: families of steady motions (derivation/steady.py): name -> the family's parameter ``value`` (``value_state`` is
+#: the state equal to it), what the motion is, and names of the modes by their largest state
+STEADY_FAMILIES = {'steady_spin': {'value': 'Omega', 'value_state': 'phi_dot', 'description': 'upright steady spin theta = 0 at the rate Omega', 'mode_names': {'A_theta': 'tilt', 'theta': 'tilt', 'theta_dot': 'tilt'}}}
+
+
+@njit(cache=True)
+def steady_state(_family, _value, p):
+    """Row 0: the closed state of family number ``_family`` of STEADY_FAMILIES at ``_value``; row 1: its derivative
+    in ``_value`` (the family's tangent)."""
+    out = np.zeros((2, 3))
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    if _family == 0:
+        Omega = _value
+        out[0, 2] = Omega
+        out[1, 2] = 1
+
+    return out
+
+
+#: functions of the closed state fixed by construction; their gradients are not physical directions
+STATE_INVARIANTS = ()
+
+
+@njit(cache=True)
+def invariant_gradients(s, p):
+    """Gradients of STATE_INVARIANTS, shape (0, 3)."""
+    out = np.zeros((0, 3))
+    theta = s[0]
+    theta_dot = s[1]
+    phi_dot = s[2]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+
+    return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'bf0681dad85b1482c6af7dea598983d2d68304e5b9c9feb62a9f26b066ac3c8f'
+MODULE_SHA256 = '92346d494ab51cbb299da31224f368c8e08d2914d4e69904c8a6a8e4d96d9b84'

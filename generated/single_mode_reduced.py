@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py and derivation/truncation.py.
-SymPy 1.14.0; input hash sha256:ed141df2bdb1fa9fa2420be14215513963b821660383d887912b4f5878ff6165
+SymPy 1.14.0; input hash sha256:a2203a2868b2074c497ec261ed151856f25ec7e72e5831d97911af4ccd24fd4d
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -62,7 +62,7 @@ MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'ed141df2bdb1fa9fa2420be14215513963b821660383d887912b4f5878ff6165'
+INPUT_HASH = 'a2203a2868b2074c497ec261ed151856f25ec7e72e5831d97911af4ccd24fd4d'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 11, 'constants': 7, 'rhs_q': 7, 'rhs_pose': 17, 'rhs_pose_q': 14, 'pose_rates': 7, 'energy': 23, 'multipliers': 7, 'frequencies': 5}
@@ -321,5 +321,89 @@ def frequencies(p):
     D = p[3]
     out[0] = math.sqrt(g)/math.sqrt(ell)
     return out
+
+
+#: operation counts of the Jacobians (derivation/jacobian.py)
+OP_COUNTS.update(jacobian=12, jacobian_p=27)
+
+@njit(cache=True)
+def jacobian(s, p):
+    """d(state rate)/d(state): J[i, j] = d rhs_i / d s_j, shape (3, 3) (12 operations)."""
+    out = np.zeros((3, 3))
+    theta = s[0]
+    theta_dot = s[1]
+    phi_dot = s[2]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    out[0, 1] = 1
+    out[1, 0] = -g/ell
+    out[1, 1] = D*phi_dot/ell
+    out[1, 2] = D*theta_dot/ell
+    out[2, 0] = -2*D*g*theta/(L*L)
+    return out
+
+
+@njit(cache=True)
+def jacobian_p(s, p):
+    """d(state rate)/d(parameters): J[i, j] = d rhs_i / d p_j, shape (3, 4) (27 operations)."""
+    out = np.zeros((3, 4))
+    theta = s[0]
+    theta_dot = s[1]
+    phi_dot = s[2]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    out[1, 0] = -theta/ell
+    out[1, 1] = -(D*phi_dot*theta_dot - g*theta)/(ell*ell)
+    out[1, 3] = phi_dot*theta_dot/ell
+    out[2, 0] = -D*(theta*theta)/(L*L)
+    out[2, 2] = 2*D*g*(theta*theta)/(L*L*L)
+    out[2, 3] = -g*(theta*theta)/(L*L)
+    return out
+
+
+
+#: families of steady motions (derivation/steady.py): name -> the family's parameter ``value`` (``value_state`` is
+#: the state equal to it), what the motion is, and names of the modes by their largest state
+STEADY_FAMILIES = {'steady_spin': {'value': 'Omega', 'value_state': 'phi_dot', 'description': 'upright steady spin theta = 0 at the rate Omega', 'mode_names': {'A_theta': 'tilt', 'theta': 'tilt', 'theta_dot': 'tilt'}}}
+
+
+@njit(cache=True)
+def steady_state(_family, _value, p):
+    """Row 0: the closed state of family number ``_family`` of STEADY_FAMILIES at ``_value``; row 1: its derivative
+    in ``_value`` (the family's tangent)."""
+    out = np.zeros((2, 3))
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    if _family == 0:
+        Omega = _value
+        out[0, 2] = Omega
+        out[1, 2] = 1
+
+    return out
+
+
+#: functions of the closed state fixed by construction; their gradients are not physical directions
+STATE_INVARIANTS = ()
+
+
+@njit(cache=True)
+def invariant_gradients(s, p):
+    """Gradients of STATE_INVARIANTS, shape (0, 3)."""
+    out = np.zeros((0, 3))
+    theta = s[0]
+    theta_dot = s[1]
+    phi_dot = s[2]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+
+    return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '85ec6144ed992361e63e1fb388b867291b454dbc10d6e71a327d92d168ceaa4b'
+MODULE_SHA256 = '4ba41757ce8ef418ba4ac509d39f57c859dd79bf84ccd00f84e223af365feb35'

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:99349639b2e7c8da7cbcd867a637b328be42903be1978e6f5908c0bdcda10f5b
+SymPy 1.14.0; input hash sha256:e43ac1bc1d5de95b0bd164b352e1164475ff532456f8cba034f6ca1e5a27fca8
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -71,7 +71,7 @@ HAS_DISSIPATION = False
 EXPORTS = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy', 'log_A1_A2')
-INPUT_HASH = '99349639b2e7c8da7cbcd867a637b328be42903be1978e6f5908c0bdcda10f5b'
+INPUT_HASH = 'e43ac1bc1d5de95b0bd164b352e1164475ff532456f8cba034f6ca1e5a27fca8'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 24, 'constants': 14, 'rhs_q': 10, 'energy': 12, 'invariants': 19, 'frequencies': 12, 'growth_rates': 11, 'drive_rates': 12}
@@ -237,5 +237,120 @@ def drive_rates(p):
     out[0] = _c1
     out[1] = -_c1*_c2/(_c0 + _c2)
     return out
+
+
+#: operation counts of the Jacobians (derivation/jacobian.py)
+OP_COUNTS.update(jacobian=32, jacobian_p=127)
+
+@njit(cache=True)
+def jacobian(s, p):
+    """d(state rate)/d(state): J[i, j] = d rhs_i / d s_j, shape (3, 3) (32 operations)."""
+    out = np.zeros((3, 3))
+    A1 = s[0]
+    A2 = s[1]
+    A_phi = s[2]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+    _c0 = ((1.0/4.0))*D*math.sin(2*alpha)
+    _c1 = A_phi*_c0
+    _c2 = (L*L)
+    _c3 = (ell*ell)
+    _c4 = _c2 + _c3
+    _c5 = 1/_c4
+    out[0, 0] = -_c1/ell
+    out[0, 2] = -A1*_c0/ell
+    out[1, 1] = _c1*_c5*ell
+    out[1, 2] = A2*_c0*_c5*ell
+    out[2, 0] = 2*A1*_c0*_c4*_c5*g/_c2
+    out[2, 1] = -2*A2*_c0*_c3*_c5*g/_c2
+    return out
+
+
+@njit(cache=True)
+def jacobian_p(s, p):
+    """d(state rate)/d(parameters): J[i, j] = d rhs_i / d p_j, shape (3, 5) (127 operations)."""
+    out = np.zeros((3, 5))
+    A1 = s[0]
+    A2 = s[1]
+    A_phi = s[2]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+    _c0 = ((1.0/4.0))*D*math.sin(2*alpha)
+    _d0_3 = ((1.0/4.0))*math.sin(2*alpha)
+    _d0_4 = ((1.0/2.0))*D*math.cos(2*alpha)
+    _c1 = A_phi*_c0
+    _d1_3 = A_phi*_d0_3
+    _d1_4 = A_phi*_d0_4
+    _c2 = (L*L)
+    _d2_2 = 2*L
+    _c3 = (ell*ell)
+    _d3_1 = 2*ell
+    _c4 = _c2 + _c3
+    _c5 = 1/_c4
+    _d5_1 = -_d3_1/(_c4*_c4)
+    _d5_2 = -_d2_2/(_c4*_c4)
+    out[0, 1] = A1*_c1/(ell*ell)
+    out[0, 3] = -A1*_d1_3/ell
+    out[0, 4] = -A1*_d1_4/ell
+    out[1, 1] = A2*_c1*_c5 + A2*_c1*_d5_1*ell
+    out[1, 2] = A2*_c1*_d5_2*ell
+    out[1, 3] = A2*_c5*_d1_3*ell
+    out[1, 4] = A2*_c5*_d1_4*ell
+    out[2, 0] = _c0*_c5*((A1*A1)*_c4 - (A2*A2)*_c3)/_c2
+    out[2, 1] = (A1*A1)*_c0*_c5*_d3_1*g/_c2 - (A2*A2)*_c0*_c5*_d3_1*g/_c2 + _c0*_d5_1*g*((A1*A1)*_c4 - (A2*A2)*_c3)/_c2
+    out[2, 2] = (A1*A1)*_c0*_c5*_d2_2*g/_c2 + _c0*_d5_2*g*((A1*A1)*_c4 - (A2*A2)*_c3)/_c2 - _c0*_c5*_d2_2*g*((A1*A1)*_c4 - (A2*A2)*_c3)/(_c2*_c2)
+    out[2, 3] = _c5*_d0_3*g*((A1*A1)*_c4 - (A2*A2)*_c3)/_c2
+    out[2, 4] = _c5*_d0_4*g*((A1*A1)*_c4 - (A2*A2)*_c3)/_c2
+    return out
+
+
+
+#: families of steady motions (derivation/steady.py): name -> the family's parameter ``value`` (``value_state`` is
+#: the state equal to it), what the motion is, and names of the modes by their largest state
+STEADY_FAMILIES = {'steady_spin': {'value': 'Omega', 'value_state': 'A_phi', 'description': 'upright steady spin theta1 = theta2 = 0 at the rate Omega', 'mode_names': {'A1': 'theta1', 'A2': 'theta2', 'theta1_dot': 'theta1', 'theta2_dot': 'theta2'}}}
+
+
+@njit(cache=True)
+def steady_state(_family, _value, p):
+    """Row 0: the closed state of family number ``_family`` of STEADY_FAMILIES at ``_value``; row 1: its derivative
+    in ``_value`` (the family's tangent)."""
+    out = np.zeros((2, 3))
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+    if _family == 0:
+        Omega = _value
+        out[0, 2] = Omega
+        out[1, 2] = 1
+
+    return out
+
+
+#: functions of the closed state fixed by construction; their gradients are not physical directions
+STATE_INVARIANTS = ()
+
+
+@njit(cache=True)
+def invariant_gradients(s, p):
+    """Gradients of STATE_INVARIANTS, shape (0, 3)."""
+    out = np.zeros((0, 3))
+    A1 = s[0]
+    A2 = s[1]
+    A_phi = s[2]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+
+    return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '55be6f20ea973ce0da67968f311d85aaff70a89159c0b3ebacdef9b976f40160'
+MODULE_SHA256 = '33735bc9698f66cad437ed62e7d3479f59c3492c05a3cd02300eaec93f2884be'

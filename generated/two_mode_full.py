@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:9745b2d6fc4213e44e4343b789f07a33807bddd63d51ca3d48cc9f161cfccbf2
+SymPy 1.14.0; input hash sha256:85cd494262fd09abeb00a5dcfc2b29827000e944af299e373a9eefb17002ff65
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -65,7 +65,7 @@ MULTIPLIER_NAMES = ('Const22', 'Const23')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '9745b2d6fc4213e44e4343b789f07a33807bddd63d51ca3d48cc9f161cfccbf2'
+INPUT_HASH = '85cd494262fd09abeb00a5dcfc2b29827000e944af299e373a9eefb17002ff65'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 152, 'constants': 107, 'rhs_q': 65, 'rhs_pose': 166, 'rhs_pose_q': 76, 'pose_rates': 13, 'energy': 58, 'multipliers': 166, 'frequencies': 12}
@@ -681,5 +681,240 @@ def frequencies(p):
     out[0] = _c1/_c0
     out[1] = _c0*_c1/math.sqrt((L*L) + (ell*ell))
     return out
+
+
+#: operation counts of the Jacobians (derivation/jacobian.py)
+OP_COUNTS.update(jacobian=549, jacobian_p=1260)
+
+@njit(cache=True)
+def jacobian(s, p):
+    """d(state rate)/d(state): J[i, j] = d rhs_i / d s_j, shape (5, 5) (549 operations)."""
+    out = np.zeros((5, 5))
+    theta1 = s[0]
+    theta2 = s[1]
+    theta1_dot = s[2]
+    theta2_dot = s[3]
+    phi_dot = s[4]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+    _c0 = (L*L)
+    _c1 = 2*_c0
+    _c2 = (ell*ell)
+    _c3 = _c0 + _c2
+    _c4 = _c3*g
+    _c5 = math.sin(2*alpha)
+    _c6 = D*phi_dot
+    _c7 = _c6*theta1_dot
+    _d7_4 = D*theta1_dot
+    _c8 = (D*D)
+    _c9 = math.cos(alpha)
+    _c10 = math.sin(alpha)
+    _c11 = 2*_c2
+    _c12 = (theta2*theta2*theta2)
+    _d12_1 = 3*(theta2*theta2)
+    _c13 = (_c9*_c9)
+    _c14 = (_c10*_c10)
+    _c15 = _c13*_c2
+    _c16 = _c8*g*(theta1*theta1*theta1)
+    _d16_0 = 3*_c8*g*(theta1*theta1)
+    _c17 = 3*_c15
+    _c18 = (theta2*theta2)
+    _d18_1 = 2*theta2
+    _c19 = _c18*g
+    _d19_1 = _d18_1*g
+    _c20 = _c8*theta1
+    _c21 = (theta1*theta1)
+    _d21_0 = 2*theta1
+    _c22 = -_c2
+    _c23 = 8*_c0
+    _c24 = (_c10*_c10*_c10*_c10)
+    _c25 = 8*_c21*_c8
+    _d25_0 = 8*_c8*_d21_0
+    _c26 = (_c10*_c10*_c10)*_c9
+    _c27 = _c26*theta2
+    _c28 = math.cos(4*alpha) - 1
+    _c29 = 1/(_c0*(-_c18*_c28*_c8 + 8*_c2 - 16*_c20*_c27 + _c23 + _c24*_c25))
+    _d29_0 = -_c24*_d25_0/(_c0*((-_c18*_c28*_c8 + 8*_c2 - 16*_c20*_c27 + _c23 + _c24*_c25)*(-_c18*_c28*_c8 + 8*_c2 - 16*_c20*_c27 + _c23 + _c24*_c25))) + 16*_c27*_c8/(_c0*((-_c18*_c28*_c8 + 8*_c2 - 16*_c20*_c27 + _c23 + _c24*_c25)*(-_c18*_c28*_c8 + 8*_c2 - 16*_c20*_c27 + _c23 + _c24*_c25)))
+    _d29_1 = 16*_c20*_c26/(_c0*((-_c18*_c28*_c8 + 8*_c2 - 16*_c20*_c27 + _c23 + _c24*_c25)*(-_c18*_c28*_c8 + 8*_c2 - 16*_c20*_c27 + _c23 + _c24*_c25))) + _c28*_c8*_d18_1/(_c0*((-_c18*_c28*_c8 + 8*_c2 - 16*_c20*_c27 + _c23 + _c24*_c25)*(-_c18*_c28*_c8 + 8*_c2 - 16*_c20*_c27 + _c23 + _c24*_c25)))
+    _c30 = g*theta2
+    _c31 = _c23*_c7
+    _d31_2 = _c23*_c6
+    _d31_4 = _c23*_d7_4
+    _c32 = 4*_c5
+    _c33 = _c19*_c32
+    _d33_1 = _c32*_d19_1
+    _c34 = _c6*theta2_dot
+    _d34_4 = D*theta2_dot
+    out[0, 2] = 1
+    out[1, 3] = 1
+    out[2, 0] = -4*_c1*_c29*_c4/ell - 8*_c13*_c19*_c29*_c8*(_c0 - _c11 + _c17)/ell - 8*_c14*_c29*_d16_0*(_c0 + _c15)/ell + 4*_c29*_c5*_c8*_d21_0*g*theta2*(_c1 + _c17 + _c22)/ell + 4*_d29_0*(2*D*_c0*_c13*_c3*phi_dot*theta2_dot - _c0*_c3*_c5*_c7 - _c1*_c4*theta1 - _c10*_c11*_c12*_c8*(_c9*_c9*_c9)*g - 2*_c13*_c19*_c20*(_c0 - _c11 + _c17) - 2*_c14*_c16*(_c0 + _c15) + _c21*_c5*_c8*g*theta2*(_c1 + _c17 + _c22))/ell
+    out[2, 1] = -4*_c10*_c11*_c29*_c8*(_c9*_c9*_c9)*_d12_1*g/ell - 8*_c13*_c20*_c29*_d19_1*(_c0 - _c11 + _c17)/ell + 4*_c21*_c29*_c5*_c8*g*(_c1 + _c17 + _c22)/ell + 4*_d29_1*(2*D*_c0*_c13*_c3*phi_dot*theta2_dot - _c0*_c3*_c5*_c7 - _c1*_c4*theta1 - _c10*_c11*_c12*_c8*(_c9*_c9*_c9)*g - 2*_c13*_c19*_c20*(_c0 - _c11 + _c17) - 2*_c14*_c16*(_c0 + _c15) + _c21*_c5*_c8*g*theta2*(_c1 + _c17 + _c22))/ell
+    out[2, 2] = -4*_c0*_c29*_c3*_c5*_c6/ell
+    out[2, 3] = 8*D*_c0*_c13*_c29*_c3*phi_dot/ell
+    out[2, 4] = 8*D*_c0*_c13*_c29*_c3*theta2_dot/ell - 4*_c0*_c29*_c3*_c5*_d7_4/ell
+    out[3, 0] = -_c14*_c29*_c30*_d25_0*ell*(3*_c14 - 2) - 8*_c26*_c29*_d16_0*ell - _c29*_c33*_c8*ell*(3*_c13 - 2) + _d29_0*ell*(4*D*_c0*_c5*phi_dot*theta2_dot + _c12*_c28*_c8*g - _c14*_c25*_c30*(3*_c14 - 2) - _c14*_c31 - 8*_c16*_c26 - _c20*_c33*(3*_c13 - 2) - _c23*_c30)
+    out[3, 1] = -_c20*_c29*_d33_1*ell*(3*_c13 - 2) + _c28*_c29*_c8*_d12_1*ell*g + _c29*ell*g*(-_c14*_c25*(3*_c14 - 2) - _c23) + _d29_1*ell*(4*D*_c0*_c5*phi_dot*theta2_dot + _c12*_c28*_c8*g - _c14*_c25*_c30*(3*_c14 - 2) - _c14*_c31 - 8*_c16*_c26 - _c20*_c33*(3*_c13 - 2) - _c23*_c30)
+    out[3, 2] = -_c14*_c29*_d31_2*ell
+    out[3, 3] = 4*D*_c0*_c29*_c5*ell*phi_dot
+    out[3, 4] = 4*D*_c0*_c29*_c5*ell*theta2_dot - _c14*_c29*_d31_4*ell
+    out[4, 0] = D*_c29*_c32*_c4*_d21_0 + D*_c29*(_c23*_c26*_c34 - _c24*_c31 - 8*_c30*(_c0*_c13 + 2*_c15 + _c22)) + D*_d29_0*(_c0*_c28*_c34*theta2 - _c2*_c33 + _c21*_c32*_c4 + _c23*_c26*_c34*theta1 - _c24*_c31*theta1 + _c27*_c31 - 8*_c30*theta1*(_c0*_c13 + 2*_c15 + _c22))
+    out[4, 1] = D*_c0*_c28*_c29*_c34 - D*_c2*_c29*_d33_1 + D*_c26*_c29*_c31 - 8*D*_c29*g*theta1*(_c0*_c13 + 2*_c15 + _c22) + D*_d29_1*(_c0*_c28*_c34*theta2 - _c2*_c33 + _c21*_c32*_c4 + _c23*_c26*_c34*theta1 - _c24*_c31*theta1 + _c27*_c31 - 8*_c30*theta1*(_c0*_c13 + 2*_c15 + _c22))
+    out[4, 2] = D*_c29*_d31_2*(-_c24*theta1 + _c27)
+    out[4, 3] = D*_c29*_c6*(_c0*_c28*theta2 + _c23*_c26*theta1)
+    out[4, 4] = D*_c29*_d31_4*(-_c24*theta1 + _c27) + D*_c29*_d34_4*(_c0*_c28*theta2 + _c23*_c26*theta1)
+    return out
+
+
+@njit(cache=True)
+def jacobian_p(s, p):
+    """d(state rate)/d(parameters): J[i, j] = d rhs_i / d p_j, shape (5, 5) (1260 operations)."""
+    out = np.zeros((5, 5))
+    theta1 = s[0]
+    theta2 = s[1]
+    theta1_dot = s[2]
+    theta2_dot = s[3]
+    phi_dot = s[4]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+    _c0 = (L*L)
+    _d0_2 = 2*L
+    _c1 = 2*_c0
+    _d1_2 = 2*_d0_2
+    _c2 = (ell*ell)
+    _d2_1 = 2*ell
+    _c3 = _c0 + _c2
+    _c4 = _c3*g
+    _d4_1 = _d2_1*g
+    _d4_2 = _d0_2*g
+    _c5 = math.sin(2*alpha)
+    _d5_4 = 2*math.cos(2*alpha)
+    _c6 = D*phi_dot
+    _c7 = _c6*theta1_dot
+    _d7_3 = phi_dot*theta1_dot
+    _c8 = (D*D)
+    _d8_3 = 2*D
+    _c9 = math.cos(alpha)
+    _d9_4 = -math.sin(alpha)
+    _c10 = math.sin(alpha)
+    _d10_4 = math.cos(alpha)
+    _c11 = 2*_c2
+    _d11_1 = 2*_d2_1
+    _c12 = (theta2*theta2*theta2)
+    _c13 = (_c9*_c9)
+    _d13_4 = 2*_c9*_d9_4
+    _c14 = (_c10*_c10)
+    _d14_4 = 2*_c10*_d10_4
+    _c15 = _c13*_c2
+    _d15_1 = _c13*_d2_1
+    _d15_4 = _c2*_d13_4
+    _c16 = _c8*g*(theta1*theta1*theta1)
+    _d16_0 = _c8*(theta1*theta1*theta1)
+    _d16_3 = _d8_3*g*(theta1*theta1*theta1)
+    _c17 = 3*_c15
+    _d17_1 = 3*_d15_1
+    _d17_4 = 3*_d15_4
+    _c18 = (theta2*theta2)
+    _c19 = _c18*g
+    _c20 = _c8*theta1
+    _d20_3 = _d8_3*theta1
+    _c21 = (theta1*theta1)
+    _c22 = -_c2
+    _d22_1 = -_d2_1
+    _c23 = 8*_c0
+    _d23_2 = 8*_d0_2
+    _c24 = (_c10*_c10*_c10*_c10)
+    _d24_4 = 4*(_c10*_c10*_c10)*_d10_4
+    _c25 = 8*_c21*_c8
+    _d25_3 = 8*_c21*_d8_3
+    _c26 = (_c10*_c10*_c10)*_c9
+    _d26_4 = (_c10*_c10*_c10)*_d9_4 + 3*(_c10*_c10)*_c9*_d10_4
+    _c27 = _c26*theta2
+    _d27_4 = _d26_4*theta2
+    _c28 = math.cos(4*alpha) - 1
+    _d28_4 = -4*math.sin(4*alpha)
+    _c29 = 1/(_c0*(-_c18*_c28*_c8 + 8*_c2 - 16*_c20*_c27 + _c23 + _c24*_c25))
+    _d29_1 = -8*_d2_1/(_c0*((-_c18*_c28*_c8 + 8*_c2 - 16*_c20*_c27 + _c23 + _c24*_c25)*(-_c18*_c28*_c8 + 8*_c2 - 16*_c20*_c27 + _c23 + _c24*_c25)))
+    _d29_2 = -_d23_2/(_c0*((-_c18*_c28*_c8 + 8*_c2 - 16*_c20*_c27 + _c23 + _c24*_c25)*(-_c18*_c28*_c8 + 8*_c2 - 16*_c20*_c27 + _c23 + _c24*_c25))) - _d0_2/((_c0*_c0)*(-_c18*_c28*_c8 + 8*_c2 - 16*_c20*_c27 + _c23 + _c24*_c25))
+    _d29_3 = _c18*_c28*_d8_3/(_c0*((-_c18*_c28*_c8 + 8*_c2 - 16*_c20*_c27 + _c23 + _c24*_c25)*(-_c18*_c28*_c8 + 8*_c2 - 16*_c20*_c27 + _c23 + _c24*_c25))) - _c24*_d25_3/(_c0*((-_c18*_c28*_c8 + 8*_c2 - 16*_c20*_c27 + _c23 + _c24*_c25)*(-_c18*_c28*_c8 + 8*_c2 - 16*_c20*_c27 + _c23 + _c24*_c25))) + 16*_c27*_d20_3/(_c0*((-_c18*_c28*_c8 + 8*_c2 - 16*_c20*_c27 + _c23 + _c24*_c25)*(-_c18*_c28*_c8 + 8*_c2 - 16*_c20*_c27 + _c23 + _c24*_c25)))
+    _d29_4 = _c18*_c8*_d28_4/(_c0*((-_c18*_c28*_c8 + 8*_c2 - 16*_c20*_c27 + _c23 + _c24*_c25)*(-_c18*_c28*_c8 + 8*_c2 - 16*_c20*_c27 + _c23 + _c24*_c25))) + 16*_c20*_d27_4/(_c0*((-_c18*_c28*_c8 + 8*_c2 - 16*_c20*_c27 + _c23 + _c24*_c25)*(-_c18*_c28*_c8 + 8*_c2 - 16*_c20*_c27 + _c23 + _c24*_c25))) - _c25*_d24_4/(_c0*((-_c18*_c28*_c8 + 8*_c2 - 16*_c20*_c27 + _c23 + _c24*_c25)*(-_c18*_c28*_c8 + 8*_c2 - 16*_c20*_c27 + _c23 + _c24*_c25)))
+    _c30 = g*theta2
+    _c31 = _c23*_c7
+    _d31_2 = _c7*_d23_2
+    _d31_3 = _c23*_d7_3
+    _c32 = 4*_c5
+    _d32_4 = 4*_d5_4
+    _c33 = _c19*_c32
+    _d33_0 = _c18*_c32
+    _d33_4 = _c19*_d32_4
+    _c34 = _c6*theta2_dot
+    _d34_3 = phi_dot*theta2_dot
+    out[2, 0] = -4*_c1*_c29*_c3*theta1/ell - 8*_c13*_c18*_c20*_c29*(_c0 - _c11 + _c17)/ell - 8*_c14*_c29*_d16_0*(_c0 + _c15)/ell + 4*_c29*(-_c10*_c11*_c12*_c8*(_c9*_c9*_c9) + _c21*_c5*_c8*theta2*(_c1 + _c17 + _c22))/ell
+    out[2, 1] = -4*_c1*_c29*_d4_1*theta1/ell - 8*_c14*_c16*_c29*_d15_1/ell + 4*_c21*_c29*_c5*_c8*_d22_1*g*theta2/ell + 4*_c29*_d11_1*(-_c10*_c12*_c8*(_c9*_c9*_c9)*g + 2*_c13*_c19*_c20)/ell + 4*_c29*_d17_1*(-2*_c13*_c19*_c20 + _c21*_c5*_c8*g*theta2)/ell + 4*_c29*_d2_1*(2*D*_c0*_c13*phi_dot*theta2_dot - _c0*_c5*_c7)/ell - 4*_c29*(2*D*_c0*_c13*_c3*phi_dot*theta2_dot - _c0*_c3*_c5*_c7 - _c1*_c4*theta1 - _c10*_c11*_c12*_c8*(_c9*_c9*_c9)*g - 2*_c13*_c19*_c20*(_c0 - _c11 + _c17) - 2*_c14*_c16*(_c0 + _c15) + _c21*_c5*_c8*g*theta2*(_c1 + _c17 + _c22))/(ell*ell) + 4*_d29_1*(2*D*_c0*_c13*_c3*phi_dot*theta2_dot - _c0*_c3*_c5*_c7 - _c1*_c4*theta1 - _c10*_c11*_c12*_c8*(_c9*_c9*_c9)*g - 2*_c13*_c19*_c20*(_c0 - _c11 + _c17) - 2*_c14*_c16*(_c0 + _c15) + _c21*_c5*_c8*g*theta2*(_c1 + _c17 + _c22))/ell
+    out[2, 2] = -4*_c1*_c29*_d4_2*theta1/ell + 4*_c29*_d0_2*(2*D*_c0*_c13*phi_dot*theta2_dot - _c0*_c5*_c7)/ell + 4*_c29*_d0_2*(2*D*_c13*_c3*phi_dot*theta2_dot - 2*_c13*_c19*_c20 - 2*_c14*_c16 - _c3*_c5*_c7)/ell + 4*_c29*_d1_2*(_c21*_c5*_c8*g*theta2 - _c4*theta1)/ell + 4*_d29_2*(2*D*_c0*_c13*_c3*phi_dot*theta2_dot - _c0*_c3*_c5*_c7 - _c1*_c4*theta1 - _c10*_c11*_c12*_c8*(_c9*_c9*_c9)*g - 2*_c13*_c19*_c20*(_c0 - _c11 + _c17) - 2*_c14*_c16*(_c0 + _c15) + _c21*_c5*_c8*g*theta2*(_c1 + _c17 + _c22))/ell
+    out[2, 3] = 8*_c0*_c13*_c29*_c3*phi_dot*theta2_dot/ell - 4*_c0*_c29*_c3*_c5*_d7_3/ell - 8*_c13*_c19*_c29*_d20_3*(_c0 - _c11 + _c17)/ell - 8*_c14*_c29*_d16_3*(_c0 + _c15)/ell + 4*_c29*_d8_3*(-_c10*_c11*_c12*(_c9*_c9*_c9)*g + _c21*_c5*g*theta2*(_c1 + _c17 + _c22))/ell + 4*_d29_3*(2*D*_c0*_c13*_c3*phi_dot*theta2_dot - _c0*_c3*_c5*_c7 - _c1*_c4*theta1 - _c10*_c11*_c12*_c8*(_c9*_c9*_c9)*g - 2*_c13*_c19*_c20*(_c0 - _c11 + _c17) - 2*_c14*_c16*(_c0 + _c15) + _c21*_c5*_c8*g*theta2*(_c1 + _c17 + _c22))/ell
+    out[2, 4] = -12*_c10*_c11*_c12*_c29*_c8*(_c9*_c9)*_d9_4*g/ell - 4*_c11*_c12*_c29*_c8*(_c9*_c9*_c9)*_d10_4*g/ell - 8*_c14*_c16*_c29*_d15_4/ell - 8*_c16*_c29*_d14_4*(_c0 + _c15)/ell + 4*_c29*_d13_4*(2*D*_c0*_c3*phi_dot*theta2_dot - 2*_c19*_c20*(_c0 - _c11 + _c17))/ell + 4*_c29*_d17_4*(-2*_c13*_c19*_c20 + _c21*_c5*_c8*g*theta2)/ell + 4*_c29*_d5_4*(-_c0*_c3*_c7 + _c21*_c8*g*theta2*(_c1 + _c17 + _c22))/ell + 4*_d29_4*(2*D*_c0*_c13*_c3*phi_dot*theta2_dot - _c0*_c3*_c5*_c7 - _c1*_c4*theta1 - _c10*_c11*_c12*_c8*(_c9*_c9*_c9)*g - 2*_c13*_c19*_c20*(_c0 - _c11 + _c17) - 2*_c14*_c16*(_c0 + _c15) + _c21*_c5*_c8*g*theta2*(_c1 + _c17 + _c22))/ell
+    out[3, 0] = _c12*_c28*_c29*_c8*ell - _c20*_c29*_d33_0*ell*(3*_c13 - 2) - 8*_c26*_c29*_d16_0*ell + _c29*ell*theta2*(-_c14*_c25*(3*_c14 - 2) - _c23)
+    out[3, 1] = _c29*(4*D*_c0*_c5*phi_dot*theta2_dot + _c12*_c28*_c8*g - _c14*_c25*_c30*(3*_c14 - 2) - _c14*_c31 - 8*_c16*_c26 - _c20*_c33*(3*_c13 - 2) - _c23*_c30) + _d29_1*ell*(4*D*_c0*_c5*phi_dot*theta2_dot + _c12*_c28*_c8*g - _c14*_c25*_c30*(3*_c14 - 2) - _c14*_c31 - 8*_c16*_c26 - _c20*_c33*(3*_c13 - 2) - _c23*_c30)
+    out[3, 2] = 4*D*_c29*_c5*_d0_2*ell*phi_dot*theta2_dot - _c14*_c29*_d31_2*ell - _c29*_c30*_d23_2*ell + _d29_2*ell*(4*D*_c0*_c5*phi_dot*theta2_dot + _c12*_c28*_c8*g - _c14*_c25*_c30*(3*_c14 - 2) - _c14*_c31 - 8*_c16*_c26 - _c20*_c33*(3*_c13 - 2) - _c23*_c30)
+    out[3, 3] = 4*_c0*_c29*_c5*ell*phi_dot*theta2_dot + _c12*_c28*_c29*_d8_3*ell*g - _c14*_c29*_c30*_d25_3*ell*(3*_c14 - 2) - _c14*_c29*_d31_3*ell - 8*_c26*_c29*_d16_3*ell - _c29*_c33*_d20_3*ell*(3*_c13 - 2) + _d29_3*ell*(4*D*_c0*_c5*phi_dot*theta2_dot + _c12*_c28*_c8*g - _c14*_c25*_c30*(3*_c14 - 2) - _c14*_c31 - 8*_c16*_c26 - _c20*_c33*(3*_c13 - 2) - _c23*_c30)
+    out[3, 4] = 4*D*_c0*_c29*_d5_4*ell*phi_dot*theta2_dot + _c12*_c29*_c8*_d28_4*ell*g - 8*_c16*_c29*_d26_4*ell - 3*_c20*_c29*_c33*_d13_4*ell - _c20*_c29*_d33_4*ell*(3*_c13 - 2) + _c29*_d14_4*ell*(-3*_c14*_c25*_c30 - _c25*_c30*(3*_c14 - 2) - _c31) + _d29_4*ell*(4*D*_c0*_c5*phi_dot*theta2_dot + _c12*_c28*_c8*g - _c14*_c25*_c30*(3*_c14 - 2) - _c14*_c31 - 8*_c16*_c26 - _c20*_c33*(3*_c13 - 2) - _c23*_c30)
+    out[4, 0] = -D*_c2*_c29*_d33_0 + D*_c21*_c29*_c3*_c32 - 8*D*_c29*theta1*theta2*(_c0*_c13 + 2*_c15 + _c22)
+    out[4, 1] = D*_c21*_c29*_c32*_d4_1 - 16*D*_c29*_c30*_d15_1*theta1 - 8*D*_c29*_c30*_d22_1*theta1 - D*_c29*_c33*_d2_1 + D*_d29_1*(_c0*_c28*_c34*theta2 - _c2*_c33 + _c21*_c32*_c4 + _c23*_c26*_c34*theta1 - _c24*_c31*theta1 + _c27*_c31 - 8*_c30*theta1*(_c0*_c13 + 2*_c15 + _c22))
+    out[4, 2] = D*_c21*_c29*_c32*_d4_2 + D*_c26*_c29*_c34*_d23_2*theta1 + D*_c29*_d0_2*(-8*_c13*_c30*theta1 + _c28*_c34*theta2) + D*_c29*_d31_2*(-_c24*theta1 + _c27) + D*_d29_2*(_c0*_c28*_c34*theta2 - _c2*_c33 + _c21*_c32*_c4 + _c23*_c26*_c34*theta1 - _c24*_c31*theta1 + _c27*_c31 - 8*_c30*theta1*(_c0*_c13 + 2*_c15 + _c22))
+    out[4, 3] = D*_c29*_d31_3*(-_c24*theta1 + _c27) + D*_c29*_d34_3*(_c0*_c28*theta2 + _c23*_c26*theta1) + D*_d29_3*(_c0*_c28*_c34*theta2 - _c2*_c33 + _c21*_c32*_c4 + _c23*_c26*_c34*theta1 - _c24*_c31*theta1 + _c27*_c31 - 8*_c30*theta1*(_c0*_c13 + 2*_c15 + _c22)) + _c29*(_c0*_c28*_c34*theta2 - _c2*_c33 + _c21*_c32*_c4 + _c23*_c26*_c34*theta1 - _c24*_c31*theta1 + _c27*_c31 - 8*_c30*theta1*(_c0*_c13 + 2*_c15 + _c22))
+    out[4, 4] = -8*D*_c0*_c29*_c30*_d13_4*theta1 + D*_c0*_c29*_c34*_d28_4*theta2 - D*_c2*_c29*_d33_4 + D*_c21*_c29*_c4*_d32_4 + D*_c23*_c29*_c34*_d26_4*theta1 - 16*D*_c29*_c30*_d15_4*theta1 - D*_c29*_c31*_d24_4*theta1 + D*_c29*_c31*_d27_4 + D*_d29_4*(_c0*_c28*_c34*theta2 - _c2*_c33 + _c21*_c32*_c4 + _c23*_c26*_c34*theta1 - _c24*_c31*theta1 + _c27*_c31 - 8*_c30*theta1*(_c0*_c13 + 2*_c15 + _c22))
+    return out
+
+
+
+#: families of steady motions (derivation/steady.py): name -> the family's parameter ``value`` (``value_state`` is
+#: the state equal to it), what the motion is, and names of the modes by their largest state
+STEADY_FAMILIES = {'steady_spin': {'value': 'Omega', 'value_state': 'phi_dot', 'description': 'upright steady spin theta1 = theta2 = 0 at the rate Omega', 'mode_names': {'A1': 'theta1', 'A2': 'theta2', 'theta1': 'theta1', 'theta1_dot': 'theta1', 'theta2': 'theta2', 'theta2_dot': 'theta2'}}}
+
+
+@njit(cache=True)
+def steady_state(_family, _value, p):
+    """Row 0: the closed state of family number ``_family`` of STEADY_FAMILIES at ``_value``; row 1: its derivative
+    in ``_value`` (the family's tangent)."""
+    out = np.zeros((2, 5))
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+    if _family == 0:
+        Omega = _value
+        out[0, 4] = Omega
+        out[1, 4] = 1
+
+    return out
+
+
+#: functions of the closed state fixed by construction; their gradients are not physical directions
+STATE_INVARIANTS = ()
+
+
+@njit(cache=True)
+def invariant_gradients(s, p):
+    """Gradients of STATE_INVARIANTS, shape (0, 5)."""
+    out = np.zeros((0, 5))
+    theta1 = s[0]
+    theta2 = s[1]
+    theta1_dot = s[2]
+    theta2_dot = s[3]
+    phi_dot = s[4]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+
+    return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '19d5ce428a1b6cd96d38f2110b80bc498b5437a4c6a2d17493f25a9d0aab5484'
+MODULE_SHA256 = '637885fd3a0cadc0ac780301677f8525968eea499a69765aaeb4987e7a8bbc16'

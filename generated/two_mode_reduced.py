@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py and derivation/truncation.py.
-SymPy 1.14.0; input hash sha256:5d6f6b85a0f4f7a981c9213a76b2ab6e6d644b1095576cd86f963069a01bb4b9
+SymPy 1.14.0; input hash sha256:8949d108ec4e113eed13595467001b50117c0398d80458361ab6b262835ac09d
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -65,7 +65,7 @@ MULTIPLIER_NAMES = ('Const22', 'Const23')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '5d6f6b85a0f4f7a981c9213a76b2ab6e6d644b1095576cd86f963069a01bb4b9'
+INPUT_HASH = '8949d108ec4e113eed13595467001b50117c0398d80458361ab6b262835ac09d'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 80, 'constants': 52, 'rhs_q': 35, 'rhs_pose': 91, 'rhs_pose_q': 46, 'pose_rates': 13, 'energy': 58, 'multipliers': 56, 'frequencies': 12}
@@ -536,5 +536,170 @@ def frequencies(p):
     out[0] = _c1/_c0
     out[1] = _c0*_c1/math.sqrt((L*L) + (ell*ell))
     return out
+
+
+#: operation counts of the Jacobians (derivation/jacobian.py)
+OP_COUNTS.update(jacobian=156, jacobian_p=453)
+
+@njit(cache=True)
+def jacobian(s, p):
+    """d(state rate)/d(state): J[i, j] = d rhs_i / d s_j, shape (5, 5) (156 operations)."""
+    out = np.zeros((5, 5))
+    theta1 = s[0]
+    theta2 = s[1]
+    theta1_dot = s[2]
+    theta2_dot = s[3]
+    phi_dot = s[4]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+    _c0 = 2*g
+    _c1 = math.sin(2*alpha)
+    _c2 = D*phi_dot
+    _c3 = math.cos(alpha)
+    _c4 = (_c3*_c3)
+    _c5 = (L*L)
+    _c6 = (ell*ell)
+    _c7 = _c5 + _c6
+    _c8 = 1/_c7
+    _c9 = math.sin(alpha)
+    _c10 = _c2*theta1_dot
+    _d10_4 = D*theta1_dot
+    _c11 = 4*_c1*g
+    _c12 = 8*theta1
+    _c13 = _c10*_c5
+    _d13_2 = _c2*_c5
+    _d13_4 = _c5*_d10_4
+    _c14 = _c2*_c5*theta2_dot
+    _d14_3 = _c2*_c5
+    _d14_4 = D*_c5*theta2_dot
+    _c15 = _c3*(_c9*_c9*_c9)
+    out[0, 2] = 1
+    out[1, 3] = 1
+    out[2, 0] = -(1.0/2.0)*_c0/ell
+    out[2, 2] = -(1.0/2.0)*_c1*_c2/ell
+    out[2, 3] = D*_c4*phi_dot/ell
+    out[2, 4] = -(1.0/2.0)*D*_c1*theta1_dot/ell + D*_c4*theta2_dot/ell
+    out[3, 1] = -(1.0/2.0)*_c0*_c8*ell
+    out[3, 2] = -_c2*_c8*(_c9*_c9)*ell
+    out[3, 3] = ((1.0/2.0))*D*_c1*_c8*ell*phi_dot
+    out[3, 4] = ((1.0/2.0))*D*_c1*_c8*ell*theta2_dot - _c8*(_c9*_c9)*_d10_4*ell
+    out[4, 0] = ((1.0/4.0))*D*_c11*_c7*_c8*theta1/_c5 + D*_c8*(-_c13*(_c9*_c9*_c9*_c9) + _c14*_c15 - g*theta2*(_c4*_c5 + 2*_c4*_c6 - _c6))/_c5
+    out[4, 1] = ((1.0/8.0))*D*_c8*(-2*_c11*_c6*theta2 - _c12*g*(_c4*_c5 + 2*_c4*_c6 - _c6) + 8*_c13*_c15 + _c14*(math.cos(4*alpha) - 1))/_c5
+    out[4, 2] = ((1.0/8.0))*D*_c8*_d13_2*(-_c12*(_c9*_c9*_c9*_c9) + 8*_c15*theta2)/_c5
+    out[4, 3] = ((1.0/8.0))*D*_c8*_d14_3*(_c12*_c15 + theta2*(math.cos(4*alpha) - 1))/_c5
+    out[4, 4] = ((1.0/8.0))*D*_c8*_d13_4*(-_c12*(_c9*_c9*_c9*_c9) + 8*_c15*theta2)/_c5 + ((1.0/8.0))*D*_c8*_d14_4*(_c12*_c15 + theta2*(math.cos(4*alpha) - 1))/_c5
+    return out
+
+
+@njit(cache=True)
+def jacobian_p(s, p):
+    """d(state rate)/d(parameters): J[i, j] = d rhs_i / d p_j, shape (5, 5) (453 operations)."""
+    out = np.zeros((5, 5))
+    theta1 = s[0]
+    theta2 = s[1]
+    theta1_dot = s[2]
+    theta2_dot = s[3]
+    phi_dot = s[4]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+    _c0 = 2*g
+    _c1 = math.sin(2*alpha)
+    _d1_4 = 2*math.cos(2*alpha)
+    _c2 = D*phi_dot
+    _c3 = math.cos(alpha)
+    _d3_4 = -math.sin(alpha)
+    _c4 = (_c3*_c3)
+    _d4_4 = 2*_c3*_d3_4
+    _c5 = (L*L)
+    _d5_2 = 2*L
+    _c6 = (ell*ell)
+    _d6_1 = 2*ell
+    _c7 = _c5 + _c6
+    _c8 = 1/_c7
+    _d8_1 = -_d6_1/(_c7*_c7)
+    _d8_2 = -_d5_2/(_c7*_c7)
+    _c9 = math.sin(alpha)
+    _d9_4 = math.cos(alpha)
+    _c10 = _c2*theta1_dot
+    _d10_3 = phi_dot*theta1_dot
+    _c11 = 4*_c1*g
+    _d11_0 = 4*_c1
+    _d11_4 = 4*_d1_4*g
+    _c12 = 8*theta1
+    _c13 = _c10*_c5
+    _d13_2 = _c10*_d5_2
+    _d13_3 = _c5*_d10_3
+    _c14 = _c2*_c5*theta2_dot
+    _d14_2 = _c2*_d5_2*theta2_dot
+    _d14_3 = _c5*phi_dot*theta2_dot
+    _c15 = _c3*(_c9*_c9*_c9)
+    _d15_4 = 3*_c3*(_c9*_c9)*_d9_4 + (_c9*_c9*_c9)*_d3_4
+    out[2, 0] = -theta1/ell
+    out[2, 1] = -(1.0/2.0)*(2*D*_c4*phi_dot*theta2_dot - _c0*theta1 - _c1*_c2*theta1_dot)/(ell*ell)
+    out[2, 3] = -(1.0/2.0)*_c1*phi_dot*theta1_dot/ell + _c4*phi_dot*theta2_dot/ell
+    out[2, 4] = D*_d4_4*phi_dot*theta2_dot/ell - (1.0/2.0)*_c2*_d1_4*theta1_dot/ell
+    out[3, 0] = -_c8*ell*theta2
+    out[3, 1] = ((1.0/2.0))*_c8*(D*_c1*phi_dot*theta2_dot - _c0*theta2 - 2*_c10*(_c9*_c9)) + ((1.0/2.0))*_d8_1*ell*(D*_c1*phi_dot*theta2_dot - _c0*theta2 - 2*_c10*(_c9*_c9))
+    out[3, 2] = ((1.0/2.0))*_d8_2*ell*(D*_c1*phi_dot*theta2_dot - _c0*theta2 - 2*_c10*(_c9*_c9))
+    out[3, 3] = ((1.0/2.0))*_c1*_c8*ell*phi_dot*theta2_dot - _c8*(_c9*_c9)*_d10_3*ell
+    out[3, 4] = ((1.0/2.0))*D*_c8*_d1_4*ell*phi_dot*theta2_dot - 2*_c10*_c8*_c9*_d9_4*ell
+    out[4, 0] = -(1.0/8.0)*D*_c12*_c8*theta2*(_c4*_c5 + 2*_c4*_c6 - _c6)/_c5 + ((1.0/8.0))*D*_c8*_d11_0*(-_c6*(theta2*theta2) + _c7*(theta1*theta1))/_c5
+    out[4, 1] = ((1.0/8.0))*D*_c11*_c8*_d6_1*(theta1*theta1)/_c5 + ((1.0/8.0))*D*_c8*_d6_1*(-_c11*(theta2*theta2) - _c12*g*theta2*(2*_c4 - 1))/_c5 + ((1.0/8.0))*D*_d8_1*(-_c11*_c6*(theta2*theta2) + _c11*_c7*(theta1*theta1) - _c12*_c13*(_c9*_c9*_c9*_c9) + _c12*_c14*_c15 - _c12*g*theta2*(_c4*_c5 + 2*_c4*_c6 - _c6) + 8*_c13*_c15*theta2 + _c14*theta2*(math.cos(4*alpha) - 1))/_c5
+    out[4, 2] = ((1.0/8.0))*D*_c11*_c8*_d5_2*(theta1*theta1)/_c5 + ((1.0/8.0))*D*_c8*_d13_2*(-_c12*(_c9*_c9*_c9*_c9) + 8*_c15*theta2)/_c5 + ((1.0/8.0))*D*_c8*_d14_2*(_c12*_c15 + theta2*(math.cos(4*alpha) - 1))/_c5 + ((1.0/8.0))*D*_d8_2*(-_c11*_c6*(theta2*theta2) + _c11*_c7*(theta1*theta1) - _c12*_c13*(_c9*_c9*_c9*_c9) + _c12*_c14*_c15 - _c12*g*theta2*(_c4*_c5 + 2*_c4*_c6 - _c6) + 8*_c13*_c15*theta2 + _c14*theta2*(math.cos(4*alpha) - 1))/_c5 + _d5_2*(-(1.0/8.0)*D*_c12*_c4*_c8*g*theta2/_c5 - (1.0/8.0)*D*_c8*(-_c11*_c6*(theta2*theta2) + _c11*_c7*(theta1*theta1) - _c12*_c13*(_c9*_c9*_c9*_c9) + _c12*_c14*_c15 - _c12*g*theta2*(_c4*_c5 + 2*_c4*_c6 - _c6) + 8*_c13*_c15*theta2 + _c14*theta2*(math.cos(4*alpha) - 1))/(_c5*_c5))
+    out[4, 3] = ((1.0/8.0))*D*_c8*_d13_3*(-_c12*(_c9*_c9*_c9*_c9) + 8*_c15*theta2)/_c5 + ((1.0/8.0))*D*_c8*_d14_3*(_c12*_c15 + theta2*(math.cos(4*alpha) - 1))/_c5 + ((1.0/8.0))*_c8*(-_c11*_c6*(theta2*theta2) + _c11*_c7*(theta1*theta1) - _c12*_c13*(_c9*_c9*_c9*_c9) + _c12*_c14*_c15 - _c12*g*theta2*(_c4*_c5 + 2*_c4*_c6 - _c6) + 8*_c13*_c15*theta2 + _c14*theta2*(math.cos(4*alpha) - 1))/_c5
+    out[4, 4] = -(1.0/2.0)*D*_c12*_c13*_c8*(_c9*_c9*_c9)*_d9_4/_c5 - (1.0/8.0)*D*_c12*_c8*_d4_4*g*theta2*(_c5 + 2*_c6)/_c5 - (1.0/2.0)*D*_c14*_c8*theta2*math.sin(4*alpha)/_c5 + ((1.0/8.0))*D*_c8*_d11_4*(-_c6*(theta2*theta2) + _c7*(theta1*theta1))/_c5 + ((1.0/8.0))*D*_c8*_d15_4*(_c12*_c14 + 8*_c13*theta2)/_c5
+    return out
+
+
+
+#: families of steady motions (derivation/steady.py): name -> the family's parameter ``value`` (``value_state`` is
+#: the state equal to it), what the motion is, and names of the modes by their largest state
+STEADY_FAMILIES = {'steady_spin': {'value': 'Omega', 'value_state': 'phi_dot', 'description': 'upright steady spin theta1 = theta2 = 0 at the rate Omega', 'mode_names': {'A1': 'theta1', 'A2': 'theta2', 'theta1': 'theta1', 'theta1_dot': 'theta1', 'theta2': 'theta2', 'theta2_dot': 'theta2'}}}
+
+
+@njit(cache=True)
+def steady_state(_family, _value, p):
+    """Row 0: the closed state of family number ``_family`` of STEADY_FAMILIES at ``_value``; row 1: its derivative
+    in ``_value`` (the family's tangent)."""
+    out = np.zeros((2, 5))
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+    if _family == 0:
+        Omega = _value
+        out[0, 4] = Omega
+        out[1, 4] = 1
+
+    return out
+
+
+#: functions of the closed state fixed by construction; their gradients are not physical directions
+STATE_INVARIANTS = ()
+
+
+@njit(cache=True)
+def invariant_gradients(s, p):
+    """Gradients of STATE_INVARIANTS, shape (0, 5)."""
+    out = np.zeros((0, 5))
+    theta1 = s[0]
+    theta2 = s[1]
+    theta1_dot = s[2]
+    theta2_dot = s[3]
+    phi_dot = s[4]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+
+    return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '6d49f5b0c9478ae5f9c8587cee7f3612350805f3afd5e209082491b99c3f14d1'
+MODULE_SHA256 = 'c0fc6aeb718dca5792ef24f660c8e374243abcf4e6cbf8b2c381d3104d53f792'

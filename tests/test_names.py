@@ -69,6 +69,8 @@ def test_hostile_names_give_the_same_numbers_bit_for_bit(pair):
             assert getattr(plain, f)(y, p) == getattr(hostile, f)(y, p)
         assert np.array_equal(plain.multipliers(y, p), hostile.multipliers(y, p))
         assert np.array_equal(plain.module.event_values(y, p), hostile.module.event_values(y, p))
+        assert np.array_equal(plain.jacobian(y, p), hostile.jacobian(y, p))
+        assert np.array_equal(plain.jacobian_p(y, p), hostile.jacobian_p(y, p))
 
 
 @pytest.mark.parametrize("method", ["DOP853", "scipy:DOP853"])

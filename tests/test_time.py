@@ -62,6 +62,19 @@ def test_every_method_passes_the_true_time(model, reference, method, kw):
     assert np.max(np.abs(want[1])) > 0.3  # the torque turned the sleigh
 
 
+def test_the_jacobians_read_the_time(model):
+    """d rhs / d (v, omega) and d rhs / d tau0 of the equations written by hand above, at several times."""
+    p = model.params(a=A, k=K, tau0=TAU0)
+    v, w = Y0
+    with pytest.raises(ValueError, match="pass `t`"):
+        model.jacobian(Y0, p)
+    for t in (0.0, 0.7, 2.0):
+        want = np.array([[0.0, 2 * A * w], [-A * w / (K * K + A * A), -A * v / (K * K + A * A)]])
+        assert np.allclose(model.jacobian(Y0, p, t=t), want, rtol=1e-14, atol=1e-16)
+        d_tau0 = model.jacobian_p(Y0, p, t=t)[:, model.param_names.index("tau0")]
+        assert np.allclose(d_tau0, [0.0, math.sin(t) / (K * K + A * A)], rtol=1e-14, atol=1e-16)
+
+
 def test_generated_rhs_reads_the_time(model):
     p = model.params(a=A, k=K, tau0=TAU0)
     for t in (0.0, 0.7, 2.0):

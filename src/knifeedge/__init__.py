@@ -18,9 +18,13 @@ from .scenes import Scene, get_scene as scene, scene_names
 from .sweep import SweepTable, sweep
 from .reversal import ReversalPrediction, reversal_time
 from .animation import animate
+from .stability import Linearization, linearize, stability, stability_boundaries
+from .sections import Section, poincare
+from .lyapunov import LyapunovResult, lyapunov
 from .integrators.compiler import compile_mode, set_compile_mode
 
 __version__ = "0.1.0"
 __all__ = ["load", "available", "ValidityWarning", "simulate", "Model", "SimulationResult", "METHODS", "MODEL_NAMES",
            "FIDELITIES", "sweep", "SweepTable", "scene", "scene_names", "Scene", "RunSpec", "reversal_time",
-           "ReversalPrediction", "animate", "set_compile_mode", "compile_mode"]
+           "ReversalPrediction", "animate", "set_compile_mode", "compile_mode", "linearize", "Linearization", "stability",
+           "stability_boundaries", "poincare", "Section", "lyapunov", "LyapunovResult"]

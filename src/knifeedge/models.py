@@ -331,6 +331,44 @@ class Model:
             raise ValueError("`y` must be finite")
         return np.ascontiguousarray(arr)
 
+    def jacobian(self, y, p, t=None) -> np.ndarray:
+        """``d rhs / d y`` of the closed state at ``y`` (generated exactly, ``derivation/jacobian.py``).
+
+        ``y``: the closed state, or the pose-extended state (its pose is ignored: the closed state's rates
+        do not depend on it).  Returns shape (n_closed, n_closed), ``J[i, j] = d rate_i / d y_j``.
+        ``t``: the time, needed when the rates depend on it explicitly (:attr:`jacobian_needs_time`).
+        """
+        return self._jacobian("jacobian", y, p, t)
+
+    def jacobian_p(self, y, p, t=None) -> np.ndarray:
+        """``d rhs / d p`` of the closed state at ``y``: shape (n_closed, n_params), ``J[i, j] = d rate_i / d p_j``."""
+        return self._jacobian("jacobian_p", y, p, t)
+
+    @property
+    def jacobian_needs_time(self) -> bool:
+        """The rates depend on the time explicitly: the Jacobians take it as a third argument."""
+        self._closed(np.zeros(self.n_state))  # refuses a module written without Jacobians
+        return self.module.jacobian.py_func.__code__.co_argcount == 3
+
+    def _jacobian(self, name: str, y, p, t):
+        y = self._closed(y)  # refuses a module written without Jacobians
+        p = self.check_params(p)
+        function = getattr(self.module, name)
+        if not self.jacobian_needs_time:
+            return function(y, p)
+        if t is None:
+            raise ValueError(f"the Jacobian of {self.name} depends on the time: pass `t`")
+        return function(y, p, float(t))
+
+    def _closed(self, y) -> np.ndarray:
+        if not hasattr(self.module, "invariant_gradients"):
+            raise ValueError(f"the module of {self.name} ({self.fidelity}) was written without Jacobians and steady "
+                             f"motions by an older knifeedge: regenerate it (make derive, or knifeedge derive)")
+        y = self._states(y)
+        if y.ndim != 1:
+            raise ValueError(f"`y` must be one state of shape ({len(self.closed_state_names)},), got shape {y.shape}")
+        return np.ascontiguousarray(y[:len(self.closed_state_names)])
+
     def frequencies(self, p) -> np.ndarray:
         """Angular frequencies of the small oscillations of :attr:`tilt_names` at zero spin (1/time).
 

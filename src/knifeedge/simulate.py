@@ -127,7 +127,9 @@ class _Run:
     events: tuple = ()
 
 
-SCIPY_METHODS = ("RK45", "DOP853", "LSODA", "Radau")
+SCIPY_METHODS = ("RK45", "DOP853", "LSODA", "Radau", "BDF")
+#: SciPy's methods that use a Jacobian: they receive the generated one (``Model.jacobian``)
+SCIPY_IMPLICIT = ("LSODA", "Radau", "BDF")
 #: method name -> runner(run) -> (t, y, {event name: times}, Status, nfev, nsteps, nrejected)
 METHODS: dict = {}
 
@@ -467,11 +469,11 @@ class _Phase:
         self.nfev, self.nsteps, self.solver, self.done = nfev, nsteps, solver, done
 
 
-def _scipy_phase(r: _Run, scipy_method: str, fun, event_values, stop=None) -> _Phase:
+def _scipy_phase(r: _Run, scipy_method: str, fun, event_values, stop=None, jac=None) -> _Phase:
     """Step SciPy's solver ``scipy_method`` from the start of ``r`` to its end, or until ``stop()`` is true.
 
     ``fun(t, y)``: the right-hand side; ``event_values(y)``: the model's
-    event functions.  ``stop`` is asked about every 0.05 s of stepping; when
+    event functions; ``jac(t, y)``: its Jacobian (implicit methods), or ``None``.  ``stop`` is asked about every 0.05 s of stepping; when
     it says yes the phase ends after a whole step, with ``done`` false.
     """
     import time
@@ -504,7 +506,8 @@ def _scipy_phase(r: _Run, scipy_method: str, fun, event_values, stop=None) -> _P
         y = sol(t)
         return y[c] if c >= 0 else event_values(y)[-1 - c]
 
-    solver = solver_class(fun, r.t0, r.y0, r.t1, rtol=r.rtol, atol=r.atol, max_step=r.max_step)
+    options = {"jac": jac} if jac is not None else {}
+    solver = solver_class(fun, r.t0, r.y0, r.t1, rtol=r.rtol, atol=r.atol, max_step=r.max_step, **options)
     every = r.t_eval is None
     ts, ys = ([r.t0], [r.y0.copy()]) if every else ([], [])
     i_eval = 0
@@ -577,6 +580,17 @@ def _scipy_phase(r: _Run, scipy_method: str, fun, event_values, stop=None) -> _P
     return _Phase(ts, ys, found, outcome, solver.nfev, nsteps, solver, done)
 
 
+def _scipy_jacobian(model: Model, p: np.ndarray):
+    """``jac(t, y)`` for SciPy: the generated ``jacobian`` of the closed state; ``None`` with the pose (SciPy then
+    differentiates numerically)."""
+    if model.pose:
+        return None
+    jacobian = model.module.jacobian
+    if model.jacobian_needs_time:
+        return lambda t, y: jacobian(y, p, t)
+    return lambda t, y: jacobian(y, p)
+
+
 def _run_scipy(scipy_method: str):
     """SciPy's ``OdeSolver`` stepped here, as ``solve_ivp`` does, so that ``max_steps`` is honoured.
 
@@ -592,7 +606,8 @@ def _run_scipy(scipy_method: str):
         model, p = r.model, r.p
         rhs = model.rhs
         module_events = getattr(model.module, "event_values", None)
-        ph = _scipy_phase(r, scipy_method, lambda t, y: rhs(t, y, p), lambda y: module_events(y, p))
+        ph = _scipy_phase(r, scipy_method, lambda t, y: rhs(t, y, p), lambda y: module_events(y, p),
+                          jac=_scipy_jacobian(model, p) if scipy_method in SCIPY_IMPLICIT else None)
         ts, ys, n = ph.ts, ph.ys, model.n_state
         if r.t_eval is None:
             t_out, y_out = np.array(ts), np.array(ys).T
@@ -780,7 +795,8 @@ def simulate(
         (default), ``"DP54"`` (alias ``"RK45"``); fixed step (need ``h``):
         ``"RK4"``, ``"implicit_midpoint"``, ``"gauss4"``, ``"gauss6"``;
         SciPy: ``"scipy:RK45"``, ``"scipy:DOP853"``, ``"scipy:LSODA"``,
-        ``"scipy:Radau"``.
+        ``"scipy:Radau"``, ``"scipy:BDF"`` (the implicit three receive the
+        generated Jacobian, ``Model.jacobian``, unless ``pose``).
     rtol : relative tolerance, at least ``MIN_RTOL`` (100 machine epsilons).
     atol : absolute tolerance, a number or one per state (shape (n_state,)).
         For the Gauss methods it is the floor of the scale of the stage

@@ -1,0 +1,259 @@
+"""Linear stability: the linearization at a state, steady motions and where they change stability.
+
+Everything is read from the generated module: the exact Jacobian (``jacobian``), the invariants of the closed
+state (``STATE_INVARIANTS``, ``invariant_gradients``) and the families of steady motions (``STEADY_FAMILIES``,
+``steady_state``), written by ``derivation/jacobian.py`` and ``derivation/steady.py``.
+
+The trivial directions are separated by construction, not by the size of their eigenvalues: the physical
+phase space at ``y`` is the subspace orthogonal to the invariants' gradients and to the tangent of the family
+of steady motions through ``y``.  On a family (where the flow keeps both the invariants' level set and the
+family) these subspaces are invariant under the linearization ``A``, so the physical eigenvalues are those of
+``A`` restricted to the quotient, ``Q^T A Q`` with ``Q`` an orthonormal basis of the physical directions, and
+the trivial ones those of the invariants' block and the family's tangent; together they are the eigenvalues of
+``A``.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.optimize import brentq
+
+from .models import Model
+
+#: a real part counts as nonzero above this fraction of the size of the linearization (its physical block's norm):
+#: the eigenvalues of a nearly defective block, at a collision of two imaginary pairs, are only fixed to about
+#: machine epsilon over their separation
+MARGINAL = 1e-7
+
+
+@dataclass(frozen=True)
+class Mode:
+    """One eigenvalue of the linearization with its eigenvector (closed-state coordinates) and what it is."""
+
+    name: str
+    eigenvalue: complex
+    vector: np.ndarray
+
+    @property
+    def growth_rate(self) -> float:
+        """Real part of the eigenvalue (1/time): > 0 grows, < 0 decays."""
+        return float(self.eigenvalue.real)
+
+    @property
+    def frequency(self) -> float:
+        """Imaginary part of the eigenvalue (angular frequency, 1/time)."""
+        return float(self.eigenvalue.imag)
+
+
+@dataclass(frozen=True)
+class Linearization:
+    """The linearization of a model's closed state at ``y``.
+
+    Attributes
+    ----------
+    A : (n, n) array, the Jacobian ``d rhs / d y`` at ``y``.
+    eigenvalues : (n,) complex array, every eigenvalue of ``A``; ``eigenvectors`` (n, n), columns.
+    modes : the physical modes (eigenvalues of ``A`` on the physical directions), largest real part first, each
+        named by its largest component (the family's ``mode_names``, else the state's name).
+    trivial : the trivial directions, each a :class:`Mode` whose ``name`` says what it is (an invariant of the
+        closed state, or the tangent of the family of steady motions).
+    family, value : the family of steady motions through ``y`` and its parameter there (``None`` if none).
+    """
+
+    A: np.ndarray
+    eigenvalues: np.ndarray
+    eigenvectors: np.ndarray
+    modes: tuple
+    trivial: tuple
+    state_names: tuple
+    family: str | None = None
+    value: float | None = None
+    #: orthonormal basis of the physical directions (columns) and ``A`` in it (``basis.T @ A @ basis``)
+    basis: np.ndarray | None = None
+    A_physical: np.ndarray | None = None
+
+    @property
+    def physical_eigenvalues(self) -> np.ndarray:
+        return np.array([m.eigenvalue for m in self.modes])
+
+    @property
+    def max_growth_rate(self) -> float:
+        """Largest real part of the physical modes."""
+        return max((m.growth_rate for m in self.modes), default=float("nan"))
+
+
+def _family_index(m: Model, family: str) -> int:
+    families = list(getattr(m.module, "STEADY_FAMILIES", {}))
+    if not isinstance(family, str) or family not in families:
+        raise ValueError(f"unknown `family` {family!r} for {m.name} ({m.fidelity}); accepted: "
+                         f"{', '.join(families) or 'none (the model declares no steady motions)'}")
+    return families.index(family)
+
+
+def steady_state(m: Model, p, family: str, value: float) -> np.ndarray:
+    """The closed state of the steady motion ``family`` at the parameter ``value``."""
+    k = _family_index(m, family)
+    return m.module.steady_state(k, float(value), m.check_params(p))[0].copy()
+
+
+def _through(m: Model, y: np.ndarray, p: np.ndarray):
+    """``(family, value)`` of the steady motion through ``y``, or ``(None, None)``."""
+    for k, (name, info) in enumerate(getattr(m.module, "STEADY_FAMILIES", {}).items()):
+        if not info["value_state"]:
+            continue
+        value = float(y[m.closed_state_names.index(info["value_state"])])
+        if np.allclose(m.module.steady_state(k, value, p)[0], y, rtol=1e-12, atol=1e-12):
+            return name, value
+    return None, None
+
+
+def _basis(rows: np.ndarray, n: int) -> tuple:
+    """Orthonormal bases ``(N, Q)`` of the span of ``rows`` and of its orthogonal complement in R^n."""
+    if rows.shape[0] == 0:
+        return np.zeros((n, 0)), np.eye(n)
+    u, s, vt = np.linalg.svd(rows)
+    rank = int(np.sum(s > 1e-12 * s[0]))
+    return vt[:rank].T, vt[rank:].T
+
+
+def _name(vector: np.ndarray, names: tuple, mode_names: dict, skip: str) -> str:
+    weights = np.abs(vector)
+    labelled = [i for i, nm in enumerate(names) if nm in mode_names]
+    if labelled and weights[labelled].max() > 1e-8 * weights.max():
+        i = max(labelled, key=lambda j: weights[j])
+        return mode_names[names[i]]
+    order = [i for i in np.argsort(-weights) if names[i] != skip] or [int(np.argmax(weights))]
+    return names[order[0]]
+
+
+def linearize(m: Model, y, p, family: str | None = None) -> Linearization:
+    """Linearize ``m`` at the state ``y`` (closed or pose-extended) with parameters ``p``.
+
+    ``family``: the family of steady motions whose tangent is a trivial direction (default: the declared family
+    through ``y``, if any).  Works at any state; off a family, or away from an equilibrium, the physical block
+    is ``A`` on the directions orthogonal to the invariants' gradients.
+    """
+    p = m.check_params(p)
+    y = m._closed(y)
+    if m.jacobian_needs_time:
+        raise ValueError(f"{m.name} depends on the time explicitly: a linearization at a state alone is not "
+                         f"defined (its steady motions are those of autonomous models)")
+    names = m.closed_state_names
+    n = len(names)
+    A = m.jacobian(y, p)
+    eigenvalues, eigenvectors = np.linalg.eig(A)
+    value = None
+    if family is None:
+        family, value = _through(m, y, p)
+    else:
+        k = _family_index(m, family)
+        info = m.module.STEADY_FAMILIES[family]
+        value = float(y[names.index(info["value_state"])]) if info["value_state"] else None
+    inv_names = tuple(getattr(m.module, "STATE_INVARIANTS", ()))
+    G = m.module.invariant_gradients(y, p) if inv_names else np.zeros((0, n))
+    trivial = []
+    N, _ = _basis(G, n)
+    if N.shape[1]:
+        lam, w = np.linalg.eig(N.T @ A @ N)
+        for j in range(len(lam)):
+            v = N @ w[:, j]
+            which = int(np.argmax(np.abs(G @ v.real) + np.abs(G @ v.imag)))
+            trivial.append(Mode(f"invariant: {inv_names[which]}", complex(lam[j]), v))
+    rows = G
+    mode_names, skip = {}, ""
+    if family is not None:
+        k = _family_index(m, family)
+        info = m.module.STEADY_FAMILIES[family]
+        mode_names, skip = info["mode_names"], info["value_state"]
+        t = m.module.steady_state(k, value if value is not None else 0.0, p)[1]
+        t = t - N @ (N.T @ t)
+        t = t / np.linalg.norm(t)
+        trivial.append(Mode(f"family {family}: {info['description']}", complex(t @ A @ t), t))
+        rows = np.vstack([G, t])
+    _, Q = _basis(rows, n)
+    B = Q.T @ A @ Q
+    lam, w = np.linalg.eig(B)
+    order = np.lexsort((-lam.imag, -lam.real))
+    modes = tuple(Mode(_name(Q @ w[:, j], names, mode_names, skip), complex(lam[j]), Q @ w[:, j]) for j in order)
+    return Linearization(A, eigenvalues, eigenvectors, modes, tuple(trivial), names, family, value, Q, B)
+
+
+@dataclass(frozen=True)
+class StabilityTable:
+    """The physical eigenvalues along a family: ``eigenvalues[i]`` at ``values[i]`` (largest real part first)."""
+
+    family: str
+    values: np.ndarray
+    eigenvalues: np.ndarray
+    names: tuple
+
+    @property
+    def max_growth_rate(self) -> np.ndarray:
+        return self.eigenvalues.real.max(axis=1)
+
+
+def _values(values, what: str = "`values`") -> np.ndarray:
+    arr = np.atleast_1d(np.asarray(values, dtype=float))
+    if arr.ndim != 1 or arr.size == 0 or not np.isfinite(arr).all():
+        raise ValueError(f"{what} must be one or more finite numbers, got {values!r}")
+    return arr
+
+
+def stability(m: Model, p, family: str, values) -> StabilityTable:
+    """The physical eigenvalues of the steady motions ``family`` at each of ``values`` (its parameter)."""
+    p = m.check_params(p)
+    values = _values(values)
+    rows, names = [], []
+    for v in values:
+        lin = linearize(m, steady_state(m, p, family, v), p, family=family)
+        rows.append(lin.physical_eigenvalues)
+        names.append(tuple(md.name for md in lin.modes))
+    return StabilityTable(family, values, np.array(rows), tuple(names))
+
+
+def _growth(m: Model, p: np.ndarray, family: str, v: float) -> tuple:
+    """Largest physical real part at ``v`` and the threshold below which it counts as zero."""
+    lin = linearize(m, steady_state(m, p, family, v), p, family=family)
+    return float(lin.physical_eigenvalues.real.max()), MARGINAL * max(float(np.linalg.norm(lin.A_physical)), 1e-300)
+
+
+def stability_boundaries(m: Model, p, family: str, interval, n_grid: int = 400) -> np.ndarray:
+    """Every value of the family's parameter in ``interval = (lo, hi)`` where the steady motion changes stability.
+
+    The largest real part of the physical modes is tabulated on ``n_grid`` points; each change of its sign
+    (a real part counts as zero below :data:`MARGINAL` times the norm of the physical block, as for the imaginary pairs of a
+    conservative system) is refined: by Brent's method on the real part where it crosses zero transversally
+    (a pair crossing the imaginary axis), else by bisection of the sign (two imaginary pairs colliding), to
+    1e-13 relative.
+    """
+    p = m.check_params(p)
+    lo, hi = _values(interval, "`interval`")[:2] if np.size(interval) == 2 else (None, None)
+    if lo is None or not lo < hi:
+        raise ValueError(f"`interval` must be (lo, hi) with lo < hi, got {interval!r}")
+    if not isinstance(n_grid, int) or n_grid < 2:
+        raise ValueError(f"`n_grid` must be an integer >= 2, got {n_grid!r}")
+    _family_index(m, family)
+    grid = np.linspace(lo, hi, n_grid)
+    state = [_growth(m, p, family, v) for v in grid]
+    unstable = [g > thr for g, thr in state]
+    out = []
+    xtol = 1e-13 * max(abs(lo), abs(hi))
+    for i in range(n_grid - 1):
+        if unstable[i] == unstable[i + 1]:
+            continue
+        (ga, ta), (gb, tb) = state[i], state[i + 1]
+        a, b = grid[i], grid[i + 1]
+        if min(abs(ga) - ta, abs(gb) - tb) > 0 and (ga > 0) != (gb > 0):
+            out.append(brentq(lambda v: _growth(m, p, family, v)[0], a, b, xtol=xtol, rtol=1e-15))
+            continue
+        ua = unstable[i]
+        while b - a > max(xtol, 1e-15 * abs(a + b)):
+            mid = 0.5 * (a + b)
+            g, thr = _growth(m, p, family, mid)
+            if (g > thr) == ua:
+                a = mid
+            else:
+                b = mid
+        out.append(0.5 * (a + b))
+    return np.array(out)

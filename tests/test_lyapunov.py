@@ -1,0 +1,86 @@
+"""Lyapunov exponents (``knifeedge.lyapunov``, Benettin/QR on the emitted variational equations).
+
+Checks with independent references:
+- the sum of the exponents is the time average of the divergence of the vector field on the physical phase space
+  (Liouville's formula: the volume of the tangent parallelepiped grows as exp of the integral of the trace),
+  the trace taken here from ``m.jacobian`` on a separate DOP853 run;
+- the exponents do not depend on how often the tangent vectors are re-orthonormalized (R of a product is the
+  product of the R's, so the sums of log |R_jj| agree to round-off);
+- at an asymptotically stable steady spin (the undamped Schömer celt, spinning in its stable direction: a
+  non-holonomic system with conserved energy whose phase volume shrinks) the exponents are the real parts of
+  the linearization's physical eigenvalues, each twice (a complex pair), and 0 along the family of spins.
+"""
+import importlib
+
+import numpy as np
+import pytest
+
+import knifeedge as ke
+
+st = importlib.import_module("knifeedge.stability")
+
+
+def test_sum_of_exponents_is_the_time_averaged_divergence():
+    m = ke.load("two_mode")
+    p = m.params(m.default_params)
+    y0 = m.state(theta1=0.02, theta2=0.01, theta1_dot=0.0, theta2_dot=0.0, phi_dot=0.3)
+    res = ke.lyapunov(m, y0, p, 60.0, h=0.005, tau=0.05)
+    t = np.linspace(0.0, 60.0, 24001)
+    run = ke.simulate(m, y0, (0.0, 60.0), p, rtol=1e-11, atol=1e-13, t_eval=t)
+    trace = np.array([np.trace(m.jacobian(run.y[:, i], p)) for i in range(t.size)])
+    average = float(np.sum(0.5 * (trace[1:] + trace[:-1]) * np.diff(t))) / 60.0
+    assert res.exponents.shape == (5,) and np.all(np.diff(res.exponents) <= 0)
+    assert abs(res.exponents.sum() - average) <= 1e-7 * max(1.0, abs(average))
+    np.testing.assert_allclose(res.y, run.y[:, -1], rtol=0, atol=1e-8)  # the same trajectory
+
+
+def test_exponents_do_not_depend_on_the_renormalization_interval():
+    m = ke.load("two_mode")
+    p = m.params(m.default_params)
+    y0 = m.state(theta1=0.02, theta2=0.01, theta1_dot=0.0, theta2_dot=0.0, phi_dot=0.3)
+    a = ke.lyapunov(m, y0, p, 40.0, h=0.01, tau=0.1)
+    b = ke.lyapunov(m, y0, p, 40.0, h=0.01, tau=0.5)
+    assert a.h == b.h
+    np.testing.assert_allclose(a.exponents, b.exponents, rtol=0, atol=1e-10)
+    assert a.history.shape == (400, 5) and b.history.shape == (80, 5)
+
+
+def test_bad_arguments_are_named():
+    m = ke.load("single_mode")
+    p = m.params(m.default_params)
+    y0 = m.state(theta=0.01, theta_dot=0.0, phi_dot=0.1)
+    with pytest.raises(ValueError, match="`k`"):
+        ke.lyapunov(m, y0, p, 1.0, k=4)
+    with pytest.raises(ValueError, match="`tau`"):
+        ke.lyapunov(m, y0, p, 1.0, h=0.1, tau=0.01)
+    with pytest.raises(ValueError, match="`t_end`"):
+        ke.lyapunov(m, y0, p, -1.0)
+
+
+@pytest.mark.slow
+def test_at_an_asymptotically_stable_steady_spin_the_exponents_are_the_eigenvalues_real_parts():
+    m = ke.load("celt")
+    p = m.preset("schoemer", sigma=0.0)
+    y0 = st.steady_state(m, p, "steady_spin", 5.0)
+    lin = ke.linearize(m, y0, p)
+    expected = np.sort(np.concatenate([lin.physical_eigenvalues.real, [0.0]]))[::-1]
+    assert expected[1] < 0  # asymptotically stable in the physical directions
+    res = ke.lyapunov(m, y0, p, 4000.0, tau=1.0)
+    # the exponents approach their limits like log(transient)/T
+    np.testing.assert_allclose(res.exponents, expected, rtol=0, atol=2e-3)
+
+
+@pytest.mark.slow
+def test_on_an_integrable_body_the_exponents_fall_like_log_t_over_t():
+    """The rolling disk is integrable (Chaplygin; Appell and Korteweg): near stable upright rolling its motion is
+    quasi-periodic, every exponent is 0, and the finite-time estimates fall like log(T)/T."""
+    m = ke.load("rolling_disk")
+    p = m.params(g=9.81, r=0.1)
+    y0 = m.state(q2=0.05, q1_dot=0.0, q2_dot=0.0, q3_dot=8.0)  # above the critical 5.72 rad/s
+    largest = {}
+    for t_end in (1e3, 1e4):
+        res = ke.lyapunov(m, y0, p, t_end)
+        largest[t_end] = float(np.abs(res.exponents).max())
+        assert 0.3 < largest[t_end] * t_end / np.log(t_end) < 3.0
+    expected = (np.log(1e4) / 1e4) / (np.log(1e3) / 1e3)  # 0.133
+    assert largest[1e4] / largest[1e3] == pytest.approx(expected, rel=0.3)
