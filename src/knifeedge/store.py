@@ -47,6 +47,8 @@ from collections.abc import Iterable, Mapping, Sequence
 from operator import add, itemgetter
 from pathlib import Path
 
+from ._process import alive as _alive, start_time as _start_time
+
 #: outcome columns, after the input columns
 RESULT_COLUMNS = ("status", "message", "nfev", "n_reversals", "first_reversal", "mean_interval", "reversal_times",
                   "seconds")
@@ -196,26 +198,6 @@ def _coerce(column: str, value, where: str):
         return float(value)
     except (TypeError, ValueError):
         raise ValueError(f"{where}: column `{column}` must be a number, got {value!r}") from None
-
-
-# -- identity of this process, for claims ---------------------------------------------
-def _start_time(pid: int) -> str | None:
-    """The start time of process ``pid`` (Linux ``/proc``), to tell a reused pid from its first owner."""
-    try:
-        with open(f"/proc/{pid}/stat", "rb") as f:
-            return f.read().rsplit(b")", 1)[1].split()[19].decode()
-    except (OSError, IndexError):
-        return None
-
-
-def _alive(pid: int, started: str | None) -> bool:
-    try:
-        os.kill(pid, 0)
-    except ProcessLookupError:
-        return False
-    except PermissionError:
-        pass  # exists, another user's
-    return started is None or _start_time(pid) in (None, started)
 
 
 class StoreError(ValueError):

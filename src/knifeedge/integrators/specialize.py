@@ -26,6 +26,7 @@ not writable, a per-user folder in the system temporary directory.
 """
 from __future__ import annotations
 
+import errno
 import glob
 import hashlib
 import importlib.util
@@ -38,6 +39,7 @@ import zlib
 from pathlib import Path
 from types import ModuleType
 
+import llvmlite
 import numba
 
 _HERE = Path(__file__).resolve().parent
@@ -63,10 +65,13 @@ _LOADED: dict = {}
 def cache_dir() -> Path:
     """The writable folder holding specialized kernels (created if needed).
 
-    The fallback in the system temporary directory is created private
-    (mode 0700) and refused when it is not a plain folder of this user that
-    only this user can write to (a folder anyone can write to, or another
-    user's, could hold files planted for this process to load).
+    Whichever folder is used ($KNIFEEDGE_CACHE_DIR, $XDG_CACHE_HOME/knifeedge,
+    ~/.cache/knifeedge, or the fallback in the system temporary directory),
+    it and its ``kernels`` folder are created private (mode 0700) and refused
+    when they are not plain folders of this user that only this user can
+    write to: a folder another user can write to could hold files planted for
+    this process to import or load as machine code.  A refused folder is said
+    in one line on stderr (once) and the next candidate is tried.
     """
     env = os.environ.get("KNIFEEDGE_CACHE_DIR")
     if env:
@@ -81,30 +86,42 @@ def cache_dir() -> Path:
     refused = []
     for c in candidates:
         try:
-            if c == fallback:
-                _private_folder(c)
-            (c / "kernels").mkdir(parents=True, exist_ok=True)
+            if c != fallback:
+                c.parent.mkdir(parents=True, exist_ok=True)
+            _private_folder(c, follow=c != fallback)  # a folder the user named may be a link to one
+            _private_folder(c / "kernels")
+            if (c / "kernels" / "__pycache__").exists():  # numba's cache of the kernels' functions
+                _private_folder(c / "kernels" / "__pycache__")
             probe = c / "kernels" / f".probe-{os.getpid()}"
             probe.write_text("")
             probe.unlink()
             return c
         except PermissionError as exc:
             refused.append(str(exc))
+            if c != fallback and str(exc) not in _SAID and "refused" in str(exc):
+                _SAID.add(str(exc))
+                print(f"knifeedge: compiled-code cache {exc}; using {fallback} instead (make the folder private "
+                      "with chmod 700, or set KNIFEEDGE_CACHE_DIR)", file=sys.stderr, flush=True)
         except OSError:
             continue
     raise OSError(f"no writable cache directory for compiled kernels among {[str(c) for c in candidates]}"
                   f"{'; ' + '; '.join(refused) if refused else ''}; set KNIFEEDGE_CACHE_DIR")
 
 
-def _private_folder(path: Path) -> None:
-    """Create ``path`` with mode 0700, or check that the existing one is this user's and private."""
+#: refusals of cache folders said on stderr already
+_SAID: set = set()
+
+
+def _private_folder(path: Path, follow: bool = False) -> None:
+    """Create ``path`` with mode 0700, or check that the existing one is this user's and private (``follow``:
+    a link to such a folder is accepted)."""
     try:
         path.mkdir(mode=0o700)
     except FileExistsError:
         pass
     if not hasattr(os, "getuid"):
         return
-    st = os.lstat(path)
+    st = os.stat(path) if follow else os.lstat(path)
     if not stat.S_ISDIR(st.st_mode):
         raise PermissionError(f"refused {path}: not a folder (a link or a file)")
     if st.st_uid != os.getuid():
@@ -278,7 +295,7 @@ def _key(source: str, rhs_file: str | None) -> str:
         h.update(dep.read_bytes())
     if rhs_file is not None:
         h.update(Path(rhs_file).read_bytes())
-    h.update(f"numba {numba.__version__} python {sys.version}".encode())
+    h.update(f"numba {numba.__version__} llvmlite {llvmlite.__version__} python {sys.version}".encode())
     return h.hexdigest()[:20]
 
 
@@ -329,6 +346,17 @@ def damaged_cache_files(exc: BaseException) -> list:
     return list(dict.fromkeys(files))
 
 
+#: errno values of a write that found no room
+_FULL = (errno.ENOSPC, errno.EDQUOT)
+
+
+def disk_full(exc: OSError, what: str) -> OSError:
+    """The error to raise when writing ``what`` to the cache found the disk (or the quota) full."""
+    where = exc.filename or cache_dir()
+    return OSError(exc.errno, f"the disk holding the compiled-code cache is full: could not write {what} to "
+                              f"{where}; free some space, or set KNIFEEDGE_CACHE_DIR to a folder on another disk")
+
+
 def call_repairing(fn, *args):
     """``fn(*args)``, discarding damaged numba cache entries (and recompiling) instead of failing.
 
@@ -341,6 +369,8 @@ def call_repairing(fn, *args):
         try:
             return fn(*args)
         except _DAMAGE as exc:
+            if isinstance(exc, OSError) and exc.errno in _FULL:
+                raise disk_full(exc, "the compiled code") from exc
             files = damaged_cache_files(exc)
             if not files:
                 raise
@@ -394,8 +424,14 @@ def _import(stem: str, source: str, name: str) -> ModuleType:
     path = folder / f"{stem}.py"
     if not path.exists() or path.read_text() != source:
         tmp = folder / f".{stem}.{os.getpid()}.tmp"
-        tmp.write_text(source)
-        os.replace(tmp, path)
+        try:
+            tmp.write_text(source)
+            os.replace(tmp, path)
+        except OSError as exc:
+            tmp.unlink(missing_ok=True)
+            if exc.errno in _FULL:
+                raise disk_full(exc, f"the kernel module {path.name}") from exc
+            raise
     spec = importlib.util.spec_from_file_location(name, path)
     module = importlib.util.module_from_spec(spec)
     sys.modules[name] = module
