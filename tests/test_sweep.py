@@ -23,8 +23,9 @@ from knifeedge.scenes import amplitude_theory as th
 from knifeedge.store import StoreError
 
 GRID = {"phi_dot": [0.1, 0.2], "D": [0.5, 1.0]}
-#: a cheap sweep for the failure tests: 24 short single-mode runs
-QUICK = {"phi_dot": [0.1 + 0.01 * i for i in range(24)]}
+#: a cheap sweep for the failure tests: 24 short single-mode runs, inside the reduced fidelity's domain (the tilt
+#: reaches about phi_dot0 L/sqrt(g ell) <= 0.19 < 0.21: no ValidityWarning)
+QUICK = {"phi_dot": [0.1 + 0.004 * i for i in range(24)]}
 
 
 def _spec():
