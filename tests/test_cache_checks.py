@@ -164,3 +164,20 @@ def test_cached_compiled_code_is_checked_before_it_runs_disk_full(tmp_path, monk
     assert "the disk is full" in err and "damaged" not in err
     monkeypatch.undo()
     assert not list(tmp_path.glob(".*tmp"))
+
+
+def test_cached_compiled_code_is_checked_before_it_runs_kernel_module(tmp_path, monkeypatch, capsys):
+    """A kernel module in the cache whose text is not the one its name (a hash of it) stands for, altered or
+    damaged (not even text), is written again before it is imported, and that is said in one line."""
+    monkeypatch.setenv("KNIFEEDGE_CACHE_DIR", str(tmp_path / "k"))
+    stem, source = "kernel_test_0123", "ANSWER = 42\n"
+    module = specialize._import(stem, source, "knifeedge_kernels_test.kernel_test_0123")
+    assert module.ANSWER == 42 and capsys.readouterr().err == ""
+    path = tmp_path / "k" / "kernels" / f"{stem}.py"
+    for altered in (b"ANSWER = 41\n", b"\xff\xfe\x00garbage"):
+        path.write_bytes(altered)
+        monkeypatch.delitem(specialize._LOADED, stem)
+        module = specialize._import(stem, source, "knifeedge_kernels_test.kernel_test_0123")
+        assert module.ANSWER == 42 and path.read_text() == source
+        assert "replaced a kernel module" in capsys.readouterr().err
+    sys.modules.pop("knifeedge_kernels_test.kernel_test_0123", None)

@@ -422,10 +422,17 @@ def _import(stem: str, source: str, name: str) -> ModuleType:
         return _LOADED[stem]
     folder = cache_dir() / "kernels"
     path = folder / f"{stem}.py"
-    if not path.exists() or path.read_text() != source:
+    try:
+        same = path.read_bytes() == source.encode()
+    except FileNotFoundError:
+        same = None
+    if not same:
+        if same is False:  # its name is a hash of this text: the file was altered (or damaged)
+            print(f"knifeedge: replaced a kernel module whose text was not the one its name stands for: {path}",
+                  file=sys.stderr, flush=True)
         tmp = folder / f".{stem}.{os.getpid()}.tmp"
         try:
-            tmp.write_text(source)
+            tmp.write_bytes(source.encode())
             os.replace(tmp, path)
         except OSError as exc:
             tmp.unlink(missing_ok=True)
