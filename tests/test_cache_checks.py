@@ -181,3 +181,42 @@ def test_cached_compiled_code_is_checked_before_it_runs_kernel_module(tmp_path, 
         assert module.ANSWER == 42 and path.read_text() == source
         assert "replaced a kernel module" in capsys.readouterr().err
     sys.modules.pop("knifeedge_kernels_test.kernel_test_0123", None)
+
+
+_SCALED = "from numba import njit\n\n\n@njit(cache=True)\ndef scaled(x):\n    return 2.5 * x\n"
+
+
+def _fresh_import(stem: str, monkeypatch):
+    """The kernel module ``stem`` imported anew (as a second process would: a new dispatcher, the cache's files)."""
+    name = f"knifeedge_kernels_test.{stem}"
+    specialize._LOADED.pop(stem, None)
+    sys.modules.pop(name, None)
+    return specialize._import(stem, _SCALED, name)
+
+
+def test_cached_compiled_code_is_checked_before_it_runs_numba_cache(tmp_path, monkeypatch, capsys):
+    """numba's cache files of a kernel module's functions carry a SHA-256 checked before they are unpickled: a
+    constant scaled in the cached machine code is discarded (one line) and compiled again, never run."""
+    from pathlib import Path
+
+    monkeypatch.setenv("KNIFEEDGE_CACHE_DIR", str(tmp_path / "k"))
+    stem = "checked_scaled_0123"
+    first = _fresh_import(stem, monkeypatch)
+    assert specialize.call_repairing(first.scaled, 2.0) == 5.0
+    folder = Path(first.scaled._cache._cache_file._cache_path)
+    data = next(folder.glob(f"{stem}.scaled-*.nbc"))
+    raw = data.read_bytes()
+    assert raw.startswith(specialize.CHECKED_MAGIC)
+    constant = struct.pack("<d", 2.5)
+    assert constant in raw
+    data.write_bytes(raw.replace(constant, struct.pack("<d", 3.0)))
+    capsys.readouterr()
+    second = _fresh_import(stem, monkeypatch)
+    assert specialize.call_repairing(second.scaled, 2.0) == 5.0
+    err = [ln for ln in capsys.readouterr().err.splitlines() if ln.strip()]
+    assert len(err) == 1 and "discarded a damaged compiled-code cache entry" in err[0] and "checksum" in err[0]
+    third = _fresh_import(stem, monkeypatch)  # compiled again and kept: loads quietly
+    assert specialize.call_repairing(third.scaled, 2.0) == 5.0 and capsys.readouterr().err == ""
+    for s in (stem,):
+        sys.modules.pop(f"knifeedge_kernels_test.{s}", None)
+        specialize._LOADED.pop(s, None)

@@ -323,6 +323,72 @@ def is_compiled(module: ModuleType) -> bool:
         return any((path.parent / "__pycache__").glob(f"{path.stem}.solve-*.nbi"))
 
 
+#: the first bytes of numba's cache files of the kernels' functions, written by :class:`_CheckedCacheFile`
+CHECKED_MAGIC = b"knifeedge checked numba cache\n"
+
+
+def _checked(data: bytes) -> bytes:
+    return CHECKED_MAGIC + hashlib.sha256(data).digest() + data
+
+
+def _verified(data: bytes, path) -> bytes:
+    """``data`` without its :func:`_checked` prefix; ValueError if the prefix or the checksum is wrong."""
+    head = len(CHECKED_MAGIC) + 32
+    if not data.startswith(CHECKED_MAGIC) or hashlib.sha256(data[head:]).digest() != data[len(CHECKED_MAGIC):head]:
+        raise ValueError(f"{path}: its checksum does not match its content")
+    return data[head:]
+
+
+def _checked_cache_file_class():
+    """numba's index-and-data cache file with a SHA-256 written with each file and verified before anything in
+    it is unpickled (the index's numba version too)."""
+    from numba.core.caching import IndexDataCacheFile
+
+    class _CheckedCacheFile(IndexDataCacheFile):
+        def _dump(self, obj):
+            return _checked(super()._dump(obj))
+
+        def _save_index(self, overloads):
+            data = self._version.encode() + b"\n" + IndexDataCacheFile._dump(self, (self._source_stamp, overloads))
+            with self._open_for_write(self._index_path) as f:
+                f.write(_checked(data))
+
+        def _load_index(self):
+            try:
+                with open(self._index_path, "rb") as f:
+                    raw = f.read()
+            except FileNotFoundError:
+                return {}
+            version, _, data = _verified(raw, self._index_path).partition(b"\n")
+            if version != self._version.encode():
+                return {}
+            stamp, overloads = pickle.loads(data)
+            return overloads if stamp == self._source_stamp else {}
+
+        def _load_data(self, name):
+            path = self._data_path(name)
+            with open(path, "rb") as f:
+                return pickle.loads(_verified(f.read(), path))
+
+    return _CheckedCacheFile
+
+
+_CHECKED: list = []
+
+
+def check_cached_code(module: ModuleType) -> None:
+    """Have numba keep the machine code of ``module``'s own ``cache=True`` functions in files with a checksum,
+    verified before they are loaded (a damaged or altered file is then discarded by :func:`call_repairing`)."""
+    from numba.core.caching import IndexDataCacheFile
+
+    if not _CHECKED:
+        _CHECKED.append(_checked_cache_file_class())
+    for obj in vars(module).values():
+        cache_file = getattr(getattr(obj, "_cache", None), "_cache_file", None)
+        if type(cache_file) is IndexDataCacheFile and getattr(obj.py_func, "__module__", None) == module.__name__:
+            cache_file.__class__ = _CHECKED[0]
+
+
 #: errors numba's cache raises when one of its files is damaged (truncated, overwritten, unreadable)
 _DAMAGE = (EOFError, pickle.UnpicklingError, zlib.error, ValueError, TypeError, AttributeError, IndexError,
            KeyError, OSError, ImportError)
@@ -447,5 +513,6 @@ def _import(stem: str, source: str, name: str) -> ModuleType:
     except BaseException:
         del sys.modules[name]
         raise
+    check_cached_code(module)
     _LOADED[stem] = module
     return module
