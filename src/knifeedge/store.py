@@ -275,10 +275,9 @@ class ResultStore:
     def _cannot_use(self, exc: sqlite3.DatabaseError) -> str:
         """What to say when SQLite refused the file: read-only, or not a database at all."""
         text = str(exc)
-        folder = self.path.parent
-        readonly = ("readonly" in text or "read-only" in text or not os.access(folder, os.W_OK)
-                    or (self.path.exists() and not os.access(self.path, os.W_OK)))
-        if readonly or "unable to open" in text:
+        no_access = not os.access(self.path.parent, os.W_OK) or (self.path.exists()
+                                                                 and not os.access(self.path, os.W_OK))
+        if "readonly" in text or "read-only" in text or ("unable to open" in text and no_access):
             return (f"`out` file {str(self.path)!r} cannot be written ({text}): it or its folder is read-only "
                     f"(read-only media, or no write permission); choose a writable location")
         return (f"`out` file {str(self.path)!r} is not a knifeedge results database ({text}); "
