@@ -826,7 +826,7 @@ class _Sweep:
         ready: deque = deque()  # runs claimed, not handed out yet
         inflight: dict = {}  # task id -> run ids
         task_ids = itertools.count()
-        interrupted = False
+        interrupted = gone = False
         last_poll = 0.0
         try:
             while todo or ready or inflight or others:
@@ -876,8 +876,9 @@ class _Sweep:
             if self.store is not None:
                 self._write_now()
                 self.store.check_file()
-        except BaseException:
+        except BaseException as exc:
             interrupted = True
+            gone = isinstance(exc, StoreGone)  # said by the error itself: no store to resume from
             raise
         finally:
             if pool is not None:
@@ -889,7 +890,7 @@ class _Sweep:
                 inp["run_id"], "not computed: the sweep was interrupted")) for inp in self.inputs]
             if self.export is not None:
                 write_text(self.export, [r for r in rows if r["status"] != MISSING], self.columns)
-            if interrupted and self.progress is True:
+            if interrupted and self.progress is True and not gone:
                 where = self.store.path if self.store is not None else None
                 saved = (f"; the finished runs are in {where}: run the same sweep again to resume"
                          if where is not None else "")
