@@ -220,3 +220,23 @@ def test_cached_compiled_code_is_checked_before_it_runs_numba_cache(tmp_path, mo
     for s in (stem,):
         sys.modules.pop(f"knifeedge_kernels_test.{s}", None)
         specialize._LOADED.pop(s, None)
+
+
+def test_cached_compiled_code_is_checked_before_it_runs_numba_cache_dir(tmp_path, monkeypatch, capsys):
+    """Where NUMBA_CACHE_DIR puts the kernels' numba cache in a folder others may write to, nothing is loaded
+    from it: said once, the functions compile without a cache."""
+    import numba
+
+    if not hasattr(os, "getuid"):
+        pytest.skip("no user ids")
+    shared = tmp_path / "numba-shared"
+    shared.mkdir()
+    shared.chmod(0o777)
+    monkeypatch.setenv("KNIFEEDGE_CACHE_DIR", str(tmp_path / "k"))
+    monkeypatch.setattr(numba.config, "CACHE_DIR", str(shared))
+    module = _fresh_import("checked_shared_0123", monkeypatch)
+    assert specialize.call_repairing(module.scaled, 2.0) == 5.0
+    assert "others may write to it" in capsys.readouterr().err
+    assert not list(shared.rglob("*.nb[ic]"))
+    sys.modules.pop("knifeedge_kernels_test.checked_shared_0123", None)
+    specialize._LOADED.pop("checked_shared_0123", None)

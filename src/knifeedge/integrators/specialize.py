@@ -378,15 +378,40 @@ _CHECKED: list = []
 
 def check_cached_code(module: ModuleType) -> None:
     """Have numba keep the machine code of ``module``'s own ``cache=True`` functions in files with a checksum,
-    verified before they are loaded (a damaged or altered file is then discarded by :func:`call_repairing`)."""
-    from numba.core.caching import IndexDataCacheFile
+    verified before they are loaded (a damaged or altered file is then discarded by :func:`call_repairing`).
+
+    Where numba keeps them outside the checked cache folder (``NUMBA_CACHE_DIR``), that folder and its parent
+    get :func:`cache_dir`'s checks; if refused, the functions compile in each process without a cache (said
+    once)."""
+    from numba.core.caching import IndexDataCacheFile, NullCache
 
     if not _CHECKED:
         _CHECKED.append(_checked_cache_file_class())
     for obj in vars(module).values():
         cache_file = getattr(getattr(obj, "_cache", None), "_cache_file", None)
         if type(cache_file) is IndexDataCacheFile and getattr(obj.py_func, "__module__", None) == module.__name__:
-            cache_file.__class__ = _CHECKED[0]
+            if _private_numba_folder(Path(cache_file._cache_path), Path(module.__file__).parent):
+                cache_file.__class__ = _CHECKED[0]
+            else:
+                obj._cache = NullCache()
+
+
+def _private_numba_folder(folder: Path, kernels: Path) -> bool:
+    """Whether numba's cache ``folder`` of a kernel module in ``kernels`` may be read: its ``__pycache__`` (checked
+    by :func:`cache_dir`), or a folder that passes the same checks, with its parent."""
+    if folder == kernels / "__pycache__":
+        return True
+    try:
+        for f in (folder, folder.parent):
+            if f.exists():
+                _private_folder(f, follow=f == folder.parent)
+        return True
+    except PermissionError as exc:
+        if str(exc) not in _SAID:
+            _SAID.add(str(exc))
+            print(f"knifeedge: numba's cache {exc}; the kernels compile in each process without it (make the "
+                  "folder private with chmod 700)", file=sys.stderr, flush=True)
+        return False
 
 
 #: errors numba's cache raises when one of its files is damaged (truncated, overwritten, unreadable)
