@@ -240,3 +240,24 @@ def test_cached_compiled_code_is_checked_before_it_runs_numba_cache_dir(tmp_path
     assert not list(shared.rglob("*.nb[ic]"))
     sys.modules.pop("knifeedge_kernels_test.checked_shared_0123", None)
     specialize._LOADED.pop("checked_shared_0123", None)
+
+
+def test_cached_compiled_code_is_checked_before_it_runs_under_a_group_umask(tmp_path, monkeypatch):
+    """With umask 002 (user private groups), the folders and parts files the cache makes still pass its own
+    checks: folders 0700, parts files 0644."""
+    if not hasattr(os, "getuid"):
+        pytest.skip("no user ids")
+    monkeypatch.delenv("KNIFEEDGE_CACHE_DIR", raising=False)
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "xdg"))
+    old = os.umask(0o002)
+    try:
+        folder = specialize.cache_dir()
+        assert folder == tmp_path / "xdg" / "knifeedge"
+        for f in (folder, folder / "kernels", folder / "kernels" / "__pycache__"):
+            assert f.stat().st_mode & 0o777 == 0o700, f
+        path = folder / "kernels" / "k.parts-x.nbo"
+        irparts.write_parts(path, _blobs())
+        assert path.stat().st_mode & 0o777 == 0o644
+        assert irparts.read_parts(path) == _blobs()
+    finally:
+        os.umask(old)

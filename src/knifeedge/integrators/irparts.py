@@ -422,7 +422,7 @@ def write_parts(path: Path, serialized: tuple) -> None:
     header = json.dumps(_header(name, tuple(blobs)), sort_keys=True).encode()
     tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
     try:
-        with open(tmp, "wb") as f:
+        with open(os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o644), "wb") as f:  # (whatever the umask)
             f.write(MAGIC + struct.pack("<Q", len(header)) + header)
             f.write(blobs[0])
             f.write(blobs[1])

@@ -90,8 +90,7 @@ def cache_dir() -> Path:
                 c.parent.mkdir(parents=True, exist_ok=True)
             _private_folder(c, follow=c != fallback)  # a folder the user named may be a link to one
             _private_folder(c / "kernels")
-            if (c / "kernels" / "__pycache__").exists():  # numba's cache of the kernels' functions
-                _private_folder(c / "kernels" / "__pycache__")
+            _private_folder(c / "kernels" / "__pycache__")  # numba's cache of the kernels' functions (made 0700)
             probe = c / "kernels" / f".probe-{os.getpid()}"
             probe.write_text("")
             probe.unlink()
