@@ -10,6 +10,7 @@ import dataclasses
 import warnings
 
 import numpy as np
+import pytest
 
 import knifeedge as ke
 
@@ -41,3 +42,20 @@ def test_the_packages_own_work_stays_inside_its_validity_domains():
     assert not fig.axes[1].patches
     first = base.run.with_(phi_dot=0.1, n_eval=None).simulate().reversal_times[0]
     assert res.numbers["first_reversal_times_vs_phi_dot0"][0] == first
+
+
+@pytest.mark.slow
+def test_the_packages_own_work_stays_inside_its_validity_domains_model_fidelity():
+    """Scene model_fidelity runs the reduced and amplitude fidelities beyond their domain on purpose (to find
+    where they stop being good enough): no ValidityWarning, the points outside reported, the band shaded from the
+    domain's bound (0.21 rad, generated VALIDITY of single_mode reduced)."""
+    base = ke.scene("model_fidelity")
+    scene = dataclasses.replace(base, settings={**base.settings, "phi_dot0_over_omega": (0.1, 0.4)})
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", ke.ValidityWarning)
+        res = scene()
+    assert res.numbers["single_mode_reduced_outside_validity_domain"] == [0.4]
+    assert res.numbers["single_mode_amplitude_outside_validity_domain"] == [0.4]
+    assert res.data["bound"] == ke.load("single_mode", "reduced").validity["theta"] == 0.21
+    fig = res.figure()
+    assert any("outside the small-tilt domain" in p.get_label() for p in fig.axes[0].patches)
