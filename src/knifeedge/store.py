@@ -19,12 +19,18 @@ shell, ``pandas.read_sql``, DB browsers).
   next claim); a sweep killed at any instant leaves every committed row intact
   and readable.
 * **Claims with a lease**: before a run is computed, the sweep claims it in
-  the ``claims`` table (one transaction).  A second sweep on the same file
-  skips runs claimed by a live sweep and computes the others, then waits for
-  the first sweep's rows; a claim whose owner died (same host: its process is
-  gone; another host: its lease expired without renewal) is taken over.  So
-  concurrent sweeps share the work, nothing is computed twice and nothing is
-  lost.
+  the ``claims`` table (one transaction), with its process (pid, start
+  time, host), the time of the claim and a lease it renews while it works.
+  A second sweep on the same file skips runs claimed by a live sweep and
+  computes the others, then waits for the first sweep's rows; a claim whose
+  owner died (same host: its process is gone) or whose lease expired without
+  renewal (a sweep suspended with Ctrl-Z, hung, or on a host that went away)
+  is taken over.  So concurrent sweeps share the work, nothing is lost, and
+  no wait outlasts a lease.
+* **A knifeedge file, and the same file throughout**: a store is marked with
+  SQLite's ``application_id`` and ``user_version``; any other database is
+  refused before anything in it is changed.  A store deleted or replaced
+  while a sweep writes to it is noticed at the sweep's next transaction.
 
 CSV and JSON-lines files are exports (:func:`write_text`) and, for results
 written by earlier versions, imports (:func:`read_text`): an unreadable line
@@ -47,6 +53,8 @@ from collections.abc import Iterable, Mapping, Sequence
 from operator import add, itemgetter
 from pathlib import Path
 
+from ._process import alive as _alive, start_time as _start_time
+
 #: outcome columns, after the input columns
 RESULT_COLUMNS = ("status", "message", "nfev", "n_reversals", "first_reversal", "mean_interval", "reversal_times",
                   "seconds")
@@ -58,7 +66,11 @@ TEXT_COLUMNS = frozenset({"run_id", "model", "fidelity", "method", "status", "me
 INT_COLUMNS = frozenset({"nfev", "n_reversals"})
 STORE_SUFFIXES = (".sqlite", ".sqlite3", ".db")
 TEXT_SUFFIXES = (".csv", ".jsonl", ".ndjson", ".json")
-SCHEMA_VERSION = 1
+SCHEMA_VERSION = 2
+#: SQLite's ``application_id`` of a knifeedge results store (the bytes "knif"); ``user_version`` is SCHEMA_VERSION
+APPLICATION_ID = 0x6B6E6966
+#: the tables of a store written before stores were marked (schema 1), adopted and marked when opened
+_LEGACY_TABLES = frozenset({"meta", "runs", "claims"})
 _NONE: Mapping = {}
 _RESERVED = frozenset(INPUT_COLUMNS + RESULT_COLUMNS + ("spec", "finished_at", "checksum"))
 
@@ -111,6 +123,11 @@ def _checksum(row: Mapping, order: Sequence[str]) -> str:
     anything else by its ``repr``.
     """
     return hashlib.blake2b("\x1f".join(_segment(c, row.get(c)) for c in order).encode(), digest_size=8).hexdigest()
+
+
+def with_spec(row_checksum: str, spec: str | None) -> str:
+    """The checksum kept in a store's row: its values' :func:`checksum` and the JSON text of its run (``spec``)."""
+    return hashlib.blake2b(f"{row_checksum}\x1fspec={spec!r}".encode(), digest_size=8).hexdigest()
 
 
 class RowChecksum:
@@ -198,28 +215,17 @@ def _coerce(column: str, value, where: str):
         raise ValueError(f"{where}: column `{column}` must be a number, got {value!r}") from None
 
 
-# -- identity of this process, for claims ---------------------------------------------
-def _start_time(pid: int) -> str | None:
-    """The start time of process ``pid`` (Linux ``/proc``), to tell a reused pid from its first owner."""
-    try:
-        with open(f"/proc/{pid}/stat", "rb") as f:
-            return f.read().rsplit(b")", 1)[1].split()[19].decode()
-    except (OSError, IndexError):
-        return None
-
-
-def _alive(pid: int, started: str | None) -> bool:
-    try:
-        os.kill(pid, 0)
-    except ProcessLookupError:
-        return False
-    except PermissionError:
-        pass  # exists, another user's
-    return started is None or _start_time(pid) in (None, started)
-
-
 class StoreError(ValueError):
     """A results file that cannot be used as it is (the message says which file and what to do)."""
+
+
+class StoreGone(StoreError):
+    """The store's file was deleted or replaced during a sweep."""
+
+
+def _file_id(path: Path) -> tuple:
+    st = os.stat(path)
+    return st.st_dev, st.st_ino
 
 
 # -- the store ------------------------------------------------------------------------
@@ -246,18 +252,71 @@ class ResultStore:
         self._sql: dict = {}
         self._last_renew = 0.0
         self._depth = 0  # transactions open (see transaction)
-        self.path.parent.mkdir(parents=True, exist_ok=True)
+        try:
+            self.path.parent.mkdir(parents=True, exist_ok=True)
+        except OSError as exc:
+            raise StoreError(f"`out` file {str(self.path)!r}: its folder cannot be created ({exc}); "
+                             "choose a writable location") from None
+        self.db = None
         try:
             self.db = sqlite3.connect(str(self.path), timeout=60.0, isolation_level=None, check_same_thread=False)
+            self._file = _file_id(self.path)
+            legacy = self._identify()  # before anything is written: another database is left untouched
             self.db.execute("PRAGMA journal_mode=WAL")
             self.db.execute("PRAGMA synchronous=NORMAL")
-            self._create(tuple(input_columns))
-        except sqlite3.DatabaseError as exc:
-            raise StoreError(f"`out` file {str(self.path)!r} is not a knifeedge results database ({exc}); "
-                             "choose another file name") from None
+            self._create(tuple(input_columns), legacy)
+        except BaseException as exc:
+            if self.db is not None:
+                self.db.close()
+            if isinstance(exc, sqlite3.DatabaseError):
+                raise StoreError(self._cannot_use(exc)) from None
+            raise
+
+    def _cannot_use(self, exc: sqlite3.DatabaseError) -> str:
+        """What to say when SQLite refused the file: read-only, or not a database at all."""
+        text = str(exc)
+        no_access = not os.access(self.path.parent, os.W_OK) or (self.path.exists()
+                                                                 and not os.access(self.path, os.W_OK))
+        if "readonly" in text or "read-only" in text or ("unable to open" in text and no_access):
+            return (f"`out` file {str(self.path)!r} cannot be written ({text}): it or its folder is read-only "
+                    f"(read-only media, or no write permission); choose a writable location")
+        return (f"`out` file {str(self.path)!r} is not a knifeedge results database ({text}); "
+                "choose another file name")
+
+    def _identify(self) -> bool:
+        """Check that the file is a knifeedge store, an empty (new) database, or a store of schema 1 (returns
+        True: to be marked); raise :class:`StoreError` for any other database, having changed nothing."""
+        app = self.db.execute("PRAGMA application_id").fetchone()[0]
+        version = self.db.execute("PRAGMA user_version").fetchone()[0]
+        tables = {r[0] for r in self.db.execute("SELECT name FROM sqlite_master WHERE type = 'table'")}
+        if app == APPLICATION_ID:
+            if version != SCHEMA_VERSION:
+                raise StoreError(f"`out` file {str(self.path)!r} has results schema {version}, this knifeedge "
+                                 f"reads schema {SCHEMA_VERSION}: choose another file")
+            return False
+        if app == 0 and not tables:
+            return False
+        if app == 0 and tables == _LEGACY_TABLES and self.db.execute(
+                "SELECT value FROM meta WHERE key = 'written_by'").fetchone() == ("knifeedge",):
+            return True
+        raise StoreError(f"`out` file {str(self.path)!r} is an SQLite database that knifeedge did not write "
+                         f"(application_id {app:#x}, tables {sorted(tables)}); it was left untouched: choose "
+                         "another file name")
+
+    def check_file(self) -> None:
+        """Raise :class:`StoreGone` if the store's file was deleted or replaced since it was opened (SQLite would
+        go on writing to the file it has open, which no one can read any more)."""
+        try:
+            now = _file_id(self.path)
+        except FileNotFoundError:
+            raise StoreGone(f"the results store {self.path} was deleted while the sweep wrote to it: the rows "
+                            "written to it are lost; run the sweep again") from None
+        if now != self._file:
+            raise StoreGone(f"the results store {self.path} was replaced by another file while the sweep wrote "
+                            "to it: the rows written since are not in that file; run the sweep again") from None
 
     # -- schema -------------------------------------------------------------------
-    def _create(self, names: tuple) -> None:
+    def _create(self, names: tuple, legacy: bool = False) -> None:
         bad = sorted(set(names) & _RESERVED)
         if bad:
             raise StoreError(f"parameter or state name(s) {bad} clash with the columns of the results table")
@@ -267,6 +326,8 @@ class ResultStore:
             if row is None:
                 self.db.execute("INSERT INTO meta VALUES ('schema_version', ?), ('written_by', 'knifeedge')",
                                 (str(SCHEMA_VERSION),))
+            elif legacy and row[0] == "1":  # rows of schema 1 stay; their run ids (key version 1) are never matched
+                self.db.execute("UPDATE meta SET value = ? WHERE key = 'schema_version'", (str(SCHEMA_VERSION),))
             elif row[0] != str(SCHEMA_VERSION):
                 raise StoreError(f"`out` file {str(self.path)!r} has results schema {row[0]}, this knifeedge "
                                  f"reads schema {SCHEMA_VERSION}: choose another file")
@@ -277,7 +338,12 @@ class ResultStore:
                 "mean_interval REAL, reversal_times TEXT, seconds REAL, finished_at REAL, spec TEXT, "
                 "checksum TEXT NOT NULL)")
             self.db.execute("CREATE TABLE IF NOT EXISTS claims (run_id TEXT PRIMARY KEY, owner TEXT NOT NULL, "
-                            "host TEXT NOT NULL, pid INTEGER NOT NULL, started TEXT, expires REAL NOT NULL)")
+                            "host TEXT NOT NULL, pid INTEGER NOT NULL, started TEXT, expires REAL NOT NULL, "
+                            "claimed_at REAL)")
+            if "claimed_at" not in {r[1] for r in self.db.execute("PRAGMA table_info(claims)")}:
+                self.db.execute("ALTER TABLE claims ADD COLUMN claimed_at REAL")
+            self.db.execute(f"PRAGMA application_id = {APPLICATION_ID}")
+            self.db.execute(f"PRAGMA user_version = {SCHEMA_VERSION}")
             have = {r[1] for r in self.db.execute("PRAGMA table_info(runs)")}
             for n in names:
                 if n not in have:
@@ -294,6 +360,7 @@ class ResultStore:
         def __enter__(self):
             st = self.store
             if st._depth == 0:
+                st.check_file()
                 st.db.execute("BEGIN IMMEDIATE")
             st._depth += 1
             return st.db
@@ -312,6 +379,7 @@ class ResultStore:
                     if st.db.in_transaction:
                         st.db.execute("ROLLBACK")
                     raise
+                st.check_file()  # (deleted meanwhile: what was committed is in a file no one can read)
 
     def transaction(self):
         """A context in which every write of this store is one transaction (committed at its end)."""
@@ -357,7 +425,7 @@ class ResultStore:
             if v is None and c == "reversal_times":
                 raise ValueError(f"{where}: column `reversal_times` is empty")
             row[c] = _coerce(c, v, where)
-        if raw["checksum"] != checksum(row, row):
+        if raw["checksum"] != with_spec(checksum(row, row), raw["spec"]):
             raise ValueError(f"{where}: its checksum does not match its values (edited by hand or damaged)")
         return row
 
@@ -388,26 +456,29 @@ class ResultStore:
                     done.update(found)
                     damaged.extend(bad)
                 held = {r[0]: r[1:] for r in self.db.execute(
-                    f"SELECT run_id, owner, host, pid, started, expires FROM claims WHERE run_id IN ({marks})",
-                    chunk)}
+                    "SELECT run_id, owner, host, pid, started, expires, claimed_at FROM claims "
+                    f"WHERE run_id IN ({marks})", chunk)}
                 for rid in chunk:
                     if rid in done:
                         continue
                     h = held.get(rid)
-                    if h is not None and h[0] != self.owner and self._live(h, now):
-                        busy[rid] = f"pid {h[2]} on {h[1]}"
+                    if h is not None and h[0] != self.owner and self._live(h[:5], now):
+                        busy[rid] = _holder_text(h)
                         continue
                     claimed.append(rid)
-            self.db.executemany("INSERT OR REPLACE INTO claims VALUES (?, ?, ?, ?, ?, ?)",
-                                [(rid, self.owner, self.host, self.pid, self.started, now + self.lease)
+            self.db.executemany("INSERT OR REPLACE INTO claims (run_id, owner, host, pid, started, expires, "
+                                "claimed_at) VALUES (?, ?, ?, ?, ?, ?, ?)",
+                                [(rid, self.owner, self.host, self.pid, self.started, now + self.lease, now)
                                  for rid in claimed])
         self._mine.update(claimed)
         return claimed, done, busy, damaged
 
     def _live(self, held: tuple, now: float) -> bool:
+        """Whether a claim still holds: its lease runs (a sweep renews it every ``lease/4`` s while it works; one
+        suspended or hung stops renewing), and on this host its process is alive."""
         owner, host, pid, started, expires = held
-        if host == self.host:
-            return _alive(pid, started)
+        if host == self.host and not _alive(pid, started):
+            return False
         return expires > now
 
     def renew(self, every: float | None = None) -> None:
@@ -468,7 +539,8 @@ class ResultStore:
                 v = list(get(row))
                 v[rt] = _times_json(v[rt])
                 rid = row["run_id"]
-                v += (finished_at, specs.get(rid), sums.get(rid) or checksum(row, names))
+                spec = specs.get(rid)
+                v += (finished_at, spec, with_spec(sums.get(rid) or checksum(row, names), spec))
                 values.append(v)
             self.db.executemany(sql, values)
 
@@ -493,8 +565,17 @@ class ResultStore:
         try:
             if self._mine:
                 self.release()
+        except StoreGone:
+            pass  # the claims went with the file
         finally:
             self.db.close()
+
+
+def _holder_text(held: tuple) -> str:
+    """Whose claim it is: ``pid P on HOST since HH:MM:SS, lease to HH:MM:SS``."""
+    owner, host, pid, started, expires, claimed_at = held
+    since = f" since {time.strftime('%H:%M:%S', time.localtime(claimed_at))}" if claimed_at else ""
+    return f"pid {pid} on {host}{since}, lease to {time.strftime('%H:%M:%S', time.localtime(expires))}"
 
 
 def _times_json(times) -> str:

@@ -44,7 +44,7 @@ from . import _validate
 from .runspec import RUN_SETTINGS, RunSpec
 from .simulate import METHODS, check_inputs
 from .store import (INPUT_COLUMNS, INT_COLUMNS, RESULT_COLUMNS, STATUSES, STORE_SUFFIXES, TEXT_COLUMNS, TEXT_SUFFIXES,
-                    ResultStore, RowChecksum, read_text, write_text)
+                    ResultStore, RowChecksum, StoreGone, read_text, write_text)
 from .workers import ExecutorPool, LocalPool, SerialPool, WorkerLost, _can_fork
 
 __all__ = ["sweep", "SweepTable", "run_one", "run_batch", "RESULT_COLUMNS", "STATUSES"]
@@ -472,24 +472,41 @@ def _columns(run: RunSpec) -> tuple:
 def _key(spec: RunSpec | Mapping) -> dict:
     """The inputs that identify a run (its output sampling does not).
 
-    For a model from a user's folder, the hash of its module's text is part
-    of the key: after ``knifeedge derive`` rewrites the model, its runs are new runs.
+    The hash of the model module's text is part of the key, for the built-in
+    models as for a model from a user's folder: after ``make derive`` or
+    ``knifeedge derive`` rewrites a model, its runs are new runs.  (Run ids
+    of stores written before this rule, ``KEY_VERSION``, are never matched.)
     """
     d = dict(spec.to_dict() if isinstance(spec, RunSpec) else spec)
     d.pop("n_eval", None)
-    for k in ("max_steps", "path"):  # absent when unset: run ids of earlier versions stay valid
+    for k in ("max_steps", "path"):  # absent when unset
         if d.get(k) is None:
             d.pop(k, None)
-    if d.get("path") is not None:
-        d["module_sha256"] = _module_hash(d["path"], d["model"], d["fidelity"])
+    d["module_sha256"] = _module_hash(d.get("path"), d["model"], d["fidelity"])
+    d["key_version"] = KEY_VERSION
     return d
 
 
+#: the version of the rule of :func:`_key` (2: every model's module hashed)
+KEY_VERSION = 2
 _MODULE_HASHES: dict = {}
 
 
-def _module_hash(folder: str, model: str, fidelity: str) -> str:
-    f = Path(folder) / f"{model}_{fidelity}.py"
+def _module_file(folder: str | None, model: str, fidelity: str) -> Path:
+    """The file of the model module a run loads: in the user's ``folder``, or the built-in one."""
+    if folder is not None:
+        return Path(folder) / f"{model}_{fidelity}.py"
+    from . import generated
+
+    name = generated.MODULES.get((model, fidelity))
+    if name is None:
+        raise ValueError(f"unknown model {model!r} at fidelity {fidelity!r}; built-in: "
+                         f"{sorted(set(m for m, _ in generated.MODULES))}")
+    return Path(generated.__file__).parent / f"{name}.py"
+
+
+def _module_hash(folder: str | None, model: str, fidelity: str) -> str:
+    f = _module_file(folder, model, fidelity)
     stat = f.stat()
     key = (str(f), stat.st_mtime_ns, stat.st_size)
     if key not in _MODULE_HASHES:
@@ -560,13 +577,14 @@ class _Progress:
             if row["status"] != "ok":
                 self.postfix()
 
-    def postfix(self, waiting: int = 0) -> None:
+    def postfix(self, waiting: Mapping | None = None) -> None:
+        """Show the failures, runs without result and ``waiting`` (run id -> whose claim holds it) on the bar."""
         if self.bar is not None:
             info = {"failed": self.failed}
             if self.missing:
                 info["no result"] = self.missing
             if waiting:
-                info["other sweep"] = waiting
+                info["waiting for"] = f"{len(waiting)} run(s) claimed by another sweep, {next(iter(waiting.values()))}"
             self.bar.set_postfix(info, refresh=False)
 
     def close(self) -> None:
@@ -808,7 +826,7 @@ class _Sweep:
         ready: deque = deque()  # runs claimed, not handed out yet
         inflight: dict = {}  # task id -> run ids
         task_ids = itertools.count()
-        interrupted = False
+        interrupted = gone = False
         last_poll = 0.0
         try:
             while todo or ready or inflight or others:
@@ -854,11 +872,13 @@ class _Sweep:
                         waiting = list(others)
                         others.clear()
                         ready.extend(self._claim(waiting, others))
-                    self.bar.postfix(waiting=len(others))
+                    self.bar.postfix(waiting=others)
             if self.store is not None:
                 self._write_now()
-        except BaseException:
+                self.store.check_file()
+        except BaseException as exc:
             interrupted = True
+            gone = isinstance(exc, StoreGone)  # said by the error itself: no store to resume from
             raise
         finally:
             if pool is not None:
@@ -870,7 +890,7 @@ class _Sweep:
                 inp["run_id"], "not computed: the sweep was interrupted")) for inp in self.inputs]
             if self.export is not None:
                 write_text(self.export, [r for r in rows if r["status"] != MISSING], self.columns)
-            if interrupted and self.progress is True:
+            if interrupted and self.progress is True and not gone:
                 where = self.store.path if self.store is not None else None
                 saved = (f"; the finished runs are in {where}: run the same sweep again to resume"
                          if where is not None else "")
@@ -913,8 +933,13 @@ class _Sweep:
         """At the end (or on the way out of an exception): write the rows received and not written yet, then free
         the runs handed out but unfinished, or claimed and not handed out (not results).  A failure to write is
         raised, unless the sweep is already on its way out of another exception (then it is a warning)."""
+        gone = False
         try:
             self._write_now()
+        except StoreGone:  # the file that held the claims is gone: nothing to release
+            gone = True
+            if not interrupted:
+                raise
         except Exception as exc:  # noqa: BLE001
             if not interrupted:
                 raise
@@ -923,7 +948,8 @@ class _Sweep:
                           f"({type(exc).__name__}: {exc}); they are computed again on resume", RuntimeWarning,
                           stacklevel=4)
         finally:
-            self.store.release()
+            if not gone:
+                self.store.release()
 
     def _claim(self, ids: list, others: dict) -> list:
         """Claim ``ids`` in the store, and write the rows waiting, in one transaction; record rows found written,

@@ -29,6 +29,8 @@ import sys
 import time
 from pathlib import Path
 
+from .._process import alive, start_time
+
 MODES = ("wait", "background")
 _MODE: list = [None]
 #: what the compiling process runs (not ``-m``: the module is imported by its package first)
@@ -100,7 +102,7 @@ class Pending:
             return False
         if self.proc is not None:
             return self.proc.poll() is not None
-        return not _lock(self.path).exists()
+        return _holder(_lock(self.path)) is None
 
     def log(self) -> str:
         """The compiling process's error output (empty if none)."""
@@ -118,14 +120,25 @@ def _log(path: Path) -> Path:
     return path.with_suffix(".log")
 
 
-def _alive(pid: int) -> bool:
+def _holder(lock: Path) -> int | None:
+    """The process id of the live compiling process that holds ``lock``, or None (no lock, or a stale one).
+
+    A lock holds ``"<pid> <start time>"`` (:mod:`knifeedge._process`), so a pid reused by an unrelated
+    process after the compiler died does not hold it; a lock without the start time (written by an earlier
+    version) is stale where start times can be read."""
     try:
-        os.kill(pid, 0)
-    except ProcessLookupError:
-        return False
-    except PermissionError:
-        return True
-    return True
+        fields = lock.read_text().split()
+        pid = int(fields[0])
+    except (OSError, ValueError, IndexError):
+        return None
+    started = fields[1] if len(fields) > 1 and fields[1] != "-" else None
+    if started is None and start_time(os.getpid()) is not None:
+        return None
+    return pid if alive(pid, started) else None
+
+
+def _write_lock(lock: Path, pid: int) -> None:
+    lock.write_text(f"{pid} {start_time(pid) or '-'}")
 
 
 def argument_types(kernel_module, args: tuple) -> tuple:
@@ -154,11 +167,7 @@ def start(model, method: str, kernel_module, arg_types: tuple) -> Pending:
     lock = _lock(path)
     if path.name in _STARTED:
         return _STARTED[path.name]
-    try:
-        pid = int(lock.read_text() or 0)
-    except (OSError, ValueError):
-        pid = 0
-    if pid and _alive(pid):
+    if _holder(lock) is not None:
         return Pending(kernel_module, path, None, started=False)
     lock.unlink(missing_ok=True)
     job = {
@@ -171,7 +180,7 @@ def start(model, method: str, kernel_module, arg_types: tuple) -> Pending:
     with open(_log(path), "w") as err:
         proc = subprocess.Popen([sys.executable, "-c", _CHILD], stdin=subprocess.PIPE,
                                 stdout=subprocess.DEVNULL, stderr=err, env=env, start_new_session=True)
-    lock.write_text(str(proc.pid))
+    _write_lock(lock, proc.pid)
     proc.stdin.write(json.dumps(job).encode())
     proc.stdin.close()
     pending = Pending(kernel_module, path, proc, started=True)
@@ -200,9 +209,9 @@ def _main() -> int:
     finally:
         lock = _lock(path)
         try:
-            if int(lock.read_text() or 0) == os.getpid():
+            if int(lock.read_text().split()[0]) == os.getpid():
                 lock.unlink()
-        except (OSError, ValueError):
+        except (OSError, ValueError, IndexError):
             pass
     return 0
 

@@ -26,6 +26,7 @@ not writable, a per-user folder in the system temporary directory.
 """
 from __future__ import annotations
 
+import errno
 import glob
 import hashlib
 import importlib.util
@@ -38,6 +39,7 @@ import zlib
 from pathlib import Path
 from types import ModuleType
 
+import llvmlite
 import numba
 
 _HERE = Path(__file__).resolve().parent
@@ -63,10 +65,13 @@ _LOADED: dict = {}
 def cache_dir() -> Path:
     """The writable folder holding specialized kernels (created if needed).
 
-    The fallback in the system temporary directory is created private
-    (mode 0700) and refused when it is not a plain folder of this user that
-    only this user can write to (a folder anyone can write to, or another
-    user's, could hold files planted for this process to load).
+    Whichever folder is used ($KNIFEEDGE_CACHE_DIR, $XDG_CACHE_HOME/knifeedge,
+    ~/.cache/knifeedge, or the fallback in the system temporary directory),
+    it and its ``kernels`` folder are created private (mode 0700) and refused
+    when they are not plain folders of this user that only this user can
+    write to: a folder another user can write to could hold files planted for
+    this process to import or load as machine code.  A refused folder is said
+    in one line on stderr (once) and the next candidate is tried.
     """
     env = os.environ.get("KNIFEEDGE_CACHE_DIR")
     if env:
@@ -81,30 +86,41 @@ def cache_dir() -> Path:
     refused = []
     for c in candidates:
         try:
-            if c == fallback:
-                _private_folder(c)
-            (c / "kernels").mkdir(parents=True, exist_ok=True)
+            if c != fallback:
+                c.parent.mkdir(parents=True, exist_ok=True)
+            _private_folder(c, follow=c != fallback)  # a folder the user named may be a link to one
+            _private_folder(c / "kernels")
+            _private_folder(c / "kernels" / "__pycache__")  # numba's cache of the kernels' functions (made 0700)
             probe = c / "kernels" / f".probe-{os.getpid()}"
             probe.write_text("")
             probe.unlink()
             return c
         except PermissionError as exc:
             refused.append(str(exc))
+            if c != fallback and str(exc) not in _SAID and "refused" in str(exc):
+                _SAID.add(str(exc))
+                print(f"knifeedge: compiled-code cache {exc}; using {fallback} instead (make the folder private "
+                      "with chmod 700, or set KNIFEEDGE_CACHE_DIR)", file=sys.stderr, flush=True)
         except OSError:
             continue
     raise OSError(f"no writable cache directory for compiled kernels among {[str(c) for c in candidates]}"
                   f"{'; ' + '; '.join(refused) if refused else ''}; set KNIFEEDGE_CACHE_DIR")
 
 
-def _private_folder(path: Path) -> None:
-    """Create ``path`` with mode 0700, or check that the existing one is this user's and private."""
+#: refusals of cache folders said on stderr already
+_SAID: set = set()
+
+
+def _private_folder(path: Path, follow: bool = False) -> None:
+    """Create ``path`` with mode 0700, or check that the existing one is this user's and private (``follow``:
+    a link to such a folder is accepted)."""
     try:
         path.mkdir(mode=0o700)
     except FileExistsError:
         pass
     if not hasattr(os, "getuid"):
         return
-    st = os.lstat(path)
+    st = os.stat(path) if follow else os.lstat(path)
     if not stat.S_ISDIR(st.st_mode):
         raise PermissionError(f"refused {path}: not a folder (a link or a file)")
     if st.st_uid != os.getuid():
@@ -278,7 +294,7 @@ def _key(source: str, rhs_file: str | None) -> str:
         h.update(dep.read_bytes())
     if rhs_file is not None:
         h.update(Path(rhs_file).read_bytes())
-    h.update(f"numba {numba.__version__} python {sys.version}".encode())
+    h.update(f"numba {numba.__version__} llvmlite {llvmlite.__version__} python {sys.version}".encode())
     return h.hexdigest()[:20]
 
 
@@ -306,6 +322,97 @@ def is_compiled(module: ModuleType) -> bool:
         return any((path.parent / "__pycache__").glob(f"{path.stem}.solve-*.nbi"))
 
 
+#: the first bytes of numba's cache files of the kernels' functions, written by :class:`_CheckedCacheFile`
+CHECKED_MAGIC = b"knifeedge checked numba cache\n"
+
+
+def _checked(data: bytes) -> bytes:
+    return CHECKED_MAGIC + hashlib.sha256(data).digest() + data
+
+
+def _verified(data: bytes, path) -> bytes:
+    """``data`` without its :func:`_checked` prefix; ValueError if the prefix or the checksum is wrong."""
+    head = len(CHECKED_MAGIC) + 32
+    if not data.startswith(CHECKED_MAGIC) or hashlib.sha256(data[head:]).digest() != data[len(CHECKED_MAGIC):head]:
+        raise ValueError(f"{path}: its checksum does not match its content")
+    return data[head:]
+
+
+def _checked_cache_file_class():
+    """numba's index-and-data cache file with a SHA-256 written with each file and verified before anything in
+    it is unpickled (the index's numba version too)."""
+    from numba.core.caching import IndexDataCacheFile
+
+    class _CheckedCacheFile(IndexDataCacheFile):
+        def _dump(self, obj):
+            return _checked(super()._dump(obj))
+
+        def _save_index(self, overloads):
+            data = self._version.encode() + b"\n" + IndexDataCacheFile._dump(self, (self._source_stamp, overloads))
+            with self._open_for_write(self._index_path) as f:
+                f.write(_checked(data))
+
+        def _load_index(self):
+            try:
+                with open(self._index_path, "rb") as f:
+                    raw = f.read()
+            except FileNotFoundError:
+                return {}
+            version, _, data = _verified(raw, self._index_path).partition(b"\n")
+            if version != self._version.encode():
+                return {}
+            stamp, overloads = pickle.loads(data)
+            return overloads if stamp == self._source_stamp else {}
+
+        def _load_data(self, name):
+            path = self._data_path(name)
+            with open(path, "rb") as f:
+                return pickle.loads(_verified(f.read(), path))
+
+    return _CheckedCacheFile
+
+
+_CHECKED: list = []
+
+
+def check_cached_code(module: ModuleType) -> None:
+    """Have numba keep the machine code of ``module``'s own ``cache=True`` functions in files with a checksum,
+    verified before they are loaded (a damaged or altered file is then discarded by :func:`call_repairing`).
+
+    Where numba keeps them outside the checked cache folder (``NUMBA_CACHE_DIR``), that folder and its parent
+    get :func:`cache_dir`'s checks; if refused, the functions compile in each process without a cache (said
+    once)."""
+    from numba.core.caching import IndexDataCacheFile, NullCache
+
+    if not _CHECKED:
+        _CHECKED.append(_checked_cache_file_class())
+    for obj in vars(module).values():
+        cache_file = getattr(getattr(obj, "_cache", None), "_cache_file", None)
+        if type(cache_file) is IndexDataCacheFile and getattr(obj.py_func, "__module__", None) == module.__name__:
+            if _private_numba_folder(Path(cache_file._cache_path), Path(module.__file__).parent):
+                cache_file.__class__ = _CHECKED[0]
+            else:
+                obj._cache = NullCache()
+
+
+def _private_numba_folder(folder: Path, kernels: Path) -> bool:
+    """Whether numba's cache ``folder`` of a kernel module in ``kernels`` may be read: its ``__pycache__`` (checked
+    by :func:`cache_dir`), or a folder that passes the same checks, with its parent."""
+    if folder == kernels / "__pycache__":
+        return True
+    try:
+        for f in (folder, folder.parent):
+            if f.exists():
+                _private_folder(f, follow=f == folder.parent)
+        return True
+    except PermissionError as exc:
+        if str(exc) not in _SAID:
+            _SAID.add(str(exc))
+            print(f"knifeedge: numba's cache {exc}; the kernels compile in each process without it (make the "
+                  "folder private with chmod 700)", file=sys.stderr, flush=True)
+        return False
+
+
 #: errors numba's cache raises when one of its files is damaged (truncated, overwritten, unreadable)
 _DAMAGE = (EOFError, pickle.UnpicklingError, zlib.error, ValueError, TypeError, AttributeError, IndexError,
            KeyError, OSError, ImportError)
@@ -329,6 +436,17 @@ def damaged_cache_files(exc: BaseException) -> list:
     return list(dict.fromkeys(files))
 
 
+#: errno values of a write that found no room
+_FULL = (errno.ENOSPC, errno.EDQUOT)
+
+
+def disk_full(exc: OSError, what: str) -> OSError:
+    """The error to raise when writing ``what`` to the cache found the disk (or the quota) full."""
+    where = exc.filename or cache_dir()
+    return OSError(exc.errno, f"the disk holding the compiled-code cache is full: could not write {what} to "
+                              f"{where}; free some space, or set KNIFEEDGE_CACHE_DIR to a folder on another disk")
+
+
 def call_repairing(fn, *args):
     """``fn(*args)``, discarding damaged numba cache entries (and recompiling) instead of failing.
 
@@ -341,6 +459,8 @@ def call_repairing(fn, *args):
         try:
             return fn(*args)
         except _DAMAGE as exc:
+            if isinstance(exc, OSError) and exc.errno in _FULL:
+                raise disk_full(exc, "the compiled code") from exc
             files = damaged_cache_files(exc)
             if not files:
                 raise
@@ -392,10 +512,23 @@ def _import(stem: str, source: str, name: str) -> ModuleType:
         return _LOADED[stem]
     folder = cache_dir() / "kernels"
     path = folder / f"{stem}.py"
-    if not path.exists() or path.read_text() != source:
+    try:
+        same = path.read_bytes() == source.encode()
+    except FileNotFoundError:
+        same = None
+    if not same:
+        if same is False:  # its name is a hash of this text: the file was altered (or damaged)
+            print(f"knifeedge: replaced a kernel module whose text was not the one its name stands for: {path}",
+                  file=sys.stderr, flush=True)
         tmp = folder / f".{stem}.{os.getpid()}.tmp"
-        tmp.write_text(source)
-        os.replace(tmp, path)
+        try:
+            tmp.write_bytes(source.encode())
+            os.replace(tmp, path)
+        except OSError as exc:
+            tmp.unlink(missing_ok=True)
+            if exc.errno in _FULL:
+                raise disk_full(exc, f"the kernel module {path.name}") from exc
+            raise
     spec = importlib.util.spec_from_file_location(name, path)
     module = importlib.util.module_from_spec(spec)
     sys.modules[name] = module
@@ -404,5 +537,6 @@ def _import(stem: str, source: str, name: str) -> ModuleType:
     except BaseException:
         del sys.modules[name]
         raise
+    check_cached_code(module)
     _LOADED[stem] = module
     return module

@@ -11,13 +11,20 @@ which grows with ``phi_dot0`` (``theta_max ~ phi_dot0 L/sqrt(g ell)``) and so
 makes the fitted exponent in ``phi_dot0`` less steep than -1.  The
 prediction of the amplitude equations (``knifeedge.reversal_time``, a
 quadrature, no integration) is drawn too.
+
+The largest ``phi_dot0`` of the scan takes the tilts beyond the small-tilt
+domain of the reduced model and of the amplitude equations (``VALIDITY``,
+0.6 rad): the scene keeps those points (the paper's range) and shows the
+boundary on its figure, a shaded band, instead of warning at each run.
 """
 from __future__ import annotations
 
 import math
+import warnings
 
 import numpy as np
 
+from ..models import ValidityWarning
 from .base import Scene, SceneResult
 from .common import fit_power_law, label_log_ticks
 from .numerical2 import RUN as TWO_MODE_RUN
@@ -32,26 +39,35 @@ def _t_end(run, phi_dot: float, D: float) -> float:
     return 2396.7 * (base_phi / phi_dot) * (base_D / D) * max(1.0, log_ratio) * 1.5
 
 
-def _theory(run, points) -> list:
-    """First reversal predicted by the amplitude equations (``knifeedge.reversal_time``) at each point."""
+def _theory(run, points) -> tuple:
+    """First reversal predicted by the amplitude equations (``knifeedge.reversal_time``) at each point, and
+    whether the prediction stays in their domain."""
     from ..reversal import reversal_time
 
-    out = []
+    out, inside = [], []
     for pt in points:
         spec = run.with_(**{k: v for k, v in pt.items() if k != "t_end"})
-        out.append(reversal_time(spec.load(), dict(spec.params), dict(spec.y0)).first)
-    return out
+        with warnings.catch_warnings():  # said on the figure (see the module docstring)
+            warnings.simplefilter("ignore", ValidityWarning)
+            prediction = reversal_time(spec.load(), dict(spec.params), dict(spec.y0))
+        out.append(prediction.first)
+        inside.append(prediction.in_validity_domain)
+    return out, inside
 
 
 def _first_reversals(run, points) -> tuple:
-    """First reversal time of each run (NaN if none), and why it is missing."""
-    t_r, why = [], []
+    """First reversal time of each run (NaN if none), why it is missing, and whether the run stayed in the
+    reduced model's domain."""
+    t_r, why, inside = [], [], []
     for pt in points:
-        r = run.with_(**pt, n_eval=None).simulate()
+        with warnings.catch_warnings():  # said on the figure (see the module docstring)
+            warnings.simplefilter("ignore", ValidityWarning)
+            r = run.with_(**pt, n_eval=None).simulate()
         rev = r.reversal_times
         t_r.append(float(rev[0]) if r.success and len(rev) else math.nan)
         why.append("" if r.success and len(rev) else (r.message if not r.success else "no reversal in the span"))
-    return np.array(t_r), why
+        inside.append(r.in_validity_domain)
+    return np.array(t_r), why, inside
 
 
 def compute(scene: Scene, progress) -> SceneResult:
@@ -66,14 +82,17 @@ def compute(scene: Scene, progress) -> SceneResult:
             pt["t_end"] = _t_end(run, pt["phi_dot"], pt["D"])
             points.append(pt)
         progress(f"sweep over {key}: {len(points)} runs")
-        t_r, why = _first_reversals(run, points)
+        t_r, why, inside = _first_reversals(run, points)
         if not np.all(np.isfinite(t_r)):
             bad = [w for w in why if w]
             raise RuntimeError(f"scene {scene.name}: {len(bad)} run(s) without a first reversal: {bad[0]}")
         b, se, a = fit_power_law(values, t_r)
-        theory = _theory(run, points)
-        scans[key] = {"x": np.array(values, float), "t_r": t_r, "b": b, "se": se, "a": a, "theory": np.array(theory)}
+        theory, inside_theory = _theory(run, points)
+        outside = ~(np.array(inside) & np.array(inside_theory))
+        scans[key] = {"x": np.array(values, float), "t_r": t_r, "b": b, "se": se, "a": a, "theory": np.array(theory),
+                      "outside": outside, "bound": max(run.load().validity.values())}
         label = "phi_dot0" if key == "phi_dot" else "D_over_ell"
+        res.numbers[f"outside_validity_domain_vs_{label}"] = [float(x) for x, o in zip(values, outside) if o]
         res.numbers[f"exponent_vs_{label}"] = b
         res.numbers[f"exponent_vs_{label}_stderr"] = se
         res.numbers[f"first_reversal_times_vs_{label}"] = [float(x) for x in t_r]
@@ -87,6 +106,9 @@ def compute(scene: Scene, progress) -> SceneResult:
         evidence = f"fitted exponent {b:.3f} +/- {se:.3f} (first reversal, {len(values)} runs, {min(values):g}..{max(values):g})"
         if np.all(np.isfinite(theory)):
             evidence += f"; the amplitude equations give {res.numbers[f'exponent_vs_{label}_amplitude_theory']:.3f}"
+        if outside.any():
+            evidence += (f"; {name} >= {min(np.array(values)[outside]):g} takes the tilts beyond the small-tilt domain "
+                         f"({scans[key]['bound']:g} rad) of the reduced model or the amplitude equations (shaded)")
         if not close:
             evidence += (" -- Eq. tr drops the factor ln(theta_max/theta_0), and theta_max grows with phi_dot0, "
                          "so the exponent is less steep than -1")
@@ -113,6 +135,8 @@ def draw(res: SceneResult, fig) -> None:
         ax.loglog(xx, c / xx, "--", color="k", lw=1, label="exponent $-1$ (Eq. tr)")
         if np.all(np.isfinite(s["theory"])):
             ax.loglog(x, s["theory"], "x", color="C3", ms=8, label="amplitude equations (reversal_time)")
+        if s["outside"].any():
+            _shade_outside(ax, x, s["outside"], s["bound"])
         label_log_ticks(ax, x)
         ax.set_xlabel(labels[key][0])
         ax.set_title(labels[key][1], fontsize=10)
@@ -120,6 +144,16 @@ def draw(res: SceneResult, fig) -> None:
     axes[0].set_ylabel(r"$t_R\ [\sqrt{\ell/g}]$")
     fig.suptitle(r"reversal time vs $\dot\phi_0$ and $D/\ell$; $\ell/L=1/2$, $\alpha=\pi/4$, tilts $10^{-3}$", fontsize=10)
     fig.tight_layout()
+
+
+def _shade_outside(ax, x, outside, bound: float) -> None:
+    """A band over the points of the scan beyond the small-tilt domain (from halfway, on the log axis, between
+    the last point inside and the first outside to past the end of the scan)."""
+    first_out = x[outside].min()
+    inside = x[~outside & (x < first_out)]
+    start = math.sqrt(inside.max() * first_out) if inside.size else x.min() / 1.15
+    ax.axvspan(start, x[outside].max() * 1.15, color="0.88", zorder=0,
+               label=f"tilts beyond {bound:g} rad: outside the small-tilt domain")
 
 
 SCENE = Scene(

@@ -1,0 +1,263 @@
+"""Issue 26, root 2: cached compiled code is checked before it runs.
+
+The compiled parts of a kernel (``.nbo``) are kept in a file that is not a
+pickle and whose header, sizes and checksum are verified before numba loads
+the object code; a damaged or altered file is removed, said in one line and
+compiled again.  The cache folder, wherever it is, is refused when another
+user could write to it; the background compiler's locks name their process by
+pid and start time; a full disk is said as such.
+"""
+import errno
+import os
+import struct
+import subprocess
+import sys
+import types
+
+import pytest
+
+from knifeedge import _process
+from knifeedge.integrators import compiler, irparts, specialize
+from knifeedge.integrators import dop853_tableau as t8
+
+
+def _blobs():
+    return ("knifeedge_parts_test", "object", (b"\x7fELF" + bytes(range(256)) * 4, b"BC\xc0\xde" + b"\x01" * 300))
+
+
+def test_cached_compiled_code_is_checked_before_it_runs_parts_file(tmp_path, capsys):
+    """A parts file written by write_parts reads back as numba serialized it; a flipped byte, a scaled constant,
+    a wrong size, another machine or another numba, a pickle planted in its place, and a file others may write
+    are each refused with the check that failed, before anything in it is used."""
+    path = tmp_path / "k.parts-x.nbo"
+    irparts.write_parts(path, _blobs())
+    assert irparts.read_parts(path) == _blobs()
+    assert not path.read_bytes().startswith(b"\x80")  # not a pickle
+    good = path.read_bytes()
+    body = good.index(b"\x7fELF")
+
+    def refused(data: bytes, match: str):
+        path.write_bytes(data)
+        with pytest.raises(ValueError, match=match):
+            irparts.read_parts(path)
+
+    refused(good[:body + 10] + bytes([good[body + 10] ^ 1]) + good[body + 11:], "checksum")
+    refused(good[:-4], "size does not match")
+    refused(b"\x80\x05" + good[2:], "not a compiled-parts file")
+    for key, value in (("numba", "0.1"), ("machine", ["x86_64-unknown", "other-cpu", ""]), ("format", 1)):
+        n = struct.unpack("<Q", good[len(irparts.MAGIC):len(irparts.MAGIC) + 8])[0]
+        import json
+
+        header = json.loads(good[len(irparts.MAGIC) + 8:len(irparts.MAGIC) + 8 + n])
+        header[key] = value
+        text = json.dumps(header).encode()
+        refused(irparts.MAGIC + struct.pack("<Q", len(text)) + text + good[len(irparts.MAGIC) + 8 + n:], key)
+    path.write_bytes(good)
+    path.chmod(0o666)
+    if hasattr(os, "getuid"):
+        with pytest.raises(ValueError, match="no one else may write"):
+            irparts.read_parts(path)
+
+
+@pytest.mark.slow
+def test_cached_compiled_code_is_checked_before_it_runs_scaled_constant(tmp_path):
+    """The probe's case: one coefficient of DOP853 scaled in the cached object code.  The next process must not
+    run it (its reversal time would change): it says one line, compiles again and gets the first answer."""
+    code = (
+        "import numpy as np, knifeedge as ke\n"
+        "m = ke.load('single_mode', 'reduced')\n"
+        "r = ke.simulate(m, {'theta': 1e-3, 'theta_dot': 0.0, 'phi_dot': 0.1}, (0.0, 150.0),"
+        " m.params(g=1.0, ell=1.0, L=1.0, D=1.0), rtol=1e-10)\n"
+        "print(r.success, repr(float(r.reversal_times[0])), r.nfev)\n"
+    )
+    env = dict(os.environ, KNIFEEDGE_CACHE_DIR=str(tmp_path / "k"), NUMBA_CACHE_DIR=str(tmp_path / "n"))
+    first = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
+    parts = next((tmp_path / "k" / "kernels").glob("erkDOP853_single_mode_reduced_*.parts-*.nbo"))
+    data = parts.read_bytes()
+    constant = struct.pack("<d", float(t8.A[1, 0]))  # the first stage's coefficient, a literal of the IR
+    assert data.count(constant) >= 1
+    parts.write_bytes(data.replace(constant, struct.pack("<d", float(t8.A[1, 0]) * 1.5)))
+    again = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
+    assert again.stdout == first.stdout
+    lines = [ln for ln in again.stderr.splitlines() if ln.strip()]
+    assert len(lines) == 1 and "discarded a damaged compiled-parts cache file" in lines[0], again.stderr
+    assert parts.read_bytes().count(constant) >= 1  # compiled again
+
+
+def test_cached_compiled_code_is_checked_before_it_runs_cache_folder(tmp_path, monkeypatch, capsys):
+    """KNIFEEDGE_CACHE_DIR and XDG_CACHE_HOME get the checks of the temporary fallback: a folder others may
+    write to (or its kernels folder) is refused, said once, and the private fallback used."""
+    if not hasattr(os, "getuid"):
+        pytest.skip("no user ids")
+    monkeypatch.setattr(specialize.tempfile, "gettempdir", lambda: str(tmp_path / "tmp"))
+    (tmp_path / "tmp").mkdir()
+    fallback = tmp_path / "tmp" / f"knifeedge-cache-{os.getuid()}"
+    shared = tmp_path / "shared"
+    shared.mkdir()
+    shared.chmod(0o777)
+    monkeypatch.setenv("KNIFEEDGE_CACHE_DIR", str(shared))
+    assert specialize.cache_dir() == fallback
+    assert "others may write to it" in capsys.readouterr().err
+    monkeypatch.delenv("KNIFEEDGE_CACHE_DIR")
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "xdg"))
+    assert specialize.cache_dir() == tmp_path / "xdg" / "knifeedge"  # created private
+    assert (tmp_path / "xdg" / "knifeedge" / "kernels").stat().st_mode & 0o777 == 0o700
+    (tmp_path / "xdg" / "knifeedge" / "kernels").chmod(0o777)
+    assert specialize.cache_dir() == fallback
+    assert "kernels: others may write to it" in capsys.readouterr().err
+
+
+def test_cached_compiled_code_is_checked_before_it_runs_lock(tmp_path, monkeypatch):
+    """A ``.compiling`` lock naming a live process that is not the compiler that wrote it (a pid reused, or a
+    lock of an earlier version holding only a pid) does not stop background compiling; the lock of a live
+    compiler does."""
+    started = []
+
+    class _Proc:
+        pid = os.getpid()
+        stdin = types.SimpleNamespace(write=lambda b: None, close=lambda: None)
+
+        def poll(self):
+            return None
+
+    def popen(*args, **kwargs):
+        started.append(args)
+        return _Proc()
+
+    monkeypatch.setattr(compiler.subprocess, "Popen", popen)
+    kernel = types.SimpleNamespace(__file__=str(tmp_path / "erkDOP853_m_rhs_0123.py"))
+    model = types.SimpleNamespace(module=types.SimpleNamespace(MODEL="m", FIDELITY="full"), pose=False,
+                                  source_path=None)
+    lock = tmp_path / "erkDOP853_m_rhs_0123.compiling"
+    if _process.start_time(os.getpid()) is None:
+        pytest.skip("process start times cannot be read here")
+    unrelated = os.getppid()  # alive, and not a compiler
+    for text in (str(unrelated), f"{unrelated} 1"):
+        lock.write_text(text)
+        compiler._STARTED.clear()
+        pending = compiler.start(model, "DOP853", kernel, ())
+        assert pending.started and len(started) == 1, text
+        started.clear()
+    assert lock.read_text() == f"{os.getpid()} {_process.start_time(os.getpid())}"  # the new lock: pid and start
+    compiler._STARTED.clear()
+    pending = compiler.start(model, "DOP853", kernel, ())  # a live compiler holds it: none started
+    assert not pending.started and not started and not pending.failed()
+    compiler._STARTED.clear()
+
+
+def test_cached_compiled_code_is_checked_before_it_runs_disk_full(tmp_path, monkeypatch, capsys):
+    """A full disk while the cache is written is said as such, never as a damaged entry."""
+    def full(*args, **kwargs):
+        raise OSError(errno.ENOSPC, "No space left on device", str(tmp_path / "x"))
+
+    def numba_saving():
+        # what numba's cache raises from its own code while saving an entry
+        exc = OSError(errno.ENOSPC, "No space left on device", str(tmp_path / "f.solve-1.py311.nbi"))
+        raise exc
+
+    with pytest.raises(OSError, match="disk holding the compiled-code cache is full"):
+        specialize.call_repairing(numba_saving)
+    assert "damaged" not in capsys.readouterr().err
+    monkeypatch.setattr("builtins.open", full)
+    irparts.write_parts(tmp_path / "k.parts-x.nbo", _blobs())
+    err = capsys.readouterr().err
+    assert "the disk is full" in err and "damaged" not in err
+    monkeypatch.undo()
+    assert not list(tmp_path.glob(".*tmp"))
+
+
+def test_cached_compiled_code_is_checked_before_it_runs_kernel_module(tmp_path, monkeypatch, capsys):
+    """A kernel module in the cache whose text is not the one its name (a hash of it) stands for, altered or
+    damaged (not even text), is written again before it is imported, and that is said in one line."""
+    monkeypatch.setenv("KNIFEEDGE_CACHE_DIR", str(tmp_path / "k"))
+    stem, source = "kernel_test_0123", "ANSWER = 42\n"
+    module = specialize._import(stem, source, "knifeedge_kernels_test.kernel_test_0123")
+    assert module.ANSWER == 42 and capsys.readouterr().err == ""
+    path = tmp_path / "k" / "kernels" / f"{stem}.py"
+    for altered in (b"ANSWER = 41\n", b"\xff\xfe\x00garbage"):
+        path.write_bytes(altered)
+        monkeypatch.delitem(specialize._LOADED, stem)
+        module = specialize._import(stem, source, "knifeedge_kernels_test.kernel_test_0123")
+        assert module.ANSWER == 42 and path.read_text() == source
+        assert "replaced a kernel module" in capsys.readouterr().err
+    sys.modules.pop("knifeedge_kernels_test.kernel_test_0123", None)
+
+
+_SCALED = "from numba import njit\n\n\n@njit(cache=True)\ndef scaled(x):\n    return 2.5 * x\n"
+
+
+def _fresh_import(stem: str, monkeypatch):
+    """The kernel module ``stem`` imported anew (as a second process would: a new dispatcher, the cache's files)."""
+    name = f"knifeedge_kernels_test.{stem}"
+    specialize._LOADED.pop(stem, None)
+    sys.modules.pop(name, None)
+    return specialize._import(stem, _SCALED, name)
+
+
+def test_cached_compiled_code_is_checked_before_it_runs_numba_cache(tmp_path, monkeypatch, capsys):
+    """numba's cache files of a kernel module's functions carry a SHA-256 checked before they are unpickled: a
+    constant scaled in the cached machine code is discarded (one line) and compiled again, never run."""
+    from pathlib import Path
+
+    monkeypatch.setenv("KNIFEEDGE_CACHE_DIR", str(tmp_path / "k"))
+    stem = "checked_scaled_0123"
+    first = _fresh_import(stem, monkeypatch)
+    assert specialize.call_repairing(first.scaled, 2.0) == 5.0
+    folder = Path(first.scaled._cache._cache_file._cache_path)
+    data = next(folder.glob(f"{stem}.scaled-*.nbc"))
+    raw = data.read_bytes()
+    assert raw.startswith(specialize.CHECKED_MAGIC)
+    constant = struct.pack("<d", 2.5)
+    assert constant in raw
+    data.write_bytes(raw.replace(constant, struct.pack("<d", 3.0)))
+    capsys.readouterr()
+    second = _fresh_import(stem, monkeypatch)
+    assert specialize.call_repairing(second.scaled, 2.0) == 5.0
+    err = [ln for ln in capsys.readouterr().err.splitlines() if ln.strip()]
+    assert len(err) == 1 and "discarded a damaged compiled-code cache entry" in err[0] and "checksum" in err[0]
+    third = _fresh_import(stem, monkeypatch)  # compiled again and kept: loads quietly
+    assert specialize.call_repairing(third.scaled, 2.0) == 5.0 and capsys.readouterr().err == ""
+    for s in (stem,):
+        sys.modules.pop(f"knifeedge_kernels_test.{s}", None)
+        specialize._LOADED.pop(s, None)
+
+
+def test_cached_compiled_code_is_checked_before_it_runs_numba_cache_dir(tmp_path, monkeypatch, capsys):
+    """Where NUMBA_CACHE_DIR puts the kernels' numba cache in a folder others may write to, nothing is loaded
+    from it: said once, the functions compile without a cache."""
+    import numba
+
+    if not hasattr(os, "getuid"):
+        pytest.skip("no user ids")
+    shared = tmp_path / "numba-shared"
+    shared.mkdir()
+    shared.chmod(0o777)
+    monkeypatch.setenv("KNIFEEDGE_CACHE_DIR", str(tmp_path / "k"))
+    monkeypatch.setattr(numba.config, "CACHE_DIR", str(shared))
+    module = _fresh_import("checked_shared_0123", monkeypatch)
+    assert specialize.call_repairing(module.scaled, 2.0) == 5.0
+    assert "others may write to it" in capsys.readouterr().err
+    assert not list(shared.rglob("*.nb[ic]"))
+    sys.modules.pop("knifeedge_kernels_test.checked_shared_0123", None)
+    specialize._LOADED.pop("checked_shared_0123", None)
+
+
+def test_cached_compiled_code_is_checked_before_it_runs_under_a_group_umask(tmp_path, monkeypatch):
+    """With umask 002 (user private groups), the folders and parts files the cache makes still pass its own
+    checks: folders 0700, parts files 0644."""
+    if not hasattr(os, "getuid"):
+        pytest.skip("no user ids")
+    monkeypatch.delenv("KNIFEEDGE_CACHE_DIR", raising=False)
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "xdg"))
+    old = os.umask(0o002)
+    try:
+        folder = specialize.cache_dir()
+        assert folder == tmp_path / "xdg" / "knifeedge"
+        for f in (folder, folder / "kernels", folder / "kernels" / "__pycache__"):
+            assert f.stat().st_mode & 0o777 == 0o700, f
+        path = folder / "kernels" / "k.parts-x.nbo"
+        irparts.write_parts(path, _blobs())
+        assert path.stat().st_mode & 0o777 == 0o644
+        assert irparts.read_parts(path) == _blobs()
+    finally:
+        os.umask(old)
