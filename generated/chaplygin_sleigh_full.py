@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/sleigh.py (model 'chaplygin_sleigh',
 constraints knife_edge) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:9852abd7ca03bf928c6fa4e19fad265dad913556912af15b4b3371dfce987a14
+SymPy 1.14.0; input hash sha256:59c1de719373941c303e5ba5503f0a29a1f34676b6e0b3a398f4403345c3130f
 
 Chaplygin sleigh: a rigid body on the plane with a knife edge at its rear contact point (x, y) that forbids sideways motion; heading phi, centre of mass at distance a ahead of the contact, radius of gyration k about the centre of mass; v is the speed along the axis.
 
@@ -59,7 +59,7 @@ MULTIPLIER_NAMES = ('knife_edge',)
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '9852abd7ca03bf928c6fa4e19fad265dad913556912af15b4b3371dfce987a14'
+INPUT_HASH = '59c1de719373941c303e5ba5503f0a29a1f34676b6e0b3a398f4403345c3130f'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 9, 'constants': 5, 'rhs_q': 4, 'rhs_pose': 13, 'rhs_pose_q': 8, 'pose_rates': 4, 'energy': 9, 'multipliers': 6}

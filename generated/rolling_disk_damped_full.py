@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk_damped',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:4d3fea298e5e6dbc7fe9a6cc24e1205ba2edda4d6d5cc134f0d4f7365aafdbd8
+SymPy 1.14.0; input hash sha256:29b2eb002b0c416dc92bc886f4131703d0b65fb29ba90ca9e7708e457da8addc
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table, its rotation resisted by a viscous torque -c r^2 omega per unit mass (Rayleigh function c r^2 |omega|^2/2).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = True
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '4d3fea298e5e6dbc7fe9a6cc24e1205ba2edda4d6d5cc134f0d4f7365aafdbd8'
+INPUT_HASH = '29b2eb002b0c416dc92bc886f4131703d0b65fb29ba90ca9e7708e457da8addc'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 182, 'constants': 20, 'rhs_q': 178, 'rhs_pose': 186, 'rhs_pose_q': 183, 'pose_rates': 5, 'energy': 45, 'multipliers': 195, 'power_dissipated': 19}

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:32e2ca21cd2626c4bbc38fc6bcf8dcc31c2b7d86091575de3466ce14ca6f58c9
+SymPy 1.14.0; input hash sha256:aac1e961d710951d2cdeefa4ed22b6c38327378d11db4dd4cd8861ed07f987a5
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table: heading q1, lean q2 from the vertical, rotation q3 about the axle, contact point (x, y).
 
@@ -62,7 +62,7 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '32e2ca21cd2626c4bbc38fc6bcf8dcc31c2b7d86091575de3466ce14ca6f58c9'
+INPUT_HASH = 'aac1e961d710951d2cdeefa4ed22b6c38327378d11db4dd4cd8861ed07f987a5'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 129, 'constants': 7, 'rhs_q': 125, 'rhs_pose': 134, 'rhs_pose_q': 130, 'pose_rates': 5, 'energy': 45, 'multipliers': 113}

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:37afd509bbe07ac5181a2f2ba30b267f7b6ee98915f64ac3f67a499a45fb0426
+SymPy 1.14.0; input hash sha256:02fdf0c735ae4cacdd7af871163c7fc2054ac3af89812e99a1a71cd04ac47793
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -67,7 +67,7 @@ HAS_DISSIPATION = False
 EXPORTS = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy',)
-INPUT_HASH = '37afd509bbe07ac5181a2f2ba30b267f7b6ee98915f64ac3f67a499a45fb0426'
+INPUT_HASH = '02fdf0c735ae4cacdd7af871163c7fc2054ac3af89812e99a1a71cd04ac47793'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 10, 'constants': 6, 'rhs_q': 4, 'energy': 9, 'invariants': 9, 'frequencies': 5, 'growth_rates': 2, 'drive_rates': 5}

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:96ca5588c81fd2b7e51ce360625f1550fbf5412ef1dfe30ca945eb241671f863
+SymPy 1.14.0; input hash sha256:4850724b7d0b7cd0a5f061876c1d8f2daffa84025980ec74c33f4c8dfc8ee84a
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -62,7 +62,7 @@ MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '96ca5588c81fd2b7e51ce360625f1550fbf5412ef1dfe30ca945eb241671f863'
+INPUT_HASH = '4850724b7d0b7cd0a5f061876c1d8f2daffa84025980ec74c33f4c8dfc8ee84a'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 20, 'constants': 13, 'rhs_q': 10, 'rhs_pose': 27, 'rhs_pose_q': 17, 'pose_rates': 7, 'energy': 23, 'multipliers': 7, 'frequencies': 5}

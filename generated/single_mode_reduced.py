@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py and derivation/truncation.py.
-SymPy 1.14.0; input hash sha256:2bb1b3c1cff80a751160dbbb2e57f3f1d14adcc0f9b426ef06b9a781035e1cef
+SymPy 1.14.0; input hash sha256:792270b6633e3dcd62a952cdcb7b46988e3b29456463915798ddc6d16065c4ba
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -62,7 +62,7 @@ MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '2bb1b3c1cff80a751160dbbb2e57f3f1d14adcc0f9b426ef06b9a781035e1cef'
+INPUT_HASH = '792270b6633e3dcd62a952cdcb7b46988e3b29456463915798ddc6d16065c4ba'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 11, 'constants': 7, 'rhs_q': 7, 'rhs_pose': 17, 'rhs_pose_q': 14, 'pose_rates': 7, 'energy': 23, 'multipliers': 7, 'frequencies': 5}

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:9ac2ed5c84a8605355f7a2fe3d7ab553c4a79e2460d7cbc599ba9b8c7920924a
+SymPy 1.14.0; input hash sha256:fd752cb8d7f9932257d43e4bd9264bbb6611bd8016764f0efafb3f7125003ec2
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -71,7 +71,7 @@ HAS_DISSIPATION = False
 EXPORTS = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy', 'log_A1_A2')
-INPUT_HASH = '9ac2ed5c84a8605355f7a2fe3d7ab553c4a79e2460d7cbc599ba9b8c7920924a'
+INPUT_HASH = 'fd752cb8d7f9932257d43e4bd9264bbb6611bd8016764f0efafb3f7125003ec2'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 24, 'constants': 14, 'rhs_q': 10, 'energy': 12, 'invariants': 19, 'frequencies': 12, 'growth_rates': 11, 'drive_rates': 12}

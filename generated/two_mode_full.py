@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:8c2928601aa3ae8825fd57feed23c835d169e22d860c71136b6939c30763daa1
+SymPy 1.14.0; input hash sha256:60f10eeb085ebbe66052418c01bbd0ab759fa1fd69e0acf38e9d5c8977cf59f6
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -65,7 +65,7 @@ MULTIPLIER_NAMES = ('Const22', 'Const23')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '8c2928601aa3ae8825fd57feed23c835d169e22d860c71136b6939c30763daa1'
+INPUT_HASH = '60f10eeb085ebbe66052418c01bbd0ab759fa1fd69e0acf38e9d5c8977cf59f6'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 152, 'constants': 107, 'rhs_q': 65, 'rhs_pose': 166, 'rhs_pose_q': 76, 'pose_rates': 13, 'energy': 58, 'multipliers': 166, 'frequencies': 12}

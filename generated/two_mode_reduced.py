@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py and derivation/truncation.py.
-SymPy 1.14.0; input hash sha256:3f4c801a8a6a28a63fda54217243d649fef5e3b2367db0f881e023a2bb0976c9
+SymPy 1.14.0; input hash sha256:e3044b8da160e86490456912107ff47eb576c15f0c4273589edb7dd6f54581f2
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -65,7 +65,7 @@ MULTIPLIER_NAMES = ('Const22', 'Const23')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '3f4c801a8a6a28a63fda54217243d649fef5e3b2367db0f881e023a2bb0976c9'
+INPUT_HASH = 'e3044b8da160e86490456912107ff47eb576c15f0c4273589edb7dd6f54581f2'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 80, 'constants': 52, 'rhs_q': 35, 'rhs_pose': 91, 'rhs_pose_q': 46, 'pose_rates': 13, 'energy': 58, 'multipliers': 56, 'frequencies': 12}
