@@ -592,6 +592,12 @@ def from_mechanics(method_or_system, *, name: str, cyclic: dict, units: dict | N
     found = set().union(*(e.free_symbols for e in [lagrangian, *forces, *constraints])) - declared
     params = tuple(params) if params is not None else tuple(sorted(found, key=str))
     _check_velocities(src, names, checks, constraints, dependent, set(params))
+    if not constraints:
+        raise MechanicsConversionError(
+            f"the {src.kind} states no velocity constraint; knifeedge's engine derives non-holonomic systems and "
+            f"needs at least one (a model without constraints is not yet taken). If the system rolls or slides "
+            f"on a knife edge, its constraints are missing: a Lagrangian with the rolling condition substituted "
+            f"into it gives wrong equations (sympy#27631); state them as `nonhol_coneqs` / `velocity_constraints`")
     fields = {k: _spec_keys(v, names) for k, v in spec_fields.items()}
     fields.setdefault("pose", tuple(q for q in names.coordinates if q in cyclic))
     return MechanicsModelSpec(

@@ -47,6 +47,7 @@ fnh = [v0.dot(ground.x), v0.dot(ground.y)]
 # Define loads
 loads = [(disc.masscenter, -disc.mass * g * ground.z)]
 bodies = [disc]
+
 # ---- test_kane_rolling_disc_lu: the KanesMethod
 KANE = KanesMethod(ground.frame, [q1, q2, q3, q4, q5], [u1, u2, u3], kdes, u_dependent=[u4, u5],
                    velocity_constraints=fnh, bodies=bodies, forcelist=loads,
