@@ -338,7 +338,9 @@ def _from_kane(km: KanesMethod) -> _Source:
 def _from_system(system) -> _Source:
     if len(system.holonomic_constraints):
         _refuse_holonomic(f"`holonomic_constraints` {list(system.holonomic_constraints)}")
-    kane = system.form_eoms() if system.eom_method is None else system.eom_method
+    if system.eom_method is None:
+        system.form_eoms()
+    kane = system.eom_method
     if not isinstance(kane, KanesMethod):
         return _from_lagrange(kane)
     src = _from_kane(kane)

@@ -151,3 +151,31 @@ def test_bad_arguments_are_refused_before_any_work():
         from_mechanics(km, name="not a name", cyclic={})
     with pytest.raises(ValueError, match="`cyclic` must be a mapping"):
         from_mechanics(km, name="ok", cyclic=[1])
+
+
+def test_a_system_is_converted_like_its_kanes_method():
+    """The sleigh as a sympy ``System`` (SymPy 1.13+): the same Lagrangian, constraint and equations."""
+    from sympy.physics.mechanics import System
+
+    x, y, phi, u1, u2, u3 = dynamicsymbols("x y phi u1 u2 u3")
+    m, a, I = sp.symbols("m a I", positive=True)
+    ground = RigidBody("ground")
+    system = System.from_newtonian(ground)
+    B = ReferenceFrame("B")
+    B.orient_axis(ground.frame, ground.frame.z, phi)
+    B.set_ang_vel(ground.frame, u3 * ground.frame.z)
+    P = ground.masscenter.locatenew("P", x * ground.frame.x + y * ground.frame.y)
+    P.set_vel(ground.frame, u1 * ground.frame.x + u2 * ground.frame.y)
+    G = P.locatenew("G", a * B.x)
+    G.v2pt_theory(P, ground.frame, B)
+    system.add_coordinates(x, y, phi)
+    system.add_speeds(u1, u3)
+    system.add_speeds(u2, independent=False)
+    system.add_kdes(x.diff(t) - u1, y.diff(t) - u2, phi.diff(t) - u3)
+    system.add_bodies(RigidBody("sleigh", G, B, m, (inertia(B, 0, 0, I), G)))
+    system.add_nonholonomic_constraints(P.vel(ground.frame).dot(B.y))
+    spec = from_mechanics(system, name="sleigh", cyclic={x: 0, y: 0, phi: 0})
+    kane = from_mechanics(_sleigh()[0], name="sleigh", cyclic={x: 0, y: 0, phi: 0})
+    assert sp.simplify(spec.lagrangian - kane.lagrangian) == 0 and spec.constraints == kane.constraints
+    XD, PHID = sp.symbols("x_dot phi_dot", real=True)
+    assert sp.simplify(derive(spec).explicit[1] + m * a * XD * PHID / (I + m * a**2)) == 0
