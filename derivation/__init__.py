@@ -12,6 +12,8 @@ from .names import t
 from .fidelities import FIDELITIES, Fidelity
 from .emit import build, write_all
 from .cli import DeriveError, derive_files, load_specs
+from .mechanics import MechanicsConversionError, from_mechanics
 
 __all__ = ["t", "ModelSpec", "ModelSpecError", "ReducedSystem", "derive", "check_symmetry", "FIDELITIES", "Fidelity",
-           "build", "write_all", "DeriveError", "derive_files", "load_specs"]
+           "build", "write_all", "DeriveError", "derive_files", "load_specs", "from_mechanics",
+           "MechanicsConversionError"]

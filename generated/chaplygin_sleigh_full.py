@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/sleigh.py (model 'chaplygin_sleigh',
 constraints knife_edge) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:34d40b708f83ea71ff25ff20e009938c4d50867578effe805f23a2cb99fbb8a5
+SymPy 1.14.0; input hash sha256:de1540f6d1a2ba9a255909015d34f8cbb08bacf495e0a1f66d45a1ff1e33d12a
 
 Chaplygin sleigh: a rigid body on the plane with a knife edge at its rear contact point (x, y) that forbids sideways motion; heading phi, centre of mass at distance a ahead of the contact, radius of gyration k about the centre of mass; v is the speed along the axis.
 
@@ -59,7 +59,7 @@ MULTIPLIER_NAMES = ('knife_edge',)
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '34d40b708f83ea71ff25ff20e009938c4d50867578effe805f23a2cb99fbb8a5'
+INPUT_HASH = 'de1540f6d1a2ba9a255909015d34f8cbb08bacf495e0a1f66d45a1ff1e33d12a'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 9, 'constants': 5, 'rhs_q': 4, 'rhs_pose': 13, 'rhs_pose_q': 8, 'pose_rates': 4, 'energy': 9, 'multipliers': 6}
@@ -329,4 +329,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '82c495c23fc790eacde0601334946f8b3aab4f93fdec33cafbb9a836f6bd9944'
+MODULE_SHA256 = '40ff1883cfabb81612da7ea97855b00f93e7415f4ecd8d4f9183b0e7ead8aad4'

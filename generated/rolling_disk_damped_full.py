@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk_damped',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:baf39d231e6aa1cb75e386255ba2734b0820c2d3430df83ed3910e076c0a19f4
+SymPy 1.14.0; input hash sha256:64a78569826f1ccb0e97004561dca449de1208d83f8906d31e52dc605551af4d
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table, its rotation resisted by a viscous torque -c r^2 omega per unit mass (Rayleigh function c r^2 |omega|^2/2).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = True
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'baf39d231e6aa1cb75e386255ba2734b0820c2d3430df83ed3910e076c0a19f4'
+INPUT_HASH = '64a78569826f1ccb0e97004561dca449de1208d83f8906d31e52dc605551af4d'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 182, 'constants': 20, 'rhs_q': 178, 'rhs_pose': 186, 'rhs_pose_q': 183, 'pose_rates': 5, 'energy': 45, 'multipliers': 195, 'power_dissipated': 19}
@@ -887,4 +887,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '8817628dc2f32366e5a9fa546b706c92370126477f17df397a2ae8cdf445a334'
+MODULE_SHA256 = '75cd51298eaa9fa87da8bc04136292bbc4ec163fce163324d7d0305bccf2ff95'

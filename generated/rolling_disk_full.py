@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:a10673155ea765585d3723e87a618a1a2cc3b9d2f96e000bd2ba97bb4d8c64b4
+SymPy 1.14.0; input hash sha256:6e22cec3884499ff8b3ecf96ec76b730c2c9c3a1692f57b14cee0aadfdb74a42
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table: heading q1, lean q2 from the vertical, rotation q3 about the axle, contact point (x, y).
 
@@ -62,7 +62,7 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'a10673155ea765585d3723e87a618a1a2cc3b9d2f96e000bd2ba97bb4d8c64b4'
+INPUT_HASH = '6e22cec3884499ff8b3ecf96ec76b730c2c9c3a1692f57b14cee0aadfdb74a42'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 129, 'constants': 7, 'rhs_q': 125, 'rhs_pose': 134, 'rhs_pose_q': 130, 'pose_rates': 5, 'energy': 45, 'multipliers': 113}
@@ -670,4 +670,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '655246581e603239b69843cd36e2cd4deb3c1da10f510caafcb1da4e9a65ac18'
+MODULE_SHA256 = 'f8eb66a7c8e2c5c792fb0fa98b283047011c19ddb7ba2010ae445a01660c9171'

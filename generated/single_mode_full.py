@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:6ce472412d1a787ed643c9b9eb6b9c58ddc8c7ee094e32c1a8e09497aef6e9d2
+SymPy 1.14.0; input hash sha256:e9165a1ac89b447a746453eecb4e4173253c09257fb18164a6ce952cf6272e9f
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -62,7 +62,7 @@ MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '6ce472412d1a787ed643c9b9eb6b9c58ddc8c7ee094e32c1a8e09497aef6e9d2'
+INPUT_HASH = 'e9165a1ac89b447a746453eecb4e4173253c09257fb18164a6ce952cf6272e9f'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 20, 'constants': 13, 'rhs_q': 10, 'rhs_pose': 27, 'rhs_pose_q': 17, 'pose_rates': 7, 'energy': 23, 'multipliers': 7, 'frequencies': 5}
@@ -424,4 +424,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '92346d494ab51cbb299da31224f368c8e08d2914d4e69904c8a6a8e4d96d9b84'
+MODULE_SHA256 = '0d1d2b1c3a455cade4b05431b0ceba75e917556c4926f3bb2d623d64da5bdaf8'

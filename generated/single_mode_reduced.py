@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py and derivation/truncation.py.
-SymPy 1.14.0; input hash sha256:a2203a2868b2074c497ec261ed151856f25ec7e72e5831d97911af4ccd24fd4d
+SymPy 1.14.0; input hash sha256:3898d267d65a52a34fd3445eb3a5bd6bf5d1a1167de37057c8bc372fb2f38fde
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -62,7 +62,7 @@ MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'a2203a2868b2074c497ec261ed151856f25ec7e72e5831d97911af4ccd24fd4d'
+INPUT_HASH = '3898d267d65a52a34fd3445eb3a5bd6bf5d1a1167de37057c8bc372fb2f38fde'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 11, 'constants': 7, 'rhs_q': 7, 'rhs_pose': 17, 'rhs_pose_q': 14, 'pose_rates': 7, 'energy': 23, 'multipliers': 7, 'frequencies': 5}
@@ -406,4 +406,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '4ba41757ce8ef418ba4ac509d39f57c859dd79bf84ccd00f84e223af365feb35'
+MODULE_SHA256 = '4eb842ba1c3aad44f64b6d4de49ff7c83ec1f162ebc6a72b1cdcaad1fd20981a'

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:85cd494262fd09abeb00a5dcfc2b29827000e944af299e373a9eefb17002ff65
+SymPy 1.14.0; input hash sha256:74d08947957ab207be1cd09317d2d9915f82c97395a9072cd122f89d151ee392
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -65,7 +65,7 @@ MULTIPLIER_NAMES = ('Const22', 'Const23')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '85cd494262fd09abeb00a5dcfc2b29827000e944af299e373a9eefb17002ff65'
+INPUT_HASH = '74d08947957ab207be1cd09317d2d9915f82c97395a9072cd122f89d151ee392'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 152, 'constants': 107, 'rhs_q': 65, 'rhs_pose': 166, 'rhs_pose_q': 76, 'pose_rates': 13, 'energy': 58, 'multipliers': 166, 'frequencies': 12}
@@ -917,4 +917,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '637885fd3a0cadc0ac780301677f8525968eea499a69765aaeb4987e7a8bbc16'
+MODULE_SHA256 = 'b4981f7c4a7baa25a2873ace0a16c030330a56a39267ab20281c6fa528e7a7f2'

@@ -1,0 +1,181 @@
+"""``knifeedge.derive.from_mechanics``: models written with ``sympy.physics.mechanics``, converted.
+
+The default tier checks the conversion on a small model (the Chaplygin sleigh: its Lagrangian,
+constraint and reduced equations against the textbook's) and every refusal; the peer checks, the field's own models
+derived and compiled and run against their authors' own equations, are in
+``tests/test_mechanics_peers.py`` (slow tier).
+"""
+import pytest
+import sympy as sp
+from sympy.physics.mechanics import (KanesMethod, LagrangesMethod, Lagrangian, Particle, Point, ReferenceFrame,
+                                     RigidBody, dot, dynamicsymbols, inertia)
+
+from knifeedge.derive import MechanicsConversionError, derive, from_mechanics
+
+t = dynamicsymbols._t
+
+
+def _sleigh(torque=None, force=None):
+    """The Chaplygin sleigh by Kane's method: a body on the table, its knife edge at P = (x, y) along B.x,
+    its mass centre G at a distance a ahead of P on the blade; the blade cannot slide sideways."""
+    x, y, phi, u1, u2, u3 = dynamicsymbols("x y phi u1 u2 u3")
+    m, a, I, g = sp.symbols("m a I g", positive=True)
+    N, O = ReferenceFrame("N"), Point("O")
+    O.set_vel(N, 0)
+    B = N.orientnew("B", "Axis", [phi, N.z])
+    P = O.locatenew("P", x * N.x + y * N.y)
+    P.set_vel(N, u1 * N.x + u2 * N.y)
+    G = P.locatenew("G", a * B.x)
+    B.set_ang_vel(N, u3 * N.z)
+    G.v2pt_theory(P, N, B)
+    body = RigidBody("sleigh", G, B, m, (inertia(B, 0, 0, I), G))
+    loads = [(G, -m * g * N.z)]
+    loads += [(B, torque * N.z)] if torque is not None else []
+    loads += [(G, force * N.x)] if force is not None else []
+    km = KanesMethod(N, [x, y, phi], [u1, u3], kd_eqs=[x.diff(t) - u1, y.diff(t) - u2, phi.diff(t) - u3],
+                     u_dependent=[u2], velocity_constraints=[P.vel(N).dot(B.y)])
+    km.kanes_equations([body], loads)
+    return km, (x, y, phi, u3, m, a, I, g)
+
+
+def test_the_sleigh_gets_its_lagrangian_constraint_and_textbook_equations():
+    """T = m |v_G|^2 / 2 + I phi_dot^2 / 2, the blade's lateral velocity as the constraint; with v the
+    forward speed and omega = phi_dot the reduced equations are v' = a omega^2, omega' = -m a v omega /
+    (I + m a^2) (A. M. Bloch, *Nonholonomic Mechanics and Control*, section 1.7)."""
+    km, (x, y, phi, u3, m, a, I, g) = _sleigh()
+    spec = from_mechanics(km, name="sleigh", cyclic={x: 0, y: 0, phi: 0}, units={x: "m", phi.diff(t): "rad/s"})
+    X, Y, PHI, XD, YD, PHID = sp.symbols("x y phi x_dot y_dot phi_dot", real=True)
+    assert spec.coordinates == (X, Y, PHI) and spec.velocities == (XD, YD, PHID)
+    assert spec.dependent == (Y,) and spec.params == (I, a, m) and spec.forces == ()
+    vG = sp.Matrix([XD - a * sp.sin(PHI) * PHID, YD + a * sp.cos(PHI) * PHID])
+    assert sp.simplify(spec.lagrangian - (m * vG.dot(vG) / 2 + I * PHID**2 / 2)) == 0
+    assert sp.simplify(spec.constraints[0] - (-sp.sin(PHI) * XD + sp.cos(PHI) * YD)) == 0
+    assert spec.units == {X: "m", PHID: "rad/s"} and spec.pose == (X, Y, PHI)
+    system = derive(spec)
+    assert system.state == (XD, PHID)  # at the representative heading 0, x_dot is the forward speed v
+    assert sp.simplify(system.explicit[0] - a * PHID**2) == 0
+    assert sp.simplify(system.explicit[1] + m * a * XD * PHID / (I + m * a**2)) == 0
+
+
+def test_loads_that_are_not_constant_become_generalized_forces():
+    """A viscous torque -c phi_dot about the vertical gives Q_phi = -c phi_dot; a force F along N.x at G,
+    constant, is a potential -F x_G."""
+    c, F = sp.symbols("c F")
+    u3 = dynamicsymbols("u3")
+    km, (x, y, phi, u3, m, a, I, g) = _sleigh(torque=-c * u3)
+    spec = from_mechanics(km, name="damped_sleigh", cyclic={x: 0, y: 0, phi: 0})
+    PHI, PHID = sp.symbols("phi phi_dot", real=True)
+    assert [sp.simplify(f) for f in spec.forces] == [0, 0, -c * PHID]
+    km, (x, y, phi, u3, m, a, I, g) = _sleigh(force=F)
+    pushed = from_mechanics(km, name="pushed_sleigh", cyclic={x: 0, y: 0, phi: 0})
+    base = from_mechanics(_sleigh()[0], name="sleigh", cyclic={x: 0, y: 0, phi: 0})
+    X = sp.Symbol("x", real=True)
+    assert sp.simplify(pushed.lagrangian - base.lagrangian - F * (X + a * sp.cos(PHI))) == 0
+
+
+def test_a_model_without_velocity_constraints_is_refused_with_the_reason():
+    """sympy's test_lagrange.py rolling disc has none: its rolling condition is substituted into the
+    Lagrangian, which gives wrong equations (sympy#27631)."""
+    q = dynamicsymbols("q")
+    m, l, g = sp.symbols("m l g", positive=True)
+    N, O = ReferenceFrame("N"), Point("O")
+    O.set_vel(N, 0)
+    P = Particle("P", O.locatenew("P", l * (sp.sin(q) * N.x - sp.cos(q) * N.y)), m)
+    P.point.set_vel(N, P.point.pos_from(O).dt(N))
+    P.potential_energy = -m * g * l * sp.cos(q)
+    lm = LagrangesMethod(Lagrangian(N, P), [q], frame=N)
+    with pytest.raises(MechanicsConversionError, match="no velocity constraint.*sympy#27631"):
+        from_mechanics(lm, name="pendulum", cyclic={})
+
+
+def test_specified_quantities_and_explicit_time_are_refused_with_the_reason():
+    f = dynamicsymbols("f")
+    km, (x, y, phi, *_) = _sleigh(torque=f)
+    cyclic = {x: 0, y: 0, phi: 0}
+    with pytest.raises(MechanicsConversionError, match=r"specified quantities \['f\(t\)'\].*`inputs`"):
+        from_mechanics(km, name="driven", cyclic=cyclic)
+    km, _ = _sleigh(torque=sp.cos(t))
+    with pytest.raises(MechanicsConversionError, match="explicitly on time"):
+        from_mechanics(km, name="driven", cyclic=cyclic)
+
+
+def test_holonomic_constraints_are_refused_with_the_reason():
+    """The pendulum in Cartesian coordinates with the rod's length as a configuration constraint."""
+    x, y = dynamicsymbols("x y")
+    m, l, g = sp.symbols("m l g", positive=True)
+    N, O = ReferenceFrame("N"), Point("O")
+    O.set_vel(N, 0)
+    P = Particle("P", O.locatenew("P", x * N.x + y * N.y), m)
+    P.point.set_vel(N, x.diff(t) * N.x + y.diff(t) * N.y)
+    P.potential_energy = m * g * y
+    lm = LagrangesMethod(Lagrangian(N, P), [x, y], hol_coneqs=[x**2 + y**2 - l**2], frame=N)
+    with pytest.raises(MechanicsConversionError, match="holonomic .*configuration.* constraints"):
+        from_mechanics(lm, name="cartesian_pendulum", cyclic={})
+
+
+def test_kinematics_with_an_unstated_constraint_are_refused_with_the_reason():
+    """sympy's test_kane.py rolling disc: its contact point C is set fixed in N while the disc rolls.
+
+    Kane's method is right with it (the speeds are those of the constrained motion), but its kinetic
+    energy is the constrained one, and Lagrange's equations of it are wrong (sympy#27631).  The model
+    below is ``test_rolling_disc`` of ``sympy/physics/mechanics/tests/test_kane.py`` (SymPy 1.14.0).
+    """
+    q1, q2, q3, u1, u2, u3 = dynamicsymbols('q1 q2 q3 u1 u2 u3')
+    r, m, g = sp.symbols('r m g')
+    N = ReferenceFrame('N')
+    Y = N.orientnew('Y', 'Axis', [q1, N.z])
+    L = Y.orientnew('L', 'Axis', [q2, Y.x])
+    R = L.orientnew('R', 'Axis', [q3, L.y])
+    w_R_N_qd = R.ang_vel_in(N)
+    R.set_ang_vel(N, u1 * L.x + u2 * L.y + u3 * L.z)
+    C = Point('C')
+    C.set_vel(N, 0)
+    Dmc = C.locatenew('Dmc', r * L.z)
+    Dmc.v2pt_theory(C, N, R)
+    I = inertia(L, m / 4 * r**2, m / 2 * r**2, m / 4 * r**2)
+    kd = [dot(R.ang_vel_in(N) - w_R_N_qd, uv) for uv in L]
+    ForceList = [(Dmc, - m * g * Y.z)]
+    BodyD = RigidBody('BodyD', Dmc, R, m, (I, Dmc))
+    KM = KanesMethod(N, q_ind=[q1, q2, q3], u_ind=[u1, u2, u3], kd_eqs=kd)
+    KM.kanes_equations([BodyD], ForceList)
+    with pytest.raises(MechanicsConversionError, match=r"velocity of Dmc .* not the time derivative of its "
+                                                        r"position.*velocity constraints"):
+        from_mechanics(KM, name="disc3", cyclic={q1: 0, q3: 0})
+
+
+def test_bad_arguments_are_refused_before_any_work():
+    km, _ = _sleigh()
+    with pytest.raises(TypeError, match="`method_or_system` must be"):
+        from_mechanics(object(), name="x", cyclic={})
+    with pytest.raises(ValueError, match="`name` must be a Python identifier"):
+        from_mechanics(km, name="not a name", cyclic={})
+    with pytest.raises(ValueError, match="`cyclic` must be a mapping"):
+        from_mechanics(km, name="ok", cyclic=[1])
+
+
+def test_a_system_is_converted_like_its_kanes_method():
+    """The sleigh as a sympy ``System`` (SymPy 1.13+): the same Lagrangian, constraint and equations."""
+    from sympy.physics.mechanics import System
+
+    x, y, phi, u1, u2, u3 = dynamicsymbols("x y phi u1 u2 u3")
+    m, a, I = sp.symbols("m a I", positive=True)
+    ground = RigidBody("ground")
+    system = System.from_newtonian(ground)
+    B = ReferenceFrame("B")
+    B.orient_axis(ground.frame, ground.frame.z, phi)
+    B.set_ang_vel(ground.frame, u3 * ground.frame.z)
+    P = ground.masscenter.locatenew("P", x * ground.frame.x + y * ground.frame.y)
+    P.set_vel(ground.frame, u1 * ground.frame.x + u2 * ground.frame.y)
+    G = P.locatenew("G", a * B.x)
+    G.v2pt_theory(P, ground.frame, B)
+    system.add_coordinates(x, y, phi)
+    system.add_speeds(u1, u3)
+    system.add_speeds(u2, independent=False)
+    system.add_kdes(x.diff(t) - u1, y.diff(t) - u2, phi.diff(t) - u3)
+    system.add_bodies(RigidBody("sleigh", G, B, m, (inertia(B, 0, 0, I), G)))
+    system.add_nonholonomic_constraints(P.vel(ground.frame).dot(B.y))
+    spec = from_mechanics(system, name="sleigh", cyclic={x: 0, y: 0, phi: 0})
+    kane = from_mechanics(_sleigh()[0], name="sleigh", cyclic={x: 0, y: 0, phi: 0})
+    assert sp.simplify(spec.lagrangian - kane.lagrangian) == 0 and spec.constraints == kane.constraints
+    XD, PHID = sp.symbols("x_dot phi_dot", real=True)
+    assert sp.simplify(derive(spec).explicit[1] + m * a * XD * PHID / (I + m * a**2)) == 0
