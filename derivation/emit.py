@@ -96,7 +96,8 @@ def input_hash(spec: engine.ModelSpec, fidelity: str) -> str:
         spec.name, fidelity, sp.__version__,
         sp.srepr(spec.lagrangian), *(sp.srepr(c) for c in spec.constraints), *(sp.srepr(f) for f in spec.holonomic),
         inspect.getsource(engine), inspect.getsource(truncation), inspect.getsource(models), inspect.getsource(names),
-        Path(__file__).read_text(),
+        Path(__file__).read_text(), (Path(__file__).parent / "kkt_emit.py").read_text(),
+        *((spec.elimination,) if spec.elimination != "auto" else ()),
         *((inspect.getsource(averaging),) if fidelity == "amplitude" else ()),
         *(sp.srepr(e) for _, _, e in spec.quasi_velocities),
         *((path.read_text(),) if path is not None else ()),
@@ -375,6 +376,13 @@ def rhs_pose_q_into(t, s, q, ds):
 ''', ops
 
 
+_ELIMINATION_DOC = {
+    "symbolic": "Accelerations and multipliers in closed form (symbolic elimination of the multipliers).",
+    "numeric": "Multipliers eliminated numerically: the right-hand side solves [[M, -A^T], [A, 0]] [q_ddot, lambda]\n"
+               "= [f, -c] at every call (derivation/kkt_emit.py; engine.NUMERIC_FROM says when).",
+}
+
+
 def module_source(system, fidelity: str, frequencies=None) -> str:
     """Source of the generated module of ``system`` (a reduced or an amplitude system).
 
@@ -393,15 +401,21 @@ def module_source(system, fidelity: str, frequencies=None) -> str:
     n, npose = len(state), len(pose)
     rates = system.state_rhs()
     timed = system.time_dependent
+    elimination = "symbolic" if system.kkt is None else "numeric"
     args = "s, p, t" if timed else "s, p"  # the functions besides the right-hand side
     allowed = set(system.state) | set(spec.params) | ({names.t} if timed else set())
     pose_exprs = [system.pose_rates[q] for q in spec.pose]
     pose_lines, pose_ops = _cse_block(pose_exprs, [f"out[{i}]" for i in range(npose)], allowed | set(spec.pose))
-    rhs_src, rhs_ops = _rhs_source(system.state, spec.params, rates, spec.pose, pose_exprs)
+    if system.kkt is not None:  # multipliers eliminated numerically (derivation/kkt_emit.py)
+        from . import kkt_emit
+        rhs_src, rhs_ops = kkt_emit.rhs_source(system)
+    else:
+        rhs_src, rhs_ops = _rhs_source(system.state, spec.params, rates, spec.pose, pose_exprs)
     energy_pose = bool(system.energy.free_symbols & set(spec.pose))  # a potential of a cyclic coordinate
     energy_lines, energy_ops = _cse_block([system.energy], ["energy"], allowed | set(spec.pose))
     lam = list(system.multipliers)
-    lam_lines, lam_ops = _cse_block(lam, [f"out[{i}]" for i in range(len(lam))], allowed)
+    lam_lines, lam_ops = (kkt_emit.multiplier_lines(system, timed) if system.kkt is not None else
+                          _cse_block(lam, [f"out[{i}]" for i in range(len(lam))], allowed))
     labels = ", ".join(spec.multiplier_labels)
     digest = input_hash(spec, fidelity)
     fid_doc = FIDELITIES[fidelity].doc
@@ -449,6 +463,7 @@ def module_source(system, fidelity: str, frequencies=None) -> str:
 GENERATED FILE -- DO NOT EDIT BY HAND.  {regenerate_hint(spec)}
 Produced by {GENERATOR} from {source_label(spec)} (model {spec.name!r},
 constraints {labels}) through derivation/engine.py{" and derivation/truncation.py" if fidelity != "full" else ""}.
+{_ELIMINATION_DOC[elimination]}
 SymPy {sp.__version__}; input hash sha256:{digest}
 
 {spec.description}
@@ -470,6 +485,8 @@ from numba import njit
 {meta}{_model_metadata(system)}
 INPUT_HASH = {digest!r}
 SYMPY_VERSION = {sp.__version__!r}
+#: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
+ELIMINATION = {elimination!r}
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {dict(rhs_ops, pose_rates=pose_ops, energy=energy_ops, multipliers=lam_ops, **extra_ops)!r}
 

@@ -3,7 +3,8 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/sleigh.py (model 'chaplygin_sleigh',
 constraints knife_edge) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:ea57f398f9250fbe73e828cfa5116f09fea042c53b72b681b6f0dbb17ec0a7fc
+Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
+SymPy 1.14.0; input hash sha256:bb8f24333cf74e4cde6d9dfd4ce550ff7407eb7848a2955636d741a2faf1d5cd
 
 Chaplygin sleigh: a rigid body on the plane with a knife edge at its rear contact point (x, y) that forbids sideways motion; heading phi, centre of mass at distance a ahead of the contact, radius of gyration k about the centre of mass; v is the speed along the axis.
 
@@ -59,8 +60,10 @@ MULTIPLIER_NAMES = ('knife_edge',)
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'ea57f398f9250fbe73e828cfa5116f09fea042c53b72b681b6f0dbb17ec0a7fc'
+INPUT_HASH = 'bb8f24333cf74e4cde6d9dfd4ce550ff7407eb7848a2955636d741a2faf1d5cd'
 SYMPY_VERSION = '1.14.0'
+#: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
+ELIMINATION = 'symbolic'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 9, 'constants': 5, 'rhs_q': 4, 'rhs_pose': 13, 'rhs_pose_q': 8, 'pose_rates': 4, 'energy': 9, 'multipliers': 6}
 
@@ -261,4 +264,4 @@ def body_outlines(s, p, uu):
         out[0, j, 2] = ((1.0/3.0))*k
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'da05f63a73d6879a452c3191ccd554bf48887750907c6a81cc8d2885150f6bf3'
+MODULE_SHA256 = 'ed7f09c350d4c0966c33f993c790cabb715a21e0507a39965605dd5bd9ed26c0'

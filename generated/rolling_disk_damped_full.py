@@ -3,7 +3,8 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk_damped',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:fab00a0a5f5a6e80fd89a9235ea3dfd07d336d2a0d8f15b7c00e253c242583a3
+Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
+SymPy 1.14.0; input hash sha256:213d567d488cf853cbd6bc74fec0cfce2231f7f99f12c15b4b4c9efb277e568e
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table, its rotation resisted by a viscous torque -c r^2 omega per unit mass (Rayleigh function c r^2 |omega|^2/2).
 
@@ -63,8 +64,10 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = True
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'fab00a0a5f5a6e80fd89a9235ea3dfd07d336d2a0d8f15b7c00e253c242583a3'
+INPUT_HASH = '213d567d488cf853cbd6bc74fec0cfce2231f7f99f12c15b4b4c9efb277e568e'
 SYMPY_VERSION = '1.14.0'
+#: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
+ELIMINATION = 'symbolic'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 182, 'constants': 20, 'rhs_q': 178, 'rhs_pose': 186, 'rhs_pose_q': 183, 'pose_rates': 5, 'energy': 45, 'multipliers': 195, 'power_dissipated': 19}
 
@@ -645,4 +648,4 @@ def power_dissipated(s, p):
     power_dissipated = c*(r*r)*((_c0*_c0)*_c1 + 2*_c0*q1_dot*q3_dot + _c1*((math.cos(q2))*(math.cos(q2))) + (q1_dot*q1_dot) + (q2_dot*q2_dot))
     return power_dissipated
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'eb4b7b480ff5c37943e40bfa47301d1dbaa32479f850d07966f855fb3c052d3f'
+MODULE_SHA256 = '6623e76c1cb3e304bb393cd17afae1441c50c9034febffec242460105ce18998'

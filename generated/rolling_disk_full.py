@@ -3,7 +3,8 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:e9363c365622d82f72aad8051fe6a0e9d37db3b9964fa619a70a6da24566aa16
+Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
+SymPy 1.14.0; input hash sha256:dfc0dc01467e6a3dbcdd67c129ce8c56dae271d00b1cd394a5ddc14f864f1ecc
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table: heading q1, lean q2 from the vertical, rotation q3 about the axle, contact point (x, y).
 
@@ -62,8 +63,10 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'e9363c365622d82f72aad8051fe6a0e9d37db3b9964fa619a70a6da24566aa16'
+INPUT_HASH = 'dfc0dc01467e6a3dbcdd67c129ce8c56dae271d00b1cd394a5ddc14f864f1ecc'
 SYMPY_VERSION = '1.14.0'
+#: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
+ELIMINATION = 'symbolic'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 129, 'constants': 7, 'rhs_q': 125, 'rhs_pose': 134, 'rhs_pose_q': 130, 'pose_rates': 5, 'energy': 45, 'multipliers': 113}
 
@@ -505,4 +508,4 @@ def body_outlines(s, p, uu):
         out[0, j, 2] = _c5*_c7 + _c7
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '0eab60d88d48e0bfe7c337fea35f26acdf7f9d1f8353be562e8c375e990b0f0e'
+MODULE_SHA256 = '9106666675ba7d04a9221813b5332340ef51a53565738adb0e17ba51a534718a'

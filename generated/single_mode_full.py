@@ -3,7 +3,8 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:6f631a8404f0c68252515ed16dc422000f19cc61a41c25f9366f430c1e2bac20
+Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
+SymPy 1.14.0; input hash sha256:b415e83f63c64a9dac2eddcd46d2dbba14391db6d3e4aa81904140853dc8c517
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -62,8 +63,10 @@ MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '6f631a8404f0c68252515ed16dc422000f19cc61a41c25f9366f430c1e2bac20'
+INPUT_HASH = 'b415e83f63c64a9dac2eddcd46d2dbba14391db6d3e4aa81904140853dc8c517'
 SYMPY_VERSION = '1.14.0'
+#: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
+ELIMINATION = 'symbolic'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 20, 'constants': 13, 'rhs_q': 10, 'rhs_pose': 27, 'rhs_pose_q': 17, 'pose_rates': 7, 'energy': 23, 'multipliers': 7, 'frequencies': 5}
 
@@ -333,4 +336,4 @@ def frequencies(p):
     out[0] = math.sqrt(g)/math.sqrt(ell)
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'bf0681dad85b1482c6af7dea598983d2d68304e5b9c9feb62a9f26b066ac3c8f'
+MODULE_SHA256 = 'f5d0ba744e6f7aedb246a8c7550ddf39835308f7f070f04e0dd1227245b2280b'

@@ -3,7 +3,8 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py and derivation/truncation.py.
-SymPy 1.14.0; input hash sha256:ed141df2bdb1fa9fa2420be14215513963b821660383d887912b4f5878ff6165
+Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
+SymPy 1.14.0; input hash sha256:1d6f80c7e884a2289fdf8a343f35c1ff8f925fd8879b1d54cebe7f019f5d9b98
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -62,8 +63,10 @@ MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'ed141df2bdb1fa9fa2420be14215513963b821660383d887912b4f5878ff6165'
+INPUT_HASH = '1d6f80c7e884a2289fdf8a343f35c1ff8f925fd8879b1d54cebe7f019f5d9b98'
 SYMPY_VERSION = '1.14.0'
+#: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
+ELIMINATION = 'symbolic'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 11, 'constants': 7, 'rhs_q': 7, 'rhs_pose': 17, 'rhs_pose_q': 14, 'pose_rates': 7, 'energy': 23, 'multipliers': 7, 'frequencies': 5}
 
@@ -322,4 +325,4 @@ def frequencies(p):
     out[0] = math.sqrt(g)/math.sqrt(ell)
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '85ec6144ed992361e63e1fb388b867291b454dbc10d6e71a327d92d168ceaa4b'
+MODULE_SHA256 = '407d464c1ca8e779d5e56635616600535d3fd43e4250426c3e0e17156fbfd597'

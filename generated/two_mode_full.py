@@ -3,7 +3,8 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:9745b2d6fc4213e44e4343b789f07a33807bddd63d51ca3d48cc9f161cfccbf2
+Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
+SymPy 1.14.0; input hash sha256:75ef84bd801832996bf27bac68bb610a20240a2396a796676dc6934aae463833
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -65,8 +66,10 @@ MULTIPLIER_NAMES = ('Const22', 'Const23')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '9745b2d6fc4213e44e4343b789f07a33807bddd63d51ca3d48cc9f161cfccbf2'
+INPUT_HASH = '75ef84bd801832996bf27bac68bb610a20240a2396a796676dc6934aae463833'
 SYMPY_VERSION = '1.14.0'
+#: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
+ELIMINATION = 'symbolic'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 152, 'constants': 107, 'rhs_q': 65, 'rhs_pose': 166, 'rhs_pose_q': 76, 'pose_rates': 13, 'energy': 58, 'multipliers': 166, 'frequencies': 12}
 
@@ -682,4 +685,4 @@ def frequencies(p):
     out[1] = _c0*_c1/math.sqrt((L*L) + (ell*ell))
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '19d5ce428a1b6cd96d38f2110b80bc498b5437a4c6a2d17493f25a9d0aab5484'
+MODULE_SHA256 = 'e605e8e4a2d66ec0fb7e35d9fb87c817fa35ecb6b5d1ab1e4e72ce933779156c'

@@ -3,7 +3,8 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py and derivation/truncation.py.
-SymPy 1.14.0; input hash sha256:5d6f6b85a0f4f7a981c9213a76b2ab6e6d644b1095576cd86f963069a01bb4b9
+Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
+SymPy 1.14.0; input hash sha256:a47e4c2b225889cbe1bde981a654f2b4959f8d1cf537eef85ddc25d69d211751
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -65,8 +66,10 @@ MULTIPLIER_NAMES = ('Const22', 'Const23')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '5d6f6b85a0f4f7a981c9213a76b2ab6e6d644b1095576cd86f963069a01bb4b9'
+INPUT_HASH = 'a47e4c2b225889cbe1bde981a654f2b4959f8d1cf537eef85ddc25d69d211751'
 SYMPY_VERSION = '1.14.0'
+#: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
+ELIMINATION = 'symbolic'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 80, 'constants': 52, 'rhs_q': 35, 'rhs_pose': 91, 'rhs_pose_q': 46, 'pose_rates': 13, 'energy': 58, 'multipliers': 56, 'frequencies': 12}
 
@@ -537,4 +540,4 @@ def frequencies(p):
     out[1] = _c0*_c1/math.sqrt((L*L) + (ell*ell))
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '6d49f5b0c9478ae5f9c8587cee7f3612350805f3afd5e209082491b99c3f14d1'
+MODULE_SHA256 = '4464dba8234be7cc353c3630ddc46079adb89bb6c1954d6d2f89fffe43f8285c'
