@@ -110,12 +110,12 @@ def input_hash(spec: engine.ModelSpec, fidelity: str) -> str:
     return h.hexdigest()
 
 
-def _cse_block(exprs, targets, allowed, indent="    "):
+def _cse_block(exprs, targets, allowed, indent="    ", prefix="_c"):
     """CSE ``exprs`` and assign them to ``targets``; returns (code lines, op count)."""
     bad = set().union(*(e.free_symbols for e in exprs)) - set(allowed)
     if bad:
         raise ValueError(f"refusing to emit: undeclared symbols {sorted(map(str, bad))}")
-    subs, reduced_exprs = sp.cse(exprs, symbols=sp.numbered_symbols("_c", cls=names.Own), order="canonical")
+    subs, reduced_exprs = sp.cse(exprs, symbols=sp.numbered_symbols(prefix, cls=names.Own), order="canonical")
     lines = [f"{indent}{s} = {_code(v)}" for s, v in subs]
     lines += [f"{indent}{t} = {_code(v)}" for t, v in zip(targets, reduced_exprs)]
     ops = sum(sp.count_ops(v) for _, v in subs) + sum(sp.count_ops(v) for v in reduced_exprs)
@@ -283,7 +283,8 @@ def _extra_source(spec: engine.ModelSpec) -> str:
     return "\n\n# -- model-specific helpers (ModelSpec.extra_source) --\n" + spec.extra_source.strip("\n") + "\n"
 
 
-def _rhs_source(syms_state, syms_par, rates, syms_pose=(), pose_rates=()) -> tuple[str, dict]:
+def _rhs_source(syms_state, syms_par, rates, syms_pose=(), pose_rates=(), solve=((), 0),
+                known=frozenset()) -> tuple[str, dict]:
     """Source of the right-hand-side functions shared by every generated module.
 
     ``rhs_into(t, s, p, ds)`` and ``rhs(t, s, p)`` take the parameters;
@@ -293,24 +294,28 @@ def _rhs_source(syms_state, syms_par, rates, syms_pose=(), pose_rates=()) -> tup
     from ``q``, which the compiled integrators call at every stage.  With a
     pose, ``rhs_pose_into``/``rhs_pose``/``rhs_pose_q_into`` likewise.
     Returns the source and the operation count of each function body.
+    ``solve``: lines (and their op count) that open every ``*_into`` body after its unpacking, binding the
+    symbols ``known`` that ``rates`` may hold (the numeric elimination, :mod:`.kkt_emit`).
     """
     nl = "\n"
+    pre, pre_ops = "".join(line + "\n" for line in solve[0]), solve[1]
     state, pose, params = [str(x) for x in syms_state], [str(x) for x in syms_pose], [str(x) for x in syms_par]
     n, npose = len(state), len(pose)
-    allowed = set(syms_state) | set(syms_par) | {names.t}
+    allowed = set(syms_state) | set(syms_par) | {names.t} | set(known)
     constants, hoisted = hoist_parameters(list(rates) + list(pose_rates), syms_par)
     q_names = list(params) + [k for k, _ in constants]
     const_lines, const_ops = _cse_block([v for _, v in constants], [f"q[{len(params) + i}]" for i in
                                                                     range(len(constants))], set(syms_par))
-    allowed_q = set(syms_state) | set(syms_par) | {k for k, _ in constants} | {names.t}
+    allowed_q = set(syms_state) | set(syms_par) | {k for k, _ in constants} | {names.t} | set(known)
     rhs_lines, rhs_ops = _cse_block(list(rates), [f"ds[{i}]" for i in range(n)], allowed)
     q_lines, q_ops = _cse_block(hoisted[:n], [f"ds[{i}]" for i in range(n)], allowed_q)
+    rhs_ops, q_ops = rhs_ops + pre_ops, q_ops + pre_ops
     out = f'''@njit(cache=True)
 def rhs_into(t, s, p, ds):
     """Write d(state)/dt into ``ds`` ({rhs_ops} operations)."""
 {nl.join(_unpack(state, "s"))}
 {nl.join(_unpack(params, "p"))}
-{nl.join(rhs_lines)}
+{pre}{nl.join(rhs_lines)}
 
 
 @njit(cache=True)
@@ -336,7 +341,7 @@ def rhs_q_into(t, s, q, ds):
     """``rhs_into`` with ``q = constants(p)`` in place of ``p`` ({q_ops} operations)."""
 {nl.join(_unpack(state, "s"))}
 {nl.join(_unpack(q_names, "q"))}
-{nl.join(q_lines)}
+{pre}{nl.join(q_lines)}
 '''
     ops = {"rhs": rhs_ops, "constants": const_ops, "rhs_q": q_ops}
     if not npose:
@@ -346,7 +351,7 @@ def rhs_q_into(t, s, q, ds):
                                       allowed_pose)
     qp_lines, qp_ops = _cse_block(hoisted, [f"ds[{i}]" for i in range(n + npose)], allowed_q | set(syms_pose))
     unpack_pose = _unpack(pose, "s", start=n)
-    ops.update(rhs_pose=rhsp_ops, rhs_pose_q=qp_ops)
+    ops.update(rhs_pose=rhsp_ops + pre_ops, rhs_pose_q=qp_ops + pre_ops)
     return out + f'''
 
 @njit(cache=True)
@@ -355,7 +360,7 @@ def rhs_pose_into(t, s, p, ds):
 {nl.join(_unpack(state, "s"))}
 {nl.join(unpack_pose)}
 {nl.join(_unpack(params, "p"))}
-{nl.join(rhsp_lines)}
+{pre}{nl.join(rhsp_lines)}
 
 
 @njit(cache=True)
@@ -372,14 +377,15 @@ def rhs_pose_q_into(t, s, q, ds):
 {nl.join(_unpack(state, "s"))}
 {nl.join(unpack_pose)}
 {nl.join(_unpack(q_names, "q"))}
-{nl.join(qp_lines)}
+{pre}{nl.join(qp_lines)}
 ''', ops
 
 
 _ELIMINATION_DOC = {
     "symbolic": "Accelerations and multipliers in closed form (symbolic elimination of the multipliers).",
     "numeric": "Multipliers eliminated numerically: the right-hand side solves [[M, -A^T], [A, 0]] [q_ddot, lambda]\n"
-               "= [f, -c] at every call (derivation/kkt_emit.py; engine.NUMERIC_FROM says when).",
+               "= [f, -c] at every call by an unrolled L D L^T of the reduced mass matrix (derivation/kkt_emit.py;\n"
+               "engine.NUMERIC_FROM says when).",
 }
 
 
@@ -414,7 +420,7 @@ def module_source(system, fidelity: str, frequencies=None) -> str:
     energy_pose = bool(system.energy.free_symbols & set(spec.pose))  # a potential of a cyclic coordinate
     energy_lines, energy_ops = _cse_block([system.energy], ["energy"], allowed | set(spec.pose))
     lam = list(system.multipliers)
-    lam_lines, lam_ops = (kkt_emit.multiplier_lines(system, timed) if system.kkt is not None else
+    lam_lines, lam_ops = (kkt_emit.multiplier_lines(system, allowed) if system.kkt is not None else
                           _cse_block(lam, [f"out[{i}]" for i in range(len(lam))], allowed))
     labels = ", ".join(spec.multiplier_labels)
     digest = input_hash(spec, fidelity)

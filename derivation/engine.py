@@ -679,7 +679,7 @@ def derive(spec: ModelSpec) -> ReducedSystem:
     )
 
     if choose_elimination(spec, len(ind), b) == "numeric":
-        return _numeric_system(spec, at, M, h, A, c, b, dep_vel)
+        return _numeric_system(spec, at, M, h, A, c, b, dep_vel, A_dep_inv)
     qdd = sp.Matrix(spec.accelerations)
     residual = (M * qdd + h).subs(dep_acc).subs(dep_vel)
     residual = residual.applyfunc(sp.expand)
@@ -774,7 +774,8 @@ class Kkt:
 
     ``mass`` ``M`` (n x n), ``forcing`` ``f = Q - h`` (n), ``constraint`` ``A`` (m x n) and ``bias``
     ``c = d(A q_dot + b)/dt - A q_ddot`` (m), the cyclic coordinates at their representative values and the
-    dependent velocities substituted; ``independent``: the indices of the independent accelerations among the n.
+    dependent velocities substituted; ``independent``: the indices of the independent accelerations among the n;
+    ``dependent_inverse``: the inverse of the constraint matrix's block of the dependent coordinates.
     """
 
     mass: sp.Matrix
@@ -782,6 +783,7 @@ class Kkt:
     constraint: sp.Matrix
     bias: sp.Matrix
     independent: tuple
+    dependent_inverse: sp.Matrix
 
     def exprs(self) -> list:
         return [*self.mass, *self.forcing, *self.constraint, *self.bias]
@@ -794,11 +796,11 @@ class Kkt:
         return K, sp.Matrix.vstack(self.forcing, -self.bias)
 
 
-def _numeric_system(spec: ModelSpec, at: dict, M, h, A, c, b, dep_vel: dict) -> ReducedSystem:
+def _numeric_system(spec: ModelSpec, at: dict, M, h, A, c, b, dep_vel: dict, A_dep_inv) -> ReducedSystem:
     """The :class:`ReducedSystem` of ``spec`` with its accelerations and multipliers left to a numeric solve."""
     variables = list(spec.velocity_state)
     kkt = Kkt(mass=M.subs(dep_vel), forcing=(-h).subs(dep_vel), constraint=A.subs(dep_vel), bias=c.subs(dep_vel),
-              independent=tuple(spec.coordinates.index(q) for q in spec.independent))
+              independent=tuple(spec.coordinates.index(q) for q in spec.independent), dependent_inverse=A_dep_inv)
     allowed = set(variables) | set(spec.params) | {t}
     leftover = set().union(*(e.free_symbols for e in kkt.exprs())) - allowed
     if leftover:

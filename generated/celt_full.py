@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/rigid_emit.py (make derive) from the rigid body 'celt'
 through derivation/rigid.py (Lagrange-d'Alembert in body quasi-velocities).
-SymPy 1.14.0; input hash sha256:14e8e68d67599361b89edfe45013c086b827b9cb5c1c22582f87bb063d47835a
+SymPy 1.14.0; input hash sha256:093c896a7fa122b0b0d20343f6d7f4fed5316c05e332fd6586662ad84e04d32f
 
 Classical rattleback (celt): a rigid body with an ellipsoidal bottom (semi-axes a, b, c along the body axes x, y, z; centre of mass a distance h below the ellipsoid's centre), inertia tensor about the centre of mass with entries I_xx..I_yz in body axes, rolling without slipping on a horizontal table under gravity g, dissipation torque -sigma*omega.  State: upward vertical n and angular velocity omega in body axes, vertical spin omega_n = omega.n; pose: heading psi of the body x axis, centre of mass (x, y).
 
@@ -81,7 +81,7 @@ PRESETS = {'kane_levinson_1982': {'a': 0.2, 'b': 0.03, 'c': 0.02, 'h': 0.01, 'm'
 PRESET_SOURCES = {'kane_levinson_1982': 'Kane & Levinson, Int. J. Non-Linear Mech. 17 (1982) 175-186', 'schoemer': "E. Schoemer's rattleback (golden-ratio ellipsoid)"}
 #: the model file the body comes from
 SOURCE = 'knifeedge.derive.celt'
-INPUT_HASH = '14e8e68d67599361b89edfe45013c086b827b9cb5c1c22582f87bb063d47835a'
+INPUT_HASH = '093c896a7fa122b0b0d20343f6d7f4fed5316c05e332fd6586662ad84e04d32f'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 247, 'constants': 23, 'rhs_q': 250, 'rhs_pose': 285, 'rhs_pose_q': 286, 'pose_rates': 71, 'energy': 72, 'multipliers': 265, 'power_dissipated': 6}
@@ -1156,4 +1156,4 @@ def body_outlines(s, p, uu):
         out[2, j, 2] = _c33*_c45 + _c44
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '92d6b85bb7b418a8a8b206f92e53a0045404ab4182ca296207dde7710dfac99c'
+MODULE_SHA256 = '5ad641e5f09612f277513d007b88fd14cb961a14eff539c4427f69c9517695b8'

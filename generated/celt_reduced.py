@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/rigid_small_emit.py (make derive) from the rigid body 'celt'
 through derivation/rigid.py and derivation/rigid_small.py.
-SymPy 1.14.0; input hash sha256:586c306b732d40984d0e771b1a50fee3d872e152ddce7f7115234557ce4e3374
+SymPy 1.14.0; input hash sha256:5c990ef58147e72c6c1cd35844724ec64353f81d2f3aa891d3b8b6b988c8c88e
 
 Classical rattleback (celt): a rigid body with an ellipsoidal bottom (semi-axes a, b, c along the body axes x, y, z; centre of mass a distance h below the ellipsoid's centre), inertia tensor about the centre of mass with entries I_xx..I_yz in body axes, rolling without slipping on a horizontal table under gravity g, dissipation torque -sigma*omega.  State: upward vertical n and angular velocity omega in body axes, vertical spin omega_n = omega.n; pose: heading psi of the body x axis, centre of mass (x, y).
 
@@ -65,7 +65,7 @@ EXPORTS = ('PRESETS', 'PRESET_SOURCES', 'initial_state')
 PRESETS = {'kane_levinson_1982': {'a': 0.2, 'b': 0.03, 'c': 0.02, 'h': 0.01, 'm': 1.0, 'g': 9.81, 'I_xx': 0.0002, 'I_yy': 0.0016, 'I_zz': 0.0017, 'I_xy': 2e-05, 'sigma': 0.0}, 'schoemer': {'a': 1.618033988749895, 'b': 1.0, 'c': 1.0, 'h': 0.1875, 'm': 0.2, 'g': 9.81, 'I_xx': 0.05796875, 'I_yy': 0.09032943, 'I_zz': 0.12236068, 'I_xy': -0.025, 'sigma': 0.0}}
 PRESET_SOURCES = {'kane_levinson_1982': 'Kane & Levinson, Int. J. Non-Linear Mech. 17 (1982) 175-186', 'schoemer': "E. Schoemer's rattleback (golden-ratio ellipsoid)"}
 SOURCE = 'knifeedge.derive.celt'
-INPUT_HASH = '586c306b732d40984d0e771b1a50fee3d872e152ddce7f7115234557ce4e3374'
+INPUT_HASH = '5c990ef58147e72c6c1cd35844724ec64353f81d2f3aa891d3b8b6b988c8c88e'
 SYMPY_VERSION = '1.14.0'
 OP_COUNTS = {'rhs': 606, 'constants': 511, 'rhs_q': 108, 'energy': 85, 'power_dissipated': 6}
 
@@ -612,4 +612,4 @@ def body_values(p):
     out[12] = _c0*_c3 + _c1*_c3 + _c2*_c3 - 0.999923847908788*h
     return (out[0], out[1], out[2], (out[3:6], out[6:9], out[9:12]), out[12])
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'f682bdd74a5a4f3f68df8cd61fd429779a72eb0d0923c6797e4deed6e32476de'
+MODULE_SHA256 = '1163d3ac3cbbde58b4112a469407b4c91a25ebbec5e96ff666671d3a3fa44fb7'

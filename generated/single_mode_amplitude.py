@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:db951bb6a8a5958e56d005f4e7efecd7f18e60c1d5d3f701e1c90ec21263a4b0
+SymPy 1.14.0; input hash sha256:35cc5c47eabdd51bdc6be28d2a110fb5e199a7d1d055f77d7ea9a85c71733cca
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -67,7 +67,7 @@ HAS_DISSIPATION = False
 EXPORTS = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy',)
-INPUT_HASH = 'db951bb6a8a5958e56d005f4e7efecd7f18e60c1d5d3f701e1c90ec21263a4b0'
+INPUT_HASH = '35cc5c47eabdd51bdc6be28d2a110fb5e199a7d1d055f77d7ea9a85c71733cca'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 10, 'constants': 6, 'rhs_q': 4, 'energy': 9, 'invariants': 9, 'frequencies': 5, 'growth_rates': 2, 'drive_rates': 5}
@@ -190,4 +190,4 @@ def drive_rates(p):
     out[0] = -(1.0/2.0)*D*g/(L*L)
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '5de30437599d088f9be3299c8bb73f07b190f832bb1aaa9f93a60d377432de40'
+MODULE_SHA256 = 'ae4bfcc36bcc0d74aa3750a9dc7fbcc95755cee021a8ed370f3c7eee69a13ea9'

@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:b415e83f63c64a9dac2eddcd46d2dbba14391db6d3e4aa81904140853dc8c517
+SymPy 1.14.0; input hash sha256:fadc4cbff8a4fa6e2ff5f6a8ff752a4969b4453b20af51f1cd2b5343609b71ff
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'b415e83f63c64a9dac2eddcd46d2dbba14391db6d3e4aa81904140853dc8c517'
+INPUT_HASH = 'fadc4cbff8a4fa6e2ff5f6a8ff752a4969b4453b20af51f1cd2b5343609b71ff'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -336,4 +336,4 @@ def frequencies(p):
     out[0] = math.sqrt(g)/math.sqrt(ell)
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'f5d0ba744e6f7aedb246a8c7550ddf39835308f7f070f04e0dd1227245b2280b'
+MODULE_SHA256 = '35f6629d28476502924f9d5eaa954e8e9dd8c8ecee2253dab8704d5843ad04f9'

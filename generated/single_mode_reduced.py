@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py and derivation/truncation.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:1d6f80c7e884a2289fdf8a343f35c1ff8f925fd8879b1d54cebe7f019f5d9b98
+SymPy 1.14.0; input hash sha256:16c9df8531ffd0c1b93bd10a1b16c94b4e79e76fda9d6cc2416129ce20c149bf
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '1d6f80c7e884a2289fdf8a343f35c1ff8f925fd8879b1d54cebe7f019f5d9b98'
+INPUT_HASH = '16c9df8531ffd0c1b93bd10a1b16c94b4e79e76fda9d6cc2416129ce20c149bf'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -325,4 +325,4 @@ def frequencies(p):
     out[0] = math.sqrt(g)/math.sqrt(ell)
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '407d464c1ca8e779d5e56635616600535d3fd43e4250426c3e0e17156fbfd597'
+MODULE_SHA256 = '12327609ac680464e4f75fcd2088b2bbbcc9881289b0f7f33202826d20b746c6'

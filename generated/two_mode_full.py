@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:75ef84bd801832996bf27bac68bb610a20240a2396a796676dc6934aae463833
+SymPy 1.14.0; input hash sha256:edaff9189c843c98baedad0c12eebe2846b0868f591a20ab76eed788393c87ef
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -66,7 +66,7 @@ MULTIPLIER_NAMES = ('Const22', 'Const23')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '75ef84bd801832996bf27bac68bb610a20240a2396a796676dc6934aae463833'
+INPUT_HASH = 'edaff9189c843c98baedad0c12eebe2846b0868f591a20ab76eed788393c87ef'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -685,4 +685,4 @@ def frequencies(p):
     out[1] = _c0*_c1/math.sqrt((L*L) + (ell*ell))
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'e605e8e4a2d66ec0fb7e35d9fb87c817fa35ecb6b5d1ab1e4e72ce933779156c'
+MODULE_SHA256 = '5228dcddb576f17bc50300c7cb4c9b6cb3b3c6dcc736427625e87990b276c48e'

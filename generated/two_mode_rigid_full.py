@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/rigid_emit.py (make derive) from the rigid body 'two_mode_rigid'
 through derivation/rigid.py (Lagrange-d'Alembert in body quasi-velocities).
-SymPy 1.14.0; input hash sha256:d6b4cd8e2fd85f4b78b5dfa49179de2853f9effd44dd54206a2c852f6eaa753a
+SymPy 1.14.0; input hash sha256:f355910e678615ca72412f545cf777000e15b973ef99b129c242b11e01455c1e
 
 Chiral knife edge of the paper's section III as the real rigid body: massless inverted-U bar of half-length L, masses M/2 a distance ell below its ends, contact at the lowest point of a circle of radius D in a vertical plane at the chiral angle alpha to the bar; per unit mass, exact in the tilts.
 
@@ -72,7 +72,7 @@ PRESETS = {}
 PRESET_SOURCES = {}
 #: the model file the body comes from
 SOURCE = 'knifeedge.derive.rigid_knife_edge'
-INPUT_HASH = 'd6b4cd8e2fd85f4b78b5dfa49179de2853f9effd44dd54206a2c852f6eaa753a'
+INPUT_HASH = 'f355910e678615ca72412f545cf777000e15b973ef99b129c242b11e01455c1e'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 253, 'constants': 25, 'rhs_q': 221, 'rhs_pose': 293, 'rhs_pose_q': 261, 'pose_rates': 73, 'energy': 56, 'multipliers': 267}
@@ -987,4 +987,4 @@ def body_outlines(s, p, uu):
         out[0, j, 2] = _c16*_c23 - _c16*(-_c16*_c31 + _c22) + _c21*_c24 + _c24*_c30*_c31 + _c27*_c29*_c31 + _c27*_c8
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'f9f988c5fc9b9119b3444ae84501a462a661283038cd998f29cc7c2a4e66e608'
+MODULE_SHA256 = '25c128421b16295d9a0aadc21cca6aa9dcae47452b0a5049849e435312073826'
