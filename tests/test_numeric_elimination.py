@@ -132,3 +132,27 @@ def test_disk_pendulum_conserves_energy(disk_pendulum):
                     rtol=1e-11, atol=1e-13)
     e = r.energy
     assert np.max(np.abs(e - e[0])) < 1e-9 * abs(e[0])
+
+
+def test_doc_section_on_two_bodies_runs(tmp_path, monkeypatch):
+    """docs/your-own-model.md section 9 as written (tags ``bodies-file=``, ``bodies-example``)."""
+    import contextlib
+    import io
+    import re
+    import shlex
+
+    from knifeedge.cli import main
+    from test_your_own_model import DOC, _blocks, _check_printed
+
+    monkeypatch.chdir(tmp_path)
+    files = re.findall(r"```python bodies-file=(\w+\.py)\n(.*?)```", DOC.read_text(), flags=re.S)
+    assert [name for name, _ in files] == ["disk_pendulum.py"]
+    (tmp_path / "disk_pendulum.py").write_text(files[0][1])
+    for line in (ln for block in _blocks("sh bodies-example") for ln in block.splitlines()):
+        assert main(shlex.split(line)[1:]) == 0, line
+    namespace: dict = {}
+    for code in _blocks("python bodies-example"):
+        out = io.StringIO()
+        with contextlib.redirect_stdout(out):
+            exec(compile(code, str(DOC), "exec"), namespace)
+        _check_printed(code, out.getvalue())
