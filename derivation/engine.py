@@ -755,14 +755,16 @@ NUMERIC_FROM = 4
 def choose_elimination(spec: ModelSpec, n_independent: int, b: sp.Matrix) -> str:
     """``"symbolic"`` or ``"numeric"``: ``spec.elimination`` unless ``"auto"``, then by :data:`NUMERIC_FROM`.
 
-    Affine (rheonomic) constraints and quasi-velocities need the multipliers in closed form (the power of the
-    constraints, the quasi-velocity rates), so ``"auto"`` keeps them symbolic and ``"numeric"`` is refused.
+    Affine (rheonomic) constraints, quasi-velocities and ``small`` coordinates need the closed form (the power of
+    the constraints, the quasi-velocity rates, the truncated fidelities), so ``"auto"`` keeps them symbolic and
+    ``"numeric"`` is refused.
     """
-    closed_only = bool(spec.quasi_velocities) or any(e != 0 for e in b)
+    closed_only = bool(spec.quasi_velocities) or bool(spec.small) or any(e != 0 for e in b)
     if spec.elimination == "numeric" and closed_only:
         raise ModelSpecError(spec.error_message(
-            "`elimination='numeric'` does not take affine (rheonomic or holonomic time-dependent) constraints: "
-            "their power needs the multipliers in closed form; use `elimination='symbolic'`"))
+            "`elimination='numeric'` does not take affine (rheonomic or holonomic time-dependent) constraints, "
+            "`quasi_velocities` or `small` coordinates (their power, rates and truncated fidelities need the "
+            "closed form); use `elimination='symbolic'`"))
     if spec.elimination != "auto":
         return spec.elimination
     return "numeric" if n_independent >= NUMERIC_FROM and not closed_only else "symbolic"

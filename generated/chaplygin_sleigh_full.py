@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/sleigh.py (model 'chaplygin_sleigh',
 constraints knife_edge) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:9c7d98d535de4bff7d1a52a5f01c4f5c4fd2707f166534d58d5aee05fbbd9807
+SymPy 1.14.0; input hash sha256:eefe02b2ff6b29206e54f6383f9bbd1823650126777325ca3d8dd9f9b2fce4ff
 
 Chaplygin sleigh: a rigid body on the plane with a knife edge at its rear contact point (x, y) that forbids sideways motion; heading phi, centre of mass at distance a ahead of the contact, radius of gyration k about the centre of mass; v is the speed along the axis.
 
@@ -60,7 +60,7 @@ MULTIPLIER_NAMES = ('knife_edge',)
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '9c7d98d535de4bff7d1a52a5f01c4f5c4fd2707f166534d58d5aee05fbbd9807'
+INPUT_HASH = 'eefe02b2ff6b29206e54f6383f9bbd1823650126777325ca3d8dd9f9b2fce4ff'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -264,4 +264,4 @@ def body_outlines(s, p, uu):
         out[0, j, 2] = ((1.0/3.0))*k
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '291be4e3e6b0d97b0cca7662948641a4ae884fd6c1d1774593f2a193c3505490'
+MODULE_SHA256 = 'eeab314ac7abb9aec9182640e84d8be1a447c1e2f37bb7f840a9ea7ee1949616'

@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk_damped',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:5b112fe3fb42d62bbc2a70ec51ba127553068a0c2ae838e1f74bca3efbed3eca
+SymPy 1.14.0; input hash sha256:1c98bca5853cffed2e6e8c36b25aa1bb7bf12cb30aa4a13622980f1d23426d43
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table, its rotation resisted by a viscous torque -c r^2 omega per unit mass (Rayleigh function c r^2 |omega|^2/2).
 
@@ -64,7 +64,7 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = True
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '5b112fe3fb42d62bbc2a70ec51ba127553068a0c2ae838e1f74bca3efbed3eca'
+INPUT_HASH = '1c98bca5853cffed2e6e8c36b25aa1bb7bf12cb30aa4a13622980f1d23426d43'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -648,4 +648,4 @@ def power_dissipated(s, p):
     power_dissipated = c*(r*r)*((_c0*_c0)*_c1 + 2*_c0*q1_dot*q3_dot + _c1*((math.cos(q2))*(math.cos(q2))) + (q1_dot*q1_dot) + (q2_dot*q2_dot))
     return power_dissipated
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '312de8b33fddb06cbeeb96563dd1c12efb326422349414dfb76180679ce22fe6'
+MODULE_SHA256 = 'e4415b4db8be346e4d7628371f35ef0b545308804f9c1a31a4819571361d9a61'

@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:2a69a10637ee740f2ac4f1a53d94671d0a1b0aba6637b8085c3c7f82a3af15c8
+SymPy 1.14.0; input hash sha256:195049755627c67299b6d32c9dde15bad0a92efdb2c0ec449467280711d94b28
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table: heading q1, lean q2 from the vertical, rotation q3 about the axle, contact point (x, y).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '2a69a10637ee740f2ac4f1a53d94671d0a1b0aba6637b8085c3c7f82a3af15c8'
+INPUT_HASH = '195049755627c67299b6d32c9dde15bad0a92efdb2c0ec449467280711d94b28'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -508,4 +508,4 @@ def body_outlines(s, p, uu):
         out[0, j, 2] = _c5*_c7 + _c7
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '8e69f4514b8ecd4d475fc0daf81dab0a55b172ec71e3e42b14ce70c445309f8b'
+MODULE_SHA256 = '4815d69a6578d9f7a9dba62674ddb7156785067f43a5026c6181554ecc031178'

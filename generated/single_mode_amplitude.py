@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:35cc5c47eabdd51bdc6be28d2a110fb5e199a7d1d055f77d7ea9a85c71733cca
+SymPy 1.14.0; input hash sha256:9a8e7ed2e7818eaf20bad9fb837f2fff4a8ec8144368445e8f3f754dedba9f5e
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -67,7 +67,7 @@ HAS_DISSIPATION = False
 EXPORTS = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy',)
-INPUT_HASH = '35cc5c47eabdd51bdc6be28d2a110fb5e199a7d1d055f77d7ea9a85c71733cca'
+INPUT_HASH = '9a8e7ed2e7818eaf20bad9fb837f2fff4a8ec8144368445e8f3f754dedba9f5e'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 10, 'constants': 6, 'rhs_q': 4, 'energy': 9, 'invariants': 9, 'frequencies': 5, 'growth_rates': 2, 'drive_rates': 5}
@@ -190,4 +190,4 @@ def drive_rates(p):
     out[0] = -(1.0/2.0)*D*g/(L*L)
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'ae4bfcc36bcc0d74aa3750a9dc7fbcc95755cee021a8ed370f3c7eee69a13ea9'
+MODULE_SHA256 = 'f3972bdf7e125f7466303cedfcc78e6aebf4119d69cf8be20b27ea967f438cc8'

@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:fadc4cbff8a4fa6e2ff5f6a8ff752a4969b4453b20af51f1cd2b5343609b71ff
+SymPy 1.14.0; input hash sha256:e44b1414390a210232f6a6cad56adcb2a62d7b29a48ddcaa179addf077f18152
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'fadc4cbff8a4fa6e2ff5f6a8ff752a4969b4453b20af51f1cd2b5343609b71ff'
+INPUT_HASH = 'e44b1414390a210232f6a6cad56adcb2a62d7b29a48ddcaa179addf077f18152'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -336,4 +336,4 @@ def frequencies(p):
     out[0] = math.sqrt(g)/math.sqrt(ell)
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '35f6629d28476502924f9d5eaa954e8e9dd8c8ecee2253dab8704d5843ad04f9'
+MODULE_SHA256 = '73096604a8c9292f3e1f1ab4b1fc357f6424dad9876115765f61c92e7f0bb333'

@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py and derivation/truncation.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:16c9df8531ffd0c1b93bd10a1b16c94b4e79e76fda9d6cc2416129ce20c149bf
+SymPy 1.14.0; input hash sha256:60cc3ad0f7d8cf0feadccd8c36029148befc8eca073bbfcbce5b775096c2c3e4
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '16c9df8531ffd0c1b93bd10a1b16c94b4e79e76fda9d6cc2416129ce20c149bf'
+INPUT_HASH = '60cc3ad0f7d8cf0feadccd8c36029148befc8eca073bbfcbce5b775096c2c3e4'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -325,4 +325,4 @@ def frequencies(p):
     out[0] = math.sqrt(g)/math.sqrt(ell)
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '12327609ac680464e4f75fcd2088b2bbbcc9881289b0f7f33202826d20b746c6'
+MODULE_SHA256 = '352b2769d09fe64b182f682fc9af938e31fe60c72351d623f96994d9afd4edc5'

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:e8a34c4f62ef7bae5cce3f5a4e8b278f0dcd007611d16ffbc20028effefffcee
+SymPy 1.14.0; input hash sha256:3844cd8ad4583a754b354e9baba525a6cfb077e0ffeb6295d23ff9ff543820f0
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -71,7 +71,7 @@ HAS_DISSIPATION = False
 EXPORTS = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy', 'log_A1_A2')
-INPUT_HASH = 'e8a34c4f62ef7bae5cce3f5a4e8b278f0dcd007611d16ffbc20028effefffcee'
+INPUT_HASH = '3844cd8ad4583a754b354e9baba525a6cfb077e0ffeb6295d23ff9ff543820f0'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 24, 'constants': 14, 'rhs_q': 10, 'energy': 12, 'invariants': 19, 'frequencies': 12, 'growth_rates': 11, 'drive_rates': 12}
@@ -238,4 +238,4 @@ def drive_rates(p):
     out[1] = -_c1*_c2/(_c0 + _c2)
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'dcadfeecba91489c2a45a67a68b47cd60e8662b600ffb84b4b01175ad0a743cd'
+MODULE_SHA256 = '50ec5b78577b64f34682f963b7d8b4dc192a60e0e0b6adfa50645e6ad54621de'

@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:edaff9189c843c98baedad0c12eebe2846b0868f591a20ab76eed788393c87ef
+SymPy 1.14.0; input hash sha256:280e58f96d342fcf2fa1f3d053b8f8403839f599d7c246a9097ce1e80b6d45d6
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -66,7 +66,7 @@ MULTIPLIER_NAMES = ('Const22', 'Const23')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'edaff9189c843c98baedad0c12eebe2846b0868f591a20ab76eed788393c87ef'
+INPUT_HASH = '280e58f96d342fcf2fa1f3d053b8f8403839f599d7c246a9097ce1e80b6d45d6'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -685,4 +685,4 @@ def frequencies(p):
     out[1] = _c0*_c1/math.sqrt((L*L) + (ell*ell))
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '5228dcddb576f17bc50300c7cb4c9b6cb3b3c6dcc736427625e87990b276c48e'
+MODULE_SHA256 = 'c2788bcc674f54997669d21947a9709eb9fef89ae81a2c44f649091c80de64aa'

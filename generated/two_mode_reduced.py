@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py and derivation/truncation.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:abc65c30498037c9abfbc39e29f9426e9c7055e45a28aaa249f84dfe8a00c761
+SymPy 1.14.0; input hash sha256:a3f17c43ed7f915283cc4ae13cf2876b5ddf9516badb3a55d4abf37a127e4a16
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -66,7 +66,7 @@ MULTIPLIER_NAMES = ('Const22', 'Const23')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'abc65c30498037c9abfbc39e29f9426e9c7055e45a28aaa249f84dfe8a00c761'
+INPUT_HASH = 'a3f17c43ed7f915283cc4ae13cf2876b5ddf9516badb3a55d4abf37a127e4a16'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -540,4 +540,4 @@ def frequencies(p):
     out[1] = _c0*_c1/math.sqrt((L*L) + (ell*ell))
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '3bac4a7ec36f67906dbbbc6ea2f071ff645a7c2443c9e9e6a852a730df3acb4e'
+MODULE_SHA256 = '96d14e0bcacade15edd8206ed35f79de57d241f01401e9580bb29f4f7fcc5156'
