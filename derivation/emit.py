@@ -96,7 +96,8 @@ def input_hash(spec: engine.ModelSpec, fidelity: str) -> str:
         spec.name, fidelity, sp.__version__,
         sp.srepr(spec.lagrangian), *(sp.srepr(c) for c in spec.constraints), *(sp.srepr(f) for f in spec.holonomic),
         inspect.getsource(engine), inspect.getsource(truncation), inspect.getsource(models), inspect.getsource(names),
-        Path(__file__).read_text(),
+        Path(__file__).read_text(), (Path(__file__).parent / "kkt_emit.py").read_text(),
+        *((spec.elimination,) if spec.elimination != "auto" else ()),
         *((inspect.getsource(averaging),) if fidelity == "amplitude" else ()),
         *(sp.srepr(e) for _, _, e in spec.quasi_velocities),
         *((path.read_text(),) if path is not None else ()),
@@ -109,12 +110,12 @@ def input_hash(spec: engine.ModelSpec, fidelity: str) -> str:
     return h.hexdigest()
 
 
-def _cse_block(exprs, targets, allowed, indent="    "):
+def _cse_block(exprs, targets, allowed, indent="    ", prefix="_c"):
     """CSE ``exprs`` and assign them to ``targets``; returns (code lines, op count)."""
     bad = set().union(*(e.free_symbols for e in exprs)) - set(allowed)
     if bad:
         raise ValueError(f"refusing to emit: undeclared symbols {sorted(map(str, bad))}")
-    subs, reduced_exprs = sp.cse(exprs, symbols=sp.numbered_symbols("_c", cls=names.Own), order="canonical")
+    subs, reduced_exprs = sp.cse(exprs, symbols=sp.numbered_symbols(prefix, cls=names.Own), order="canonical")
     lines = [f"{indent}{s} = {_code(v)}" for s, v in subs]
     lines += [f"{indent}{t} = {_code(v)}" for t, v in zip(targets, reduced_exprs)]
     ops = sum(sp.count_ops(v) for _, v in subs) + sum(sp.count_ops(v) for v in reduced_exprs)
@@ -282,7 +283,8 @@ def _extra_source(spec: engine.ModelSpec) -> str:
     return "\n\n# -- model-specific helpers (ModelSpec.extra_source) --\n" + spec.extra_source.strip("\n") + "\n"
 
 
-def _rhs_source(syms_state, syms_par, rates, syms_pose=(), pose_rates=()) -> tuple[str, dict]:
+def _rhs_source(syms_state, syms_par, rates, syms_pose=(), pose_rates=(), solve=((), 0),
+                known=frozenset()) -> tuple[str, dict]:
     """Source of the right-hand-side functions shared by every generated module.
 
     ``rhs_into(t, s, p, ds)`` and ``rhs(t, s, p)`` take the parameters;
@@ -292,24 +294,28 @@ def _rhs_source(syms_state, syms_par, rates, syms_pose=(), pose_rates=()) -> tup
     from ``q``, which the compiled integrators call at every stage.  With a
     pose, ``rhs_pose_into``/``rhs_pose``/``rhs_pose_q_into`` likewise.
     Returns the source and the operation count of each function body.
+    ``solve``: lines (and their op count) that open every ``*_into`` body after its unpacking, binding the
+    symbols ``known`` that ``rates`` may hold (the numeric elimination, :mod:`.kkt_emit`).
     """
     nl = "\n"
+    pre, pre_ops = "".join(line + "\n" for line in solve[0]), solve[1]
     state, pose, params = [str(x) for x in syms_state], [str(x) for x in syms_pose], [str(x) for x in syms_par]
     n, npose = len(state), len(pose)
-    allowed = set(syms_state) | set(syms_par) | {names.t}
+    allowed = set(syms_state) | set(syms_par) | {names.t} | set(known)
     constants, hoisted = hoist_parameters(list(rates) + list(pose_rates), syms_par)
     q_names = list(params) + [k for k, _ in constants]
     const_lines, const_ops = _cse_block([v for _, v in constants], [f"q[{len(params) + i}]" for i in
                                                                     range(len(constants))], set(syms_par))
-    allowed_q = set(syms_state) | set(syms_par) | {k for k, _ in constants} | {names.t}
+    allowed_q = set(syms_state) | set(syms_par) | {k for k, _ in constants} | {names.t} | set(known)
     rhs_lines, rhs_ops = _cse_block(list(rates), [f"ds[{i}]" for i in range(n)], allowed)
     q_lines, q_ops = _cse_block(hoisted[:n], [f"ds[{i}]" for i in range(n)], allowed_q)
+    rhs_ops, q_ops = rhs_ops + pre_ops, q_ops + pre_ops
     out = f'''@njit(cache=True)
 def rhs_into(t, s, p, ds):
     """Write d(state)/dt into ``ds`` ({rhs_ops} operations)."""
 {nl.join(_unpack(state, "s"))}
 {nl.join(_unpack(params, "p"))}
-{nl.join(rhs_lines)}
+{pre}{nl.join(rhs_lines)}
 
 
 @njit(cache=True)
@@ -335,7 +341,7 @@ def rhs_q_into(t, s, q, ds):
     """``rhs_into`` with ``q = constants(p)`` in place of ``p`` ({q_ops} operations)."""
 {nl.join(_unpack(state, "s"))}
 {nl.join(_unpack(q_names, "q"))}
-{nl.join(q_lines)}
+{pre}{nl.join(q_lines)}
 '''
     ops = {"rhs": rhs_ops, "constants": const_ops, "rhs_q": q_ops}
     if not npose:
@@ -345,7 +351,7 @@ def rhs_q_into(t, s, q, ds):
                                       allowed_pose)
     qp_lines, qp_ops = _cse_block(hoisted, [f"ds[{i}]" for i in range(n + npose)], allowed_q | set(syms_pose))
     unpack_pose = _unpack(pose, "s", start=n)
-    ops.update(rhs_pose=rhsp_ops, rhs_pose_q=qp_ops)
+    ops.update(rhs_pose=rhsp_ops + pre_ops, rhs_pose_q=qp_ops + pre_ops)
     return out + f'''
 
 @njit(cache=True)
@@ -354,7 +360,7 @@ def rhs_pose_into(t, s, p, ds):
 {nl.join(_unpack(state, "s"))}
 {nl.join(unpack_pose)}
 {nl.join(_unpack(params, "p"))}
-{nl.join(rhsp_lines)}
+{pre}{nl.join(rhsp_lines)}
 
 
 @njit(cache=True)
@@ -371,8 +377,16 @@ def rhs_pose_q_into(t, s, q, ds):
 {nl.join(_unpack(state, "s"))}
 {nl.join(unpack_pose)}
 {nl.join(_unpack(q_names, "q"))}
-{nl.join(qp_lines)}
+{pre}{nl.join(qp_lines)}
 ''', ops
+
+
+_ELIMINATION_DOC = {
+    "symbolic": "Accelerations and multipliers in closed form (symbolic elimination of the multipliers).",
+    "numeric": "Multipliers eliminated numerically: the right-hand side solves [[M, -A^T], [A, 0]] [q_ddot, lambda]\n"
+               "= [f, -c] at every call by an unrolled L D L^T of the reduced mass matrix (derivation/kkt_emit.py;\n"
+               "engine.NUMERIC_FROM says when).",
+}
 
 
 def module_source(system, fidelity: str, frequencies=None) -> str:
@@ -393,15 +407,23 @@ def module_source(system, fidelity: str, frequencies=None) -> str:
     n, npose = len(state), len(pose)
     rates = system.state_rhs()
     timed = system.time_dependent
+    elimination = "symbolic" if system.kkt is None else "numeric"
     args = "s, p, t" if timed else "s, p"  # the functions besides the right-hand side
     allowed = set(system.state) | set(spec.params) | ({names.t} if timed else set())
     pose_exprs = [system.pose_rates[q] for q in spec.pose]
     pose_lines, pose_ops = _cse_block(pose_exprs, [f"out[{i}]" for i in range(npose)], allowed | set(spec.pose))
-    rhs_src, rhs_ops = _rhs_source(system.state, spec.params, rates, spec.pose, pose_exprs)
+    if system.kkt is not None:  # multipliers eliminated numerically (derivation/kkt_emit.py)
+        from . import kkt_emit
+        rhs_src, rhs_ops = kkt_emit.rhs_source(system)
+    else:
+        rhs_src, rhs_ops = _rhs_source(system.state, spec.params, rates, spec.pose, pose_exprs)
     energy_pose = bool(system.energy.free_symbols & set(spec.pose))  # a potential of a cyclic coordinate
     energy_lines, energy_ops = _cse_block([system.energy], ["energy"], allowed | set(spec.pose))
     lam = list(system.multipliers)
-    lam_lines, lam_ops = _cse_block(lam, [f"out[{i}]" for i in range(len(lam))], allowed)
+    lam_lines, lam_ops = (kkt_emit.multiplier_lines(system, allowed) if system.kkt is not None else
+                          _cse_block(lam, [f"out[{i}]" for i in range(len(lam))], allowed))
+    jacobians = (kkt_emit.jacobian_source(system, allowed) if system.kkt is not None
+                 else jacobian.block_source(rates, system.state, spec.params))
     labels = ", ".join(spec.multiplier_labels)
     digest = input_hash(spec, fidelity)
     fid_doc = FIDELITIES[fidelity].doc
@@ -449,6 +471,7 @@ def module_source(system, fidelity: str, frequencies=None) -> str:
 GENERATED FILE -- DO NOT EDIT BY HAND.  {regenerate_hint(spec)}
 Produced by {GENERATOR} from {source_label(spec)} (model {spec.name!r},
 constraints {labels}) through derivation/engine.py{" and derivation/truncation.py" if fidelity != "full" else ""}.
+{_ELIMINATION_DOC[elimination]}
 SymPy {sp.__version__}; input hash sha256:{digest}
 
 {spec.description}
@@ -470,6 +493,8 @@ from numba import njit
 {meta}{_model_metadata(system)}
 INPUT_HASH = {digest!r}
 SYMPY_VERSION = {sp.__version__!r}
+#: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
+ELIMINATION = {elimination!r}
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {dict(rhs_ops, pose_rates=pose_ops, energy=energy_ops, multipliers=lam_ops, **extra_ops)!r}
 
@@ -504,7 +529,7 @@ def multipliers({args}):
 {nl.join(unpack_p)}
 {nl.join(lam_lines)}
     return out
-''' + drawing.module_source(system) + extra_src + jacobian.block_source(rates, system.state, spec.params) \
+''' + drawing.module_source(system) + extra_src + jacobians \
         + steady.block_source(spec.steady, system.state, spec.params)
 
 

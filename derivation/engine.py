@@ -155,6 +155,11 @@ class ModelSpec:
         module of the model (model-specific helpers such as presets).
     17. ``drawing``: an optional :class:`~knifeedge.derive.drawing.Drawing`
         (how ``knifeedge animate`` draws the model).
+    18. ``elimination``: ``"symbolic"`` (the accelerations and multipliers in
+        closed form), ``"numeric"`` (the emitted right-hand side solves
+        ``[[M, -A^T], [A, 0]] [q_ddot, lambda] = [f, -c]`` at every call) or
+        ``"auto"`` (numeric past :data:`NUMERIC_FROM` independent accelerations,
+        see :func:`choose_elimination`).
     """
 
     name: str
@@ -190,6 +195,7 @@ class ModelSpec:
     drawing: object = None
     #: families of steady motions (:class:`~knifeedge.derive.steady.Steady`), written into the modules
     steady: tuple = ()
+    elimination: str = "auto"
     #: ``file:line`` where the spec was constructed (set automatically; named in every error)
     defined_at: str = field(default="", init=False, compare=False)
 
@@ -330,6 +336,11 @@ def _contract_problems(spec: ModelSpec) -> list:
     if clash:
         problems.append(f"the names {clash} are used by more than one coordinate, velocity or parameter")
     problems += names.problems(names_)
+    if spec.elimination not in ("auto", "symbolic", "numeric"):
+        problems.append(f"`elimination` must be 'auto', 'symbolic' or 'numeric', got {spec.elimination!r}")
+    elif spec.elimination == "numeric" and spec.quasi_velocities:
+        problems.append("`elimination='numeric'` does not take `quasi_velocities` (they are written in closed form); "
+                        "drop one of the two")
     texts = {"description": spec.description, "pose_description": spec.pose_description,
              **{f"label {x!r}": x for x in (*spec.constraint_labels, *spec.holonomic_labels)},
              **{f"unit of {k}": u for k, u in spec.units.items()}}
@@ -537,11 +548,15 @@ class ReducedSystem:
     power_input: sp.Expr | None = None
     #: rate of each dependent coordinate kept in the state (``spec.kept``), from the constraints
     dependent_rates: dict = field(default_factory=dict)
+    #: ``None`` (closed form), or the :class:`Kkt` the emitted right-hand side solves at every call; ``explicit``
+    #: then holds the acceleration symbols themselves and ``multipliers`` placeholder symbols
+    kkt: "Kkt | None" = None
 
     @property
     def time_dependent(self) -> bool:
         """The equations depend on the time explicitly (``knifeedge.derive.t``)."""
-        exprs = [*self.explicit, *self.multipliers, self.energy, *self.pose_rates.values(),
+        exprs = [*self.explicit, *self.multipliers, *(self.kkt.exprs() if self.kkt else ()), self.energy,
+                 *self.pose_rates.values(),
                  *self.dependent_rates.values(), *self.spec.holonomic,
                  *([self.power] if self.power is not None else [])]
         return self.power_input is not None or any(sp.sympify(e).has(t) for e in exprs)
@@ -665,6 +680,8 @@ def derive(spec: ModelSpec) -> ReducedSystem:
         zip((spec.accelerations[i] for i in dep), sp.expand(-A_dep_inv * (A_ind * qdd_ind + c)))
     )
 
+    if choose_elimination(spec, len(ind), b) == "numeric":
+        return _numeric_system(spec, at, M, h, A, c, b, dep_vel, A_dep_inv)
     qdd = sp.Matrix(spec.accelerations)
     residual = (M * qdd + h).subs(dep_acc).subs(dep_vel)
     residual = residual.applyfunc(sp.expand)
@@ -729,6 +746,99 @@ def derive(spec: ModelSpec) -> ReducedSystem:
     if spec.quasi_velocities:
         system = _with_quasi_velocities(system, at, dep_vel, dep_acc, general)
     return system
+
+
+#: ``elimination="auto"`` solves the multipliers numerically from this many independent accelerations on (measured
+#: in docs/performance.md, "Numeric elimination of the multipliers": the disk, 3, derives in ~6 s with a closed form
+#: of ~130 operations; the disk with a pendulum, 4, took 193 s and 7,312 operations in closed form)
+NUMERIC_FROM = 4
+
+
+def choose_elimination(spec: ModelSpec, n_independent: int, b: sp.Matrix) -> str:
+    """``"symbolic"`` or ``"numeric"``: ``spec.elimination`` unless ``"auto"``, then by :data:`NUMERIC_FROM`.
+
+    Affine (rheonomic) constraints, quasi-velocities and ``small`` coordinates need the closed form (the power of
+    the constraints, the quasi-velocity rates, the truncated fidelities), so ``"auto"`` keeps them symbolic and
+    ``"numeric"`` is refused.
+    """
+    closed_only = bool(spec.quasi_velocities) or bool(spec.small) or any(e != 0 for e in b)
+    if spec.elimination == "numeric" and closed_only:
+        raise ModelSpecError(spec.error_message(
+            "`elimination='numeric'` does not take affine (rheonomic or holonomic time-dependent) constraints, "
+            "`quasi_velocities` or `small` coordinates (their power, rates and truncated fidelities need the "
+            "closed form); use `elimination='symbolic'`"))
+    if spec.elimination != "auto":
+        return spec.elimination
+    return "numeric" if n_independent >= NUMERIC_FROM and not closed_only else "symbolic"
+
+
+@dataclass
+class Kkt:
+    """The linear system ``[[M, -A^T], [A, 0]] [q_ddot, lambda] = [f, -c]`` in the closed state.
+
+    ``mass`` ``M`` (n x n), ``forcing`` ``f = Q - h`` (n), ``constraint`` ``A`` (m x n) and ``bias``
+    ``c = d(A q_dot + b)/dt - A q_ddot`` (m), the cyclic coordinates at their representative values and the
+    dependent velocities substituted; ``independent``: the indices of the independent accelerations among the n;
+    ``dependent_inverse``: the inverse of the constraint matrix's block of the dependent coordinates.
+    """
+
+    mass: sp.Matrix
+    forcing: sp.Matrix
+    constraint: sp.Matrix
+    bias: sp.Matrix
+    independent: tuple
+    dependent_inverse: sp.Matrix
+
+    def exprs(self) -> list:
+        return [*self.mass, *self.forcing, *self.constraint, *self.bias]
+
+    def matrix(self) -> tuple:
+        """``(K, r)``: the matrix and right-hand side of the system, as SymPy matrices."""
+        n, m = self.mass.rows, self.constraint.rows
+        K = sp.zeros(n + m, n + m)
+        K[:n, :n], K[:n, n:], K[n:, :n] = self.mass, -self.constraint.T, self.constraint
+        return K, sp.Matrix.vstack(self.forcing, -self.bias)
+
+
+def _numeric_system(spec: ModelSpec, at: dict, M, h, A, c, b, dep_vel: dict, A_dep_inv) -> ReducedSystem:
+    """The :class:`ReducedSystem` of ``spec`` with its accelerations and multipliers left to a numeric solve."""
+    variables = list(spec.velocity_state)
+    kkt = Kkt(mass=M.subs(dep_vel), forcing=(-h).subs(dep_vel), constraint=A.subs(dep_vel), bias=c.subs(dep_vel),
+              independent=tuple(spec.coordinates.index(q) for q in spec.independent), dependent_inverse=A_dep_inv)
+    allowed = set(variables) | set(spec.params) | {t}
+    leftover = set().union(*(e.free_symbols for e in kkt.exprs())) - allowed
+    if leftover:
+        raise ModelSpecError(spec.error_message(
+            f"the equations do not close: they still contain {sorted(map(str, leftover))}; the coordinates "
+            f"declared `cyclic` are not all symmetries of the Lagrangian and constraints"))
+    qd = sp.Matrix(spec.velocities)
+    L = spec.lagrangian.subs(at)
+    energy = tidy((sum(v * sp.diff(L, v) for v in qd) - L).subs(dep_vel), variables) + _dropped_potential(spec, at)
+    power = None
+    if spec.dissipative:
+        power = tidy(sp.expand((-(qd.T * generalized_forces(spec).subs(at))[0]).subs(dep_vel)), variables)
+    general = dependent_velocities(spec)
+    lam = sp.Matrix([names.Own(f"_lambda{i}", real=True) for i in range(A.rows)])
+    return ReducedSystem(
+        spec=spec, state=spec.state, accelerations=tuple(spec.accelerations[i] for i in kkt.independent),
+        mass_matrix=sp.eye(len(kkt.independent)),
+        forcing=sp.Matrix([spec.accelerations[i] for i in kkt.independent]),
+        explicit=sp.Matrix([spec.accelerations[i] for i in kkt.independent]),
+        multipliers=lam, multipliers_implicit=lam, energy=energy,
+        pose_rates={q: general.get(spec.velocity_of(q), spec.velocity_of(q)) for q in spec.pose},
+        power=power, power_input=_power_input(spec, L, b, lam, dep_vel, variables),
+        dependent_rates={q: tidy(dep_vel[spec.velocity_of(q)], variables) for q in spec.kept}, kkt=kkt)
+
+
+def kkt_solution(system: ReducedSystem, values: dict) -> tuple:
+    """Independent accelerations and multipliers of a numeric-elimination ``system`` at a point (30 digits)."""
+    K, r = system.kkt.matrix()
+    with mpmath.workdps(30):
+        sol = mpmath.lu_solve(mpmath.matrix(K.subs(values).evalf(30).tolist()),
+                              mpmath.matrix(r.subs(values).evalf(30).tolist()))
+        sol = [sp.Float(v, 30) for v in sol]
+    n = system.kkt.mass.rows
+    return [sol[i] for i in system.kkt.independent], sol[n:]
 
 
 def _dropped_potential(spec: ModelSpec, at: dict) -> sp.Expr:
@@ -876,8 +986,11 @@ def check_symmetry(system: ReducedSystem, seed: int = 0, tol: float = 1e-20) -> 
         acc, lam, pt = _quasi_point(spec, pt)
     else:
         acc, lam = unreduced_accelerations(spec, pt)
-    red_acc = [e.subs(pt).evalf(30) for e in system.explicit]
-    red_lam = [e.subs(pt).evalf(30) for e in system.multipliers]
+    if system.kkt is not None:  # the reduced state at the general pose: the cyclic coordinates at their values
+        red_acc, red_lam = kkt_solution(system, {k: v for k, v in pt.items() if k not in spec.cyclic})
+    else:
+        red_acc = [e.subs(pt).evalf(30) for e in system.explicit]
+        red_lam = [e.subs(pt).evalf(30) for e in system.multipliers]
     if not getattr(spec, "multipliers_invariant", True):  # e.g. forces in the table's axes, the heading cyclic
         lam, red_lam = [], []
     err = max(abs(a - b) for a, b in zip(acc + lam, red_acc + red_lam))

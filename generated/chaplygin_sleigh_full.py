@@ -3,7 +3,8 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/sleigh.py (model 'chaplygin_sleigh',
 constraints knife_edge) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:de1540f6d1a2ba9a255909015d34f8cbb08bacf495e0a1f66d45a1ff1e33d12a
+Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
+SymPy 1.14.0; input hash sha256:e5b9d0d78dfc4d49d0a1d1ad7ca1123308ed5c8f275dc59f088c1053d75a843f
 
 Chaplygin sleigh: a rigid body on the plane with a knife edge at its rear contact point (x, y) that forbids sideways motion; heading phi, centre of mass at distance a ahead of the contact, radius of gyration k about the centre of mass; v is the speed along the axis.
 
@@ -59,8 +60,10 @@ MULTIPLIER_NAMES = ('knife_edge',)
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'de1540f6d1a2ba9a255909015d34f8cbb08bacf495e0a1f66d45a1ff1e33d12a'
+INPUT_HASH = 'e5b9d0d78dfc4d49d0a1d1ad7ca1123308ed5c8f275dc59f088c1053d75a843f'
 SYMPY_VERSION = '1.14.0'
+#: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
+ELIMINATION = 'symbolic'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 9, 'constants': 5, 'rhs_q': 4, 'rhs_pose': 13, 'rhs_pose_q': 8, 'pose_rates': 4, 'energy': 9, 'multipliers': 6}
 
@@ -329,4 +332,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '40ff1883cfabb81612da7ea97855b00f93e7415f4ecd8d4f9183b0e7ead8aad4'
+MODULE_SHA256 = 'a1db01fc892a5c91e5f8e1c88e0b03c3d035fa97b00ab5244071f87f7a5bccb0'

@@ -3,7 +3,8 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk_damped',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:64a78569826f1ccb0e97004561dca449de1208d83f8906d31e52dc605551af4d
+Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
+SymPy 1.14.0; input hash sha256:6e95b2aeed4ed4b1aaca40da86328e07c5ec2a858895a2f53b4f51e77f1a130e
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table, its rotation resisted by a viscous torque -c r^2 omega per unit mass (Rayleigh function c r^2 |omega|^2/2).
 
@@ -63,8 +64,10 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = True
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '64a78569826f1ccb0e97004561dca449de1208d83f8906d31e52dc605551af4d'
+INPUT_HASH = '6e95b2aeed4ed4b1aaca40da86328e07c5ec2a858895a2f53b4f51e77f1a130e'
 SYMPY_VERSION = '1.14.0'
+#: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
+ELIMINATION = 'symbolic'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 182, 'constants': 20, 'rhs_q': 178, 'rhs_pose': 186, 'rhs_pose_q': 183, 'pose_rates': 5, 'energy': 45, 'multipliers': 195, 'power_dissipated': 19}
 
@@ -887,4 +890,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '75cd51298eaa9fa87da8bc04136292bbc4ec163fce163324d7d0305bccf2ff95'
+MODULE_SHA256 = '157920a01b2b5e39076e577d5cac1f8df9f1f3a52d930b9b08e8fcefd947679d'

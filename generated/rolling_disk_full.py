@@ -3,7 +3,8 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:6e22cec3884499ff8b3ecf96ec76b730c2c9c3a1692f57b14cee0aadfdb74a42
+Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
+SymPy 1.14.0; input hash sha256:83df3432a916626d162c1f5de7a2b9e658d9363b7e072e8b8f746bfdfac911fa
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table: heading q1, lean q2 from the vertical, rotation q3 about the axle, contact point (x, y).
 
@@ -62,8 +63,10 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '6e22cec3884499ff8b3ecf96ec76b730c2c9c3a1692f57b14cee0aadfdb74a42'
+INPUT_HASH = '83df3432a916626d162c1f5de7a2b9e658d9363b7e072e8b8f746bfdfac911fa'
 SYMPY_VERSION = '1.14.0'
+#: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
+ELIMINATION = 'symbolic'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 129, 'constants': 7, 'rhs_q': 125, 'rhs_pose': 134, 'rhs_pose_q': 130, 'pose_rates': 5, 'energy': 45, 'multipliers': 113}
 
@@ -670,4 +673,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'f8eb66a7c8e2c5c792fb0fa98b283047011c19ddb7ba2010ae445a01660c9171'
+MODULE_SHA256 = 'b44a45a8bcf5278fc60cdae18b91e69f107fa25c380a7fd38c0e65f5cc9d47ec'

@@ -3,7 +3,8 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:e9165a1ac89b447a746453eecb4e4173253c09257fb18164a6ce952cf6272e9f
+Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
+SymPy 1.14.0; input hash sha256:99a6755304119c439c4afe69c7b0da9d2f37e7ce903c464c6595ce7c534556f9
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -62,8 +63,10 @@ MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'e9165a1ac89b447a746453eecb4e4173253c09257fb18164a6ce952cf6272e9f'
+INPUT_HASH = '99a6755304119c439c4afe69c7b0da9d2f37e7ce903c464c6595ce7c534556f9'
 SYMPY_VERSION = '1.14.0'
+#: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
+ELIMINATION = 'symbolic'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 20, 'constants': 13, 'rhs_q': 10, 'rhs_pose': 27, 'rhs_pose_q': 17, 'pose_rates': 7, 'energy': 23, 'multipliers': 7, 'frequencies': 5}
 
@@ -424,4 +427,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '0d1d2b1c3a455cade4b05431b0ceba75e917556c4926f3bb2d623d64da5bdaf8'
+MODULE_SHA256 = '537e5f9e53e1e57e3a780c786deb4a5c772e0e275cfe2d970e53b87c2a004151'

@@ -3,7 +3,8 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py and derivation/truncation.py.
-SymPy 1.14.0; input hash sha256:3898d267d65a52a34fd3445eb3a5bd6bf5d1a1167de37057c8bc372fb2f38fde
+Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
+SymPy 1.14.0; input hash sha256:344f6a8d77e7435fb4fc75940dc4886ee221eed566b53441be479027fd9778df
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -62,8 +63,10 @@ MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '3898d267d65a52a34fd3445eb3a5bd6bf5d1a1167de37057c8bc372fb2f38fde'
+INPUT_HASH = '344f6a8d77e7435fb4fc75940dc4886ee221eed566b53441be479027fd9778df'
 SYMPY_VERSION = '1.14.0'
+#: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
+ELIMINATION = 'symbolic'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 11, 'constants': 7, 'rhs_q': 7, 'rhs_pose': 17, 'rhs_pose_q': 14, 'pose_rates': 7, 'energy': 23, 'multipliers': 7, 'frequencies': 5}
 
@@ -406,4 +409,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '4eb842ba1c3aad44f64b6d4de49ff7c83ec1f162ebc6a72b1cdcaad1fd20981a'
+MODULE_SHA256 = 'e513d35cedd6b490718823c3b2af9dcab72248fc44b0a2d7a289f0f983c30b6c'

@@ -3,7 +3,8 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py.
-SymPy 1.14.0; input hash sha256:74d08947957ab207be1cd09317d2d9915f82c97395a9072cd122f89d151ee392
+Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
+SymPy 1.14.0; input hash sha256:413602c4193d3d61b887277d3363fc9134dd57cb7bce52d2acc1a1f1d145b0aa
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -65,8 +66,10 @@ MULTIPLIER_NAMES = ('Const22', 'Const23')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '74d08947957ab207be1cd09317d2d9915f82c97395a9072cd122f89d151ee392'
+INPUT_HASH = '413602c4193d3d61b887277d3363fc9134dd57cb7bce52d2acc1a1f1d145b0aa'
 SYMPY_VERSION = '1.14.0'
+#: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
+ELIMINATION = 'symbolic'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 152, 'constants': 107, 'rhs_q': 65, 'rhs_pose': 166, 'rhs_pose_q': 76, 'pose_rates': 13, 'energy': 58, 'multipliers': 166, 'frequencies': 12}
 
@@ -917,4 +920,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'b4981f7c4a7baa25a2873ace0a16c030330a56a39267ab20281c6fa528e7a7f2'
+MODULE_SHA256 = '1569d233e89a205c196d7c81ed14e89cee971997bd8a78d57cf43edd72bfbb76'

@@ -3,7 +3,8 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py and derivation/truncation.py.
-SymPy 1.14.0; input hash sha256:700a24e4c3a8a2b16d95e7c5ecab8e0d832dec48baccb4162ac41ce824c73834
+Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
+SymPy 1.14.0; input hash sha256:f8801b8cdc545cfde6c9b5ac900635340b3e2fa072a711ea83b6a820c808066c
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -65,8 +66,10 @@ MULTIPLIER_NAMES = ('Const22', 'Const23')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '700a24e4c3a8a2b16d95e7c5ecab8e0d832dec48baccb4162ac41ce824c73834'
+INPUT_HASH = 'f8801b8cdc545cfde6c9b5ac900635340b3e2fa072a711ea83b6a820c808066c'
 SYMPY_VERSION = '1.14.0'
+#: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
+ELIMINATION = 'symbolic'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 80, 'constants': 52, 'rhs_q': 35, 'rhs_pose': 91, 'rhs_pose_q': 46, 'pose_rates': 13, 'energy': 58, 'multipliers': 56, 'frequencies': 12}
 
@@ -702,4 +705,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'c24e13d61122555bae5b1439689e67f622365fd3148c2366cdbfac00e7c18eac'
+MODULE_SHA256 = '6b28a9f509655c0287194d94d30cba4919b9eb00091df3f633a1da52520d6a26'
