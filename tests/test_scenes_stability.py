@@ -1,0 +1,82 @@
+"""Scenes built on the linear stability and the Lyapunov exponents (issue 24): their numbers against independent
+references."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import knifeedge as ke
+
+_RESULTS: dict = {}
+
+
+def result(name):
+    if name not in _RESULTS:
+        _RESULTS[name] = ke.scene(name)()
+    return _RESULTS[name]
+
+
+def test_celt_stability_slopes_are_moffatt_tokiedas():
+    """Moffatt & Tokieda (Nonlinearity 21 (2008) T1): at a slow spin the pitch mode grows at lambda Omega and the
+    roll mode at -mu Omega; lambda, mu from their closed forms (celt_amplitude.moffatt_tokieda)."""
+    r = result("celt_stability")
+    assert set(r.scene.reports) <= set(r.numbers)
+    amp = ke.load("celt", "amplitude")
+    for key, preset in (("kl", "kane_levinson_1982"), ("schoemer", "schoemer")):
+        lam, mu = amp.module.moffatt_tokieda(amp.preset(preset, sigma=0.0))[:2]
+        assert r.numbers[f"slope_pitch_{key}"] == pytest.approx(lam, rel=1e-7)
+        assert r.numbers[f"slope_roll_{key}"] == pytest.approx(-mu, rel=1e-7)
+
+
+def test_celt_stability_boundaries():
+    """Kane-Levinson undamped: unstable at every spin (the slopes lambda, -mu have opposite signs at small spin
+    and neither pair crosses); Schoemer undamped: one boundary, at 1.80084 rad/s (the full rigid body's, slow
+    test test_stability.py::test_celt_boundaries_agree_between_the_full_and_the_small_tilt_derivations)."""
+    r = result("celt_stability")
+    assert r.numbers["boundaries_kl_undamped"] == []
+    assert r.numbers["boundaries_schoemer_undamped"] == pytest.approx([1.8008390118758], rel=1e-10)
+    assert all(v == "supports" for _, v, _ in r.claims), r.claims
+
+
+def _by_frequency(eigenvalues):
+    """Each row sorted by the imaginary part (distinct here; the real parts are ~1e-18 noise at zero spin)."""
+    return np.take_along_axis(eigenvalues, np.argsort(eigenvalues.imag, axis=1), axis=1)
+
+
+@pytest.mark.slow  # the full celt's Jacobian compiles in 10-20 s cold
+def test_celt_stability_small_tilt_equals_the_full_rigid_body():
+    """The linearization at an upright spin is exact at first order in the tilts: the small-tilt derivation
+    (derivation/rigid_small.py) and the full rigid body (derivation/rigid.py) give the same eigenvalues and the
+    same boundaries, damped and undamped."""
+    r = result("celt_stability")
+    full = ke.load("celt", "full")
+    s = r.scene.settings
+    for key, preset in (("kl", "kane_levinson_1982"), ("schoemer", "schoemer")):
+        for damped in (False, True):
+            label = f"{key}_{'damped' if damped else 'undamped'}"
+            p = full.preset(preset, sigma=s["sigma"][key] if damped else 0.0)
+            spins = r.data["spins"][::20]
+            table = ke.stability(full, p, "steady_spin", spins)
+            np.testing.assert_allclose(_by_frequency(table.eigenvalues), _by_frequency(r.data[f"eig_{label}"][::20]),
+                                       rtol=1e-9, atol=1e-12)
+            found = ke.stability_boundaries(full, p, "steady_spin", s["boundary_interval"])
+            np.testing.assert_allclose(found, r.numbers[f"boundaries_{label}"], rtol=1e-9)
+
+
+@pytest.mark.slow  # the two-mode Lyapunov kernel compiles in ~13 s cold, and five runs of 9000 time units
+def test_predictability_scene():
+    """The two-mode edge of Fig. Numerical2: its largest exponent falls like ln T / T (zero, as for an integrable
+    flow: tests/test_lyapunov.py checks the same law on the rolling disk), so its horizon exceeds the run; the
+    first reversal moves with the initial state (a 1e-8 perturbation of theta1 moves it 1e-10, above the 5e-12
+    floor of one-ulp runs), the later ones by the same amount whatever the perturbation (the integration's
+    floor)."""
+    r = result("predictability")
+    n = r.numbers
+    assert set(r.scene.reports) <= set(n)
+    assert 0 < n["lambda_max"] < 1e-4 and n["lambda_max"] < n["lambda_max_at_run_end"] / 3
+    assert n["horizon"] > r.scene.run.t_span[1]
+    assert n["fixed_by_horizon"] == [1, 2, 3] and n["fixed_measured"][:1] == [1]
+    assert n["probe_shift"][0] > 10 * n["reversal_spread"][0]
+    assert all(p < 10 * s for p, s in zip(n["probe_shift"][1:], n["reversal_spread"][1:]))
+    verdicts = [v for _, v, _ in r.claims]
+    assert verdicts == ["supports", "contradicts", "supports"]
