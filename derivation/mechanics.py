@@ -302,7 +302,14 @@ def _speeds_of_rates(kdes: list, q: tuple, u: tuple) -> dict:
     kdes = sp.Matrix(kdes)
     K = kdes.jacobian(u)
     rest = kdes.xreplace(dict.fromkeys(u, 0))
-    if K.has(*u) or kdes.jacobian(u).shape[0] != len(u):
+    if len(kdes) < len(u):
+        free = [s for j, s in enumerate(u) if all(e == 0 for e in K.col(j))]
+        raise MechanicsConversionError(
+            f"the speeds {free or u} have no kinematic differential equation ({len(kdes)} equations for {len(u)} "
+            f"speeds): their coordinates (e.g. a wheel's rotation angle) are left out, and a Lagrangian needs "
+            f"them. Add each such coordinate with its equation `q.diff() - u` (and, if a contact point is set "
+            f"fixed, its coordinates on the ground with the rolling condition as velocity constraints)")
+    if K.has(*u) or K.shape[0] != len(u):
         raise MechanicsConversionError("the kinematic differential equations must be linear in the generalized "
                                        "speeds, one per speed")
     if K.is_diagonal():
@@ -582,6 +589,15 @@ def _refuse_specified(e: sp.Expr) -> sp.Expr:
     return e.xreplace({_t: _engine_t})
 
 
+def _exact(e: sp.Expr) -> sp.Expr:
+    """``e`` with its decimal numbers (``g = 9.8``) as the exact decimals they print as.
+
+    A float carries 15 digits into every expression it meets; the engine's checks compare the reduced and
+    unreduced equations to 1e-20 and would see its rounding as a broken symmetry.
+    """
+    return e.xreplace({f: sp.Rational(str(f)) for f in e.atoms(sp.Float)})
+
+
 def _tidy(e: sp.Expr, velocities) -> sp.Expr:
     """``e`` as a polynomial in the rates whose coefficients (functions of the coordinates) are simplified."""
     e = sp.expand(e)
@@ -655,7 +671,7 @@ def from_mechanics(method_or_system, *, name: str, cyclic: dict, units: dict | N
     else:
         T, V, forces, checks = _body_terms(src)
         lagrangian = T - V
-    plain = lambda e: _refuse_specified(names.plain(sp.sympify(e).xreplace(src.u_of_qdot)))  # noqa: E731
+    plain = lambda e: _exact(_refuse_specified(names.plain(sp.sympify(e).xreplace(src.u_of_qdot))))  # noqa: E731
     lagrangian = _tidy(plain(lagrangian), names.velocities)
     forces = [_tidy(plain(f), names.velocities) for f in forces]
     constraints = [_tidy(plain(c), names.velocities) for c in src.constraints]
