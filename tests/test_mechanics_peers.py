@@ -298,3 +298,22 @@ def test_pulsing_pendulum_runs_as_its_authors_equations(derived):
                                atol=1e-9)
     assert abs(m.holonomic_residual(r.y[:, -1], p, r.t[-1])[0]) < 1e-9
     assert np.ptp(r.y[m.state_names.index("q2")]) > 0.5  # it swung
+
+
+# ---------------------------------------------------------------- SymPy's test_kane3.py Whipple bicycle
+
+def test_sympys_whipple_bicycle_as_written_is_refused_with_the_reason():
+    """test_kane3.py's bicycle fixes the rear contact point in N and leaves the wheels' angles out (u3, u6
+    have no coordinates): its velocities already obey the rolling constraints, so there is no Lagrangian
+    to build from it.  The model is run as SymPy's own test builds it (its source, up to the benchmark's
+    numbers); ``tests/models/whipple_bicycle.py`` is the same bicycle with those coordinates."""
+    import inspect
+    import textwrap
+
+    from sympy.physics.mechanics.tests import test_kane3
+    body = textwrap.dedent(inspect.getsource(test_kane3.test_bicycle).split("\n", 2)[2])
+    namespace = {}
+    exec("from sympy import *\nfrom sympy.physics.mechanics import *\n" + body[:body.index("PaperRadRear")],
+         namespace)
+    with pytest.raises(MechanicsConversionError, match=r"speeds \[u3\(t\), u6\(t\)\] have no kinematic"):
+        from_mechanics(namespace["KM"], name="whipple", cyclic={namespace["q1"]: 0})
