@@ -602,10 +602,21 @@ def _tidy(e: sp.Expr, velocities) -> sp.Expr:
     """``e`` as a polynomial in the rates whose coefficients (functions of the coordinates) are simplified."""
     e = sp.expand(e)
     if not e.free_symbols & set(velocities):
-        return sp.factor(sp.trigsimp(e))
+        return _tidy_coefficient(e)
     poly = sp.Poly(e, *velocities)
-    return sum((sp.factor(sp.trigsimp(sp.factor(c))) * sp.Mul(*(v**k for v, k in zip(velocities, m)))
+    return sum((_tidy_coefficient(c) * sp.Mul(*(v**k for v, k in zip(velocities, m)))
                 for m, c in poly.terms()), sp.S.Zero)
+
+
+#: coefficients larger than this (``count_ops``) are left expanded: factoring the Whipple bicycle's
+#: (14,843 operations in its Lagrangian) ran for more than 3 CPU minutes without finishing one term
+TIDY_OPS = 400
+
+
+def _tidy_coefficient(c: sp.Expr) -> sp.Expr:
+    if sp.count_ops(c) > TIDY_OPS:
+        return c
+    return sp.factor(sp.trigsimp(sp.factor(c)))
 
 
 def _user_location() -> str:
