@@ -578,7 +578,10 @@ def _source(method_or_system) -> _Source:
 
 
 def _refuse_specified(e: sp.Expr) -> sp.Expr:
-    """``e`` (coordinates already plain) with SymPy's time as the engine's :data:`~.names.t`; specified quantities refused."""
+    """``e`` (coordinates already plain) with SymPy's time as the engine's :data:`~.names.t`.
+
+    Specified quantities (functions of time that are neither coordinates nor speeds) are refused.
+    """
     specified = {f for f in e.atoms(AppliedUndef) if f.has(_t)} | {d.expr for d in e.atoms(sp.Derivative)}
     if specified:
         raise MechanicsConversionError(
