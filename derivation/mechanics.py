@@ -33,17 +33,23 @@ What is read from each source
 
 The velocity constraints are expressed in the coordinates' rates (the
 generalized speeds replaced through the kinematic differential equations);
-the dependent coordinates are those whose rates the dependent speeds are
-(``u_dep = q_dot``), else chosen among the cyclic coordinates.
+they may be affine (terms free of the rates) and hold time.  SymPy's time
+becomes the engine's :data:`~.names.t`.  Configuration constraints
+(``hol_coneqs``; KanesMethod's ``configuration_constraints`` with its
+``q_dependent``; a System's ``holonomic_constraints``) become the spec's
+``holonomic``: the engine differentiates them itself, so of a KanesMethod's
+velocity constraints (which include their time derivatives) as many are
+dropped as are implied by them (checked by rank at a point of the constraint
+manifold).  The dependent coordinates are those whose rates the dependent
+speeds are (``u_dep = q_dot``), else chosen among the cyclic coordinates;
+one per configuration constraint: the author's ``q_dependent``, else a
+non-cyclic coordinate (the last ones first) whose block is nonsingular.
 
 What is refused (with the reason)
 ---------------------------------
-Holonomic (configuration) constraints, explicit time dependence, specified
-quantities (dynamic symbols that are neither coordinates nor speeds), velocity
-constraints that are not homogeneous in the rates: the engine takes an
-autonomous Lagrangian with linear homogeneous velocity constraints.  Each
-refusal is a :class:`MechanicsConversionError` (a ``ValueError``) that says
-what the engine would need.
+Specified quantities (dynamic symbols that are neither coordinates nor
+speeds): they need the engine's ``inputs``, not yet there.  Each refusal is a
+:class:`MechanicsConversionError` (a ``ValueError``) that says why.
 """
 from __future__ import annotations
 
@@ -52,12 +58,14 @@ import random
 import sys
 from dataclasses import dataclass, field
 
+import numpy as np
 import sympy as sp
 from sympy.core.function import AppliedUndef
 from sympy.physics.mechanics import (KanesMethod, LagrangesMethod, Particle, Point, ReferenceFrame, RigidBody,
                                      dynamicsymbols)
 
 from .engine import ModelSpec
+from .names import t as _engine_t
 
 _t = dynamicsymbols._t
 
@@ -249,25 +257,19 @@ class _Source:
     forces: tuple = ()         # generalized forces (LagrangesMethod)
     potential: sp.Expr = sp.S.Zero
     fixed_point: Point | None = None
-
-
-def _refuse_holonomic(what: str):
-    raise MechanicsConversionError(
-        f"the model has holonomic (configuration) constraints ({what}); knifeedge's engine takes velocity "
-        f"constraints only: holonomic constraints need the engine's support for them (not yet there). Write the "
-        f"model in independent coordinates (solve the configuration constraints by hand) to convert it now")
+    holonomic: tuple = ()      # configuration constraints f(q, t) = 0 (dynamic symbols)
+    dependent_coordinates: tuple = ()  # KanesMethod's q_dependent, one per configuration constraint
 
 
 def _from_lagrange(lm: LagrangesMethod) -> _Source:
     src = _Source()
     src.kind = "LagrangesMethod"
-    if lm._hol_coneqs:
-        _refuse_holonomic(f"`hol_coneqs` {list(lm._hol_coneqs)}")
     src.frame = lm.inertial
     src.q = tuple(lm.q)
     src.u_of_qdot = {}
     src.bodies, src.loads = (), ()
-    src.constraints = tuple(lm.coneqs)
+    src.holonomic = tuple(lm._hol_coneqs)
+    src.constraints = tuple(lm.coneqs)[len(src.holonomic):]  # coneqs: d(hol_coneqs)/dt, then nonhol_coneqs
     src.dependent_speeds = ()
     src.lagrangian = lm._L[0]
     qdots = [q.diff(_t) for q in src.q]
@@ -300,7 +302,14 @@ def _speeds_of_rates(kdes: list, q: tuple, u: tuple) -> dict:
     kdes = sp.Matrix(kdes)
     K = kdes.jacobian(u)
     rest = kdes.xreplace(dict.fromkeys(u, 0))
-    if K.has(*u) or kdes.jacobian(u).shape[0] != len(u):
+    if len(kdes) < len(u):
+        free = [s for j, s in enumerate(u) if all(e == 0 for e in K.col(j))]
+        raise MechanicsConversionError(
+            f"the speeds {free or u} have no kinematic differential equation ({len(kdes)} equations for {len(u)} "
+            f"speeds): their coordinates (e.g. a wheel's rotation angle) are left out, and a Lagrangian needs "
+            f"them. Add each such coordinate with its equation `q.diff() - u` (and, if a contact point is set "
+            f"fixed, its coordinates on the ground with the rolling condition as velocity constraints)")
+    if K.has(*u) or K.shape[0] != len(u):
         raise MechanicsConversionError("the kinematic differential equations must be linear in the generalized "
                                        "speeds, one per speed")
     if K.is_diagonal():
@@ -313,8 +322,7 @@ def _speeds_of_rates(kdes: list, q: tuple, u: tuple) -> dict:
 def _from_kane(km: KanesMethod) -> _Source:
     src = _Source()
     src.kind = "KanesMethod"
-    if km._qdep or len(km._f_h):
-        _refuse_holonomic(f"dependent coordinates {list(km._qdep)} with configuration constraints {list(km._f_h)}")
+    src.holonomic, src.dependent_coordinates = tuple(km._f_h), tuple(km._qdep)
     src.frame = km._inertial
     src.q = tuple(km.q)
     kdes = km._k_kqdot_implicit * sp.Matrix(src.q).diff(_t) + km._k_ku_implicit * km.u + km._f_k_implicit
@@ -325,19 +333,13 @@ def _from_kane(km: KanesMethod) -> _Source:
     src.loads = tuple(km.loads or ())
     constraints = []
     if len(km._k_nh):
-        if any(e != 0 for e in km._f_nh):
-            raise MechanicsConversionError(
-                f"the velocity constraints have terms free of the generalized speeds {list(km._f_nh)}; the engine "
-                f"takes constraints homogeneous in the rates (no prescribed motion, no explicit time)")
-        constraints = list(km._k_nh * km.u)
+        constraints = list(km._k_nh * km.u + km._f_nh)
     src.constraints = tuple(constraints)
     src.dependent_speeds = tuple(km._udep)
     return src
 
 
 def _from_system(system) -> _Source:
-    if len(system.holonomic_constraints):
-        _refuse_holonomic(f"`holonomic_constraints` {list(system.holonomic_constraints)}")
     if system.eom_method is None:
         system.form_eoms()
     kane = system.eom_method
@@ -419,6 +421,7 @@ def _check_velocities(src: _Source, names: _Names, checks: list, constraints: li
     for trial in range(2):
         pt = {s: sp.Float(rng.uniform(-1.0, 1.0), 30) for s in names.coordinates + tuple(ind_rates)}
         pt.update({p: sp.Float(rng.uniform(0.5, 1.5), 30) for p in params})
+        pt[_engine_t] = pt[_t] = sp.Float(rng.uniform(0.0, 1.0), 30)
         if dep_rates:
             A = sp.Matrix(constraints).jacobian(dep_rates)
             b = sp.Matrix(constraints).xreplace(dict.fromkeys(dep_rates, 0))
@@ -441,10 +444,11 @@ def _check_velocities(src: _Source, names: _Names, checks: list, constraints: li
 # ---------------------------------------------------------------- dependent coordinates
 
 
-def _choose_dependent(constraints: list, names: _Names, cyclic: set, given, dependent_speeds, src) -> tuple:
+def _choose_dependent(constraints: list, names: _Names, cyclic: set, given, dependent_speeds, src,
+                      exclude=frozenset()) -> tuple:
     m = len(constraints)
     if given is not None:
-        return tuple(names.key(q) if not isinstance(q, str) else sp.Symbol(q, real=True) for q in given)
+        return tuple(_coordinate(q, names) for q in given)
     if m == 0:
         return ()
     by_speed = []
@@ -452,7 +456,8 @@ def _choose_dependent(constraints: list, names: _Names, cyclic: set, given, depe
         rate = names.plain(src.u_of_qdot.get(u, sp.S.Zero))
         hit = [q for q, v in zip(names.coordinates, names.velocities) if rate == v]
         by_speed.append(hit[0] if hit else None)
-    if by_speed and None not in by_speed:
+    by_speed = [q for q in by_speed if q not in exclude]
+    if len(by_speed) == m and None not in by_speed:
         return tuple(by_speed)
     A = sp.Matrix(constraints).jacobian(names.velocities)
     rng = random.Random(0)
@@ -474,6 +479,86 @@ def _choose_dependent(constraints: list, names: _Names, cyclic: set, given, depe
     return best
 
 
+def _coordinate(q, names: _Names):
+    return names.key(q) if not isinstance(q, str) else sp.Symbol(q, real=True)
+
+
+def _rate_of(f: sp.Expr, names: _Names) -> sp.Expr:
+    """``df/dt`` along the motion: ``df/dq q_dot + df/dt`` (as :attr:`ModelSpec.velocity_constraints` forms it)."""
+    return sum((sp.diff(f, q) * v for q, v in zip(names.coordinates, names.velocities)), sp.diff(f, _engine_t))
+
+
+def _holonomic_dependent(holonomic: list, names: _Names, src, given, n_velocity: int, cyclic: set) -> tuple:
+    """One coordinate per configuration constraint: given (after the velocity constraints' ones), the author's
+    ``q_dependent``, else the last non-cyclic coordinates whose block of ``df/dq`` is nonsingular."""
+    h = len(holonomic)
+    if given is not None:
+        given = tuple(given)
+        return tuple(_coordinate(q, names) for q in given[len(given) - h:])
+    if len(src.dependent_coordinates) == h:
+        return tuple(names.plain(q) for q in src.dependent_coordinates)
+    J = sp.Matrix(holonomic).jacobian(names.coordinates)
+    rng = random.Random(0)
+    pt = {s: rng.uniform(0.3, 1.2) for s in J.free_symbols}
+    candidates = [q for q in reversed(names.coordinates) if q not in cyclic]
+    for combo in itertools.combinations(candidates, h):
+        block = J.extract(list(range(h)), [names.coordinates.index(q) for q in combo])
+        if abs(block.xreplace(pt).evalf().det()) > 1e-9:
+            return tuple(reversed(combo))
+    raise MechanicsConversionError(
+        f"no choice of {h} non-cyclic coordinates is fixed by the configuration constraints {holonomic}; give "
+        f"`dependent` (one coordinate per velocity constraint, then one per configuration constraint)")
+
+
+def _manifold_point(holonomic: list, dep: tuple, names: _Names, params: set, seed: int = 2) -> dict:
+    """A point with every configuration constraint satisfied (the dependent coordinates solved by Newton)."""
+    rng = random.Random(seed)
+    for _ in range(20):
+        pt = {s: sp.Float(rng.uniform(0.5, 1.5), 30) for s in params}
+        pt[_engine_t] = sp.Float(rng.uniform(0, 1), 30)
+        pt.update({q: sp.Float(rng.uniform(-0.5, 0.5), 30) for q in names.coordinates if q not in dep})
+        pt.update({v: sp.Float(rng.uniform(-1, 1), 30) for v in names.velocities})
+        try:
+            sol = sp.nsolve([f.xreplace(pt) for f in holonomic], list(dep), [rng.uniform(-0.5, 0.5) for _ in dep],
+                            prec=30)
+        except (ValueError, ZeroDivisionError, TypeError):
+            continue
+        pt.update(zip(dep, sol))
+        return pt
+    raise MechanicsConversionError(f"found no configuration satisfying the configuration constraints {holonomic}")
+
+
+def _nonholonomic_part(constraints: list, holonomic: list, dep_h: tuple, names: _Names, params: set,
+                       kind: str) -> list:
+    """The velocity constraints without those the configuration constraints' rates imply.
+
+    ``KanesMethod`` takes every velocity constraint, the configuration
+    constraints' time derivatives among them; the engine differentiates the
+    configuration constraints itself, so ``h`` of the author's velocity
+    constraints are dropped: the first set whose remainder, together with the
+    derivatives, keeps the full rank at a point on the constraint manifold.
+    """
+    m, h = len(constraints), len(holonomic)
+    if kind == "LagrangesMethod" or m == 0:
+        return list(constraints)
+    keep = m - h
+    if keep < 0:
+        raise MechanicsConversionError(f"{h} configuration constraints but only {m} velocity constraints: the "
+                                       f"{kind}'s velocity constraints must include their time derivatives")
+    pt = _manifold_point(holonomic, dep_h, names, params)
+    A = sp.Matrix(constraints).jacobian(names.velocities).xreplace(pt).evalf(30)
+    H = sp.Matrix([_rate_of(f, names) for f in holonomic]).jacobian(names.velocities).xreplace(pt).evalf(30)
+    full = np.linalg.matrix_rank(np.array(A.col_join(H).tolist(), dtype=float), tol=1e-9)
+    for rows in itertools.combinations(range(m), keep):
+        block = A.extract(list(rows), list(range(A.cols))).col_join(H)
+        if np.linalg.matrix_rank(np.array(block.tolist(), dtype=float), tol=1e-9) == full == m:
+            return [constraints[i] for i in rows]
+    raise MechanicsConversionError(
+        f"the {kind}'s velocity constraints do not contain the time derivatives of its configuration constraints "
+        f"(rank {full} of {m} + {h} at a point of the constraint manifold); state them among the velocity "
+        f"constraints, as KanesMethod expects")
+
+
 # ---------------------------------------------------------------- the conversion
 
 
@@ -492,33 +577,49 @@ def _source(method_or_system) -> _Source:
                     f"got {type(method_or_system).__name__}")
 
 
-def _refuse_leftovers(exprs, names: _Names) -> None:
-    """Explicit time and specified quantities left after the coordinates were replaced: refused."""
-    specified, timed = set(), False
-    for e in exprs:
-        e = sp.sympify(e)
-        specified |= {f for f in e.atoms(AppliedUndef) if f.has(_t)}
-        specified |= {d.expr for d in e.atoms(sp.Derivative)}
-        timed |= _t in e.free_symbols
+def _refuse_specified(e: sp.Expr) -> sp.Expr:
+    """``e`` (coordinates already plain) with SymPy's time as the engine's :data:`~.names.t`.
+
+    Specified quantities (functions of time that are neither coordinates nor speeds) are refused.
+    """
+    specified = {f for f in e.atoms(AppliedUndef) if f.has(_t)} | {d.expr for d in e.atoms(sp.Derivative)}
     if specified:
         raise MechanicsConversionError(
             f"the model has specified quantities {sorted(map(str, specified))} (dynamic symbols that are neither "
-            f"coordinates nor speeds); they need the engine's `inputs` (not yet there). Replace them by constant "
-            f"parameters (plain symbols) to convert the model now")
-    if timed:
-        raise MechanicsConversionError(
-            f"the model depends explicitly on time {_t}; the engine takes autonomous models only (explicit time "
-            f"needs the engine's support for it, not yet there)")
+            f"coordinates nor speeds); they need the engine's `inputs` (not yet there: a run would need their "
+            f"values as functions of time inside the compiled right-hand side). Replace them by constant "
+            f"parameters (plain symbols), or by explicit functions of time, to convert the model now")
+    return e.xreplace({_t: _engine_t})
+
+
+def _exact(e: sp.Expr) -> sp.Expr:
+    """``e`` with its decimal numbers (``g = 9.8``) as the exact decimals they print as.
+
+    A float carries 15 digits into every expression it meets; the engine's checks compare the reduced and
+    unreduced equations to 1e-20 and would see its rounding as a broken symmetry.
+    """
+    return e.xreplace({f: sp.Rational(str(f)) for f in e.atoms(sp.Float)})
 
 
 def _tidy(e: sp.Expr, velocities) -> sp.Expr:
     """``e`` as a polynomial in the rates whose coefficients (functions of the coordinates) are simplified."""
     e = sp.expand(e)
-    if e.has(_t) or not e.free_symbols & set(velocities):
-        return sp.factor(sp.trigsimp(e)) if not e.has(_t) else e
+    if not e.free_symbols & set(velocities):
+        return _tidy_coefficient(e)
     poly = sp.Poly(e, *velocities)
-    return sum((sp.factor(sp.trigsimp(sp.factor(c))) * sp.Mul(*(v**k for v, k in zip(velocities, m)))
+    return sum((_tidy_coefficient(c) * sp.Mul(*(v**k for v, k in zip(velocities, m)))
                 for m, c in poly.terms()), sp.S.Zero)
+
+
+#: coefficients larger than this (``count_ops``) are left expanded: factoring the Whipple bicycle's
+#: (14,843 operations in its Lagrangian) ran for more than 3 CPU minutes without finishing one term
+TIDY_OPS = 400
+
+
+def _tidy_coefficient(c: sp.Expr) -> sp.Expr:
+    if sp.count_ops(c) > TIDY_OPS:
+        return c
+    return sp.factor(sp.trigsimp(sp.factor(c)))
 
 
 def _user_location() -> str:
@@ -553,7 +654,8 @@ def from_mechanics(method_or_system, *, name: str, cyclic: dict, units: dict | N
     units, defaults : as in :class:`ModelSpec`; keys may be dynamic symbols or their derivatives
         (``q(t).diff()`` stands for the state ``q_dot``), symbols or names.
     dependent : the coordinates whose rates the velocity constraints fix (default: those the dependent
-        speeds are the rates of, else a choice among the cyclic coordinates).
+        speeds are the rates of, else a choice among the cyclic coordinates), then one per configuration
+        constraint (default: KanesMethod's ``q_dependent``, else a non-cyclic coordinate).
     params : the parameters in the order of the parameter vector (default: every other symbol, by name).
     description : one paragraph for the generated modules.
     spec_fields : any other :class:`ModelSpec` field (``small``, ``pose``, ``state_order``, ``validity``,
@@ -569,8 +671,8 @@ def from_mechanics(method_or_system, *, name: str, cyclic: dict, units: dict | N
     Raises
     ------
     MechanicsConversionError
-        what cannot be converted, with the reason (holonomic constraints, explicit time, specified
-        quantities, kinematics that already contain unstated constraints).
+        what cannot be converted, with the reason (specified quantities, kinematics that already
+        contain unstated constraints).
     """
     if not isinstance(name, str) or not name.isidentifier():
         raise ValueError(f"`name` must be a Python identifier (it names the generated modules), got {name!r}")
@@ -583,18 +685,28 @@ def from_mechanics(method_or_system, *, name: str, cyclic: dict, units: dict | N
     else:
         T, V, forces, checks = _body_terms(src)
         lagrangian = T - V
-    to_rates = lambda e: _tidy(names.plain(sp.sympify(e).xreplace(src.u_of_qdot)), names.velocities)  # noqa: E731
-    lagrangian = to_rates(lagrangian)
-    forces = [to_rates(f) for f in forces]
-    constraints = [to_rates(c) for c in src.constraints]
-    _refuse_leftovers([lagrangian, *forces, *constraints], names)
+    plain = lambda e: _exact(_refuse_specified(names.plain(sp.sympify(e).xreplace(src.u_of_qdot))))  # noqa: E731
+    lagrangian = _tidy(plain(lagrangian), names.velocities)
+    forces = [_tidy(plain(f), names.velocities) for f in forces]
+    constraints = [_tidy(plain(c), names.velocities) for c in src.constraints]
+    holonomic = [sp.factor(sp.trigsimp(plain(f))) for f in src.holonomic]
     cyclic = {names.key(k) if not isinstance(k, str) else sp.Symbol(k, real=True): v for k, v in cyclic.items()}
-    dependent = _choose_dependent(constraints, names, set(cyclic), dependent, src.dependent_speeds, src)
-    declared = set(names.coordinates) | set(names.velocities)
-    found = set().union(*(e.free_symbols for e in [lagrangian, *forces, *constraints])) - declared
+    declared = set(names.coordinates) | set(names.velocities) | {_engine_t}
+    found = set().union(*(e.free_symbols for e in [lagrangian, *forces, *constraints, *holonomic])) - declared
     params = tuple(params) if params is not None else tuple(sorted(found, key=str))
-    _check_velocities(src, names, checks, constraints, dependent, set(params))
-    if not constraints:
+    all_constraints = list(constraints)
+    if holonomic:
+        dep_h = _holonomic_dependent(holonomic, names, src, dependent, len(constraints), set(cyclic))
+        constraints = _nonholonomic_part(constraints, holonomic, dep_h, names, set(params), src.kind)
+        all_constraints = constraints + [_rate_of(f, names) for f in holonomic]
+        given = None if dependent is None else tuple(dependent)[:len(constraints)]
+        dep_nh = _choose_dependent(constraints, names, set(cyclic) - set(dep_h), given, src.dependent_speeds, src,
+                                   exclude=set(dep_h))
+        dependent = tuple(dep_nh) + tuple(dep_h)
+    else:
+        dependent = _choose_dependent(constraints, names, set(cyclic), dependent, src.dependent_speeds, src)
+    _check_velocities(src, names, checks, all_constraints, dependent, set(params))
+    if not constraints and not holonomic:
         raise MechanicsConversionError(
             f"the {src.kind} states no velocity constraint; knifeedge's engine derives non-holonomic systems and "
             f"needs at least one (a model without constraints is not yet taken). If the system rolls or slides "
@@ -609,6 +721,7 @@ def from_mechanics(method_or_system, *, name: str, cyclic: dict, units: dict | N
         accelerations=names.accelerations,
         lagrangian=lagrangian,
         constraints=tuple(constraints),
+        holonomic=tuple(holonomic),
         dependent=tuple(dependent),
         params=params,
         cyclic=cyclic,

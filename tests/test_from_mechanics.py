@@ -11,6 +11,7 @@ from sympy.physics.mechanics import (KanesMethod, LagrangesMethod, Lagrangian, P
                                      RigidBody, dot, dynamicsymbols, inertia)
 
 from knifeedge.derive import MechanicsConversionError, derive, from_mechanics
+from knifeedge.derive import t as ke_t
 
 t = dynamicsymbols._t
 
@@ -88,29 +89,94 @@ def test_a_model_without_velocity_constraints_is_refused_with_the_reason():
         from_mechanics(lm, name="pendulum", cyclic={})
 
 
-def test_specified_quantities_and_explicit_time_are_refused_with_the_reason():
+def test_specified_quantities_are_refused_with_the_reason():
     f = dynamicsymbols("f")
     km, (x, y, phi, *_) = _sleigh(torque=f)
-    cyclic = {x: 0, y: 0, phi: 0}
     with pytest.raises(MechanicsConversionError, match=r"specified quantities \['f\(t\)'\].*`inputs`"):
-        from_mechanics(km, name="driven", cyclic=cyclic)
-    km, _ = _sleigh(torque=sp.cos(t))
-    with pytest.raises(MechanicsConversionError, match="explicitly on time"):
-        from_mechanics(km, name="driven", cyclic=cyclic)
+        from_mechanics(km, name="driven", cyclic={x: 0, y: 0, phi: 0})
 
 
-def test_holonomic_constraints_are_refused_with_the_reason():
-    """The pendulum in Cartesian coordinates with the rod's length as a configuration constraint."""
-    x, y = dynamicsymbols("x y")
-    m, l, g = sp.symbols("m l g", positive=True)
+def test_explicit_time_is_the_engines_time():
+    """The sleigh turned by a torque tau(t) = c cos(w t): with v the forward speed and omega = phi_dot,
+    v' = a omega^2, omega' = (tau - m a v omega) / (I + m a^2) (A. M. Bloch, *Nonholonomic Mechanics and
+    Control*, section 1.7, with the torque about the vertical added to the angular momentum balance)."""
+    c, w = sp.symbols("c w", positive=True)
+    km, (x, y, phi, u3, m, a, I, g) = _sleigh(torque=c * sp.cos(w * t))
+    spec = from_mechanics(km, name="driven", cyclic={x: 0, y: 0, phi: 0})
+    assert set(spec.params) == {I, a, c, m, w}
+    XD, PHID = sp.symbols("x_dot phi_dot", real=True)
+    system = derive(spec)
+    assert system.time_dependent
+    tau = c * sp.cos(w * ke_t)
+    assert sp.simplify(system.explicit[0] - a * PHID**2) == 0
+    assert sp.simplify(system.explicit[1] - (tau - m * a * XD * PHID) / (I + m * a**2)) == 0
+
+
+def _cartesian_pendulum():
+    """sympy's test_lagrange.py ``test_nonminimal_pendulum`` as written there: a particle at (q1, q2),
+    the rod's length as the configuration constraint, gravity along N.x as a force."""
+    q1, q2 = dynamicsymbols("q1:3")
+    L, m = sp.symbols("L, m")
+    g = 9.8
+    N = ReferenceFrame("N")
+    pN = Point("N*")
+    pN.set_vel(N, 0)
+    P = pN.locatenew("P1", q1 * N.x + q2 * N.y)
+    P.set_vel(N, P.pos_from(pN).dt(N))
+    pP = Particle("pP", P, m)
+    f_c = sp.Matrix([q1**2 + q2**2 - L**2])
+    LM = LagrangesMethod(Lagrangian(N, pP), [q1, q2], hol_coneqs=f_c, forcelist=[(P, m * g * N.x)], frame=N)
+    return LM, (q1, q2, L, m)
+
+
+def _on_the_circle(q1v, L, rate):
+    """A state on the constraint manifold: q2 > 0 solved from q1, q2_dot from the constraint's rate."""
+    q2v = (L**2 - q1v**2) ** 0.5
+    return q1v, q2v, rate, -q1v * rate / q2v
+
+
+def test_holonomic_constraints_of_lagranges_method_are_the_engines():
+    """The accelerations and the dependent rate against LagrangesMethod's own ``rhs()`` (sympy's equations)."""
+    LM, (q1, q2, L, m) = _cartesian_pendulum()
+    spec = from_mechanics(LM, name="cartesian_pendulum", cyclic={})
+    Q1, Q2 = sp.symbols("q1 q2", real=True)
+    assert spec.constraints == () and spec.holonomic == (Q1**2 + Q2**2 - L**2,) and spec.dependent == (Q2,)
+    system = derive(spec)
+    assert system.state == (Q1, Q2, sp.Symbol("q1_dot", real=True))
+    LM.form_lagranges_equations()
+    theirs = LM.rhs()
+    x, y, xd, yd = _on_the_circle(0.6, 1.3, 0.7)
+    at = {q1: x, q2: y, q1.diff(t): xd, q2.diff(t): yd, L: 1.3, m: 2.1}
+    ours = dict(zip(sp.symbols("q1 q2 q1_dot", real=True), (x, y, xd)))
+    ours.update({L: 1.3, m: 2.1})
+    assert float(system.explicit[0].xreplace(ours)) == pytest.approx(float(theirs[2].xreplace(at)), rel=1e-12)
+    assert float(system.dependent_rates[Q2].xreplace(ours)) == pytest.approx(yd, rel=1e-12)
+
+
+def test_configuration_constraints_of_kanes_method_are_the_engines():
+    """The same pendulum by Kane's method, with q2 dependent (``q_dependent``, ``configuration_constraints``)
+    and the constraint's rate among the velocity constraints, as KanesMethod expects: the engine
+    differentiates the configuration constraint itself, so no velocity constraint remains."""
+    q1, q2, u1, u2 = dynamicsymbols("q1 q2 u1 u2")
+    L, m, g = sp.symbols("L m g", positive=True)
     N, O = ReferenceFrame("N"), Point("O")
     O.set_vel(N, 0)
-    P = Particle("P", O.locatenew("P", x * N.x + y * N.y), m)
-    P.point.set_vel(N, x.diff(t) * N.x + y.diff(t) * N.y)
-    P.potential_energy = m * g * y
-    lm = LagrangesMethod(Lagrangian(N, P), [x, y], hol_coneqs=[x**2 + y**2 - l**2], frame=N)
-    with pytest.raises(MechanicsConversionError, match="holonomic .*configuration.* constraints"):
-        from_mechanics(lm, name="cartesian_pendulum", cyclic={})
+    P = O.locatenew("P", q1 * N.x + q2 * N.y)
+    P.set_vel(N, u1 * N.x + u2 * N.y)
+    km = KanesMethod(N, [q1], [u1], kd_eqs=[q1.diff(t) - u1, q2.diff(t) - u2], q_dependent=[q2],
+                     configuration_constraints=[q1**2 + q2**2 - L**2], u_dependent=[u2],
+                     velocity_constraints=[q1 * u1 + q2 * u2])
+    km.kanes_equations([Particle("pP", P, m)], [(P, m * g * N.x)])
+    spec = from_mechanics(km, name="kane_pendulum", cyclic={})
+    Q1, Q2 = sp.symbols("q1 q2", real=True)
+    assert spec.constraints == () and spec.dependent == (Q2,) and len(spec.holonomic) == 1
+    system = derive(spec)
+    theirs = km.rhs()  # q1', q2', u1', u2'
+    x, y, xd, yd = _on_the_circle(0.6, 1.3, 0.7)
+    at = {q1: x, q2: y, u1: xd, u2: yd, L: 1.3, m: 2.1, g: 9.8}
+    ours = dict(zip(sp.symbols("q1 q2 q1_dot", real=True), (x, y, xd)))
+    ours.update({L: 1.3, m: 2.1, g: 9.8})
+    assert float(system.explicit[0].xreplace(ours)) == pytest.approx(float(theirs[2].xreplace(at)), rel=1e-12)
 
 
 def test_kinematics_with_an_unstated_constraint_are_refused_with_the_reason():

@@ -34,6 +34,7 @@ def test_sum_of_exponents_is_the_time_averaged_divergence():
     np.testing.assert_allclose(res.y, run.y[:, -1], rtol=0, atol=1e-8)  # the same trajectory
 
 
+@pytest.mark.slow  # a second compiled variational loop: the slow tier
 def test_exponents_do_not_depend_on_the_renormalization_interval():
     m = ke.load("two_mode")
     p = m.params(m.default_params)

@@ -44,7 +44,7 @@ def _module(name):
 @pytest.fixture(scope="module")
 def derived(tmp_path_factory):
     out = tmp_path_factory.mktemp("peers")
-    for name in ("sympy_rolling_disc", "differential_drive"):
+    for name in ("sympy_rolling_disc", "differential_drive", "pulsing_pendulum"):
         assert cli.main(["derive", str(MODELS / f"{name}.py"), "--out", str(out)]) == 0
     return out
 
@@ -261,3 +261,59 @@ def test_differential_drive_runs_as_its_authors_equations(derived, d):
     theirs = np.r_[ref.y[:5, -1], ref.y[8:, -1]]
     np.testing.assert_allclose([ours[n] for n in names], theirs, rtol=1e-10, atol=1e-9)
     assert abs(ours["theta"] - 0.4) > 0.5 and np.hypot(ours["x"] - 0.2, ours["y"] + 0.1) > 0.3  # it drove, turned
+
+
+# ---------------------------------------------------------------- a configuration constraint that holds time
+
+def test_pulsing_pendulum_runs_as_its_authors_equations(derived):
+    """SymPy's Cartesian pendulum (test_lagrange.py) with a rod of length L (1 + e sin(w t)):
+    ``hol_coneqs`` and explicit time, against LagrangesMethod's own equations through lambdify."""
+    model = _module("pulsing_pendulum")
+    lm = model.LAGRANGE
+    lm.form_lagranges_equations()
+    m = ke.load("pulsing_pendulum", path=derived)
+    P = dict(L=1.3, m=2.1, e=0.1, w=3.0)
+    p = m.params(P)
+    q1, q2 = lm.q
+    symbols = [model.L, model.m, model.e, model.w]
+    values = [P[str(s)] for s in symbols]
+    f = sp.lambdify((t, list(lm.q), list(lm.q.diff(t)), symbols), (lm.mass_matrix_full, lm.forcing_full), cse=True)
+
+    def rhs(time, z):
+        M, F = f(time, z[:2], z[2:4], values)
+        return np.linalg.solve(np.asarray(M, float), np.asarray(F, float).ravel())[:4]
+
+    t0 = 0.4  # the rod's rate is not zero there
+    length = P["L"] * (1 + P["e"] * np.sin(P["w"] * t0))
+    rate = P["L"] * P["e"] * P["w"] * np.cos(P["w"] * t0)
+    y2, y2d = 0.6, 0.9
+    y1 = np.sqrt(length**2 - y2**2)
+    y1d = (length * rate - y2 * y2d) / y1
+    ref = solve_ivp(rhs, (t0, t0 + 10), [y1, y2, y1d, y2d], method="DOP853", rtol=1e-12, atol=1e-12)
+    y0 = m.state({"q1": y1, "q2": y2, "q2_dot": y2d})
+    r = ke.simulate(m, y0, (t0, t0 + 10), p, rtol=1e-12, atol=1e-12)
+    assert r.success, r.message
+    ours = dict(zip(m.state_names, r.y[:, -1]))
+    np.testing.assert_allclose([ours["q1"], ours["q2"], ours["q2_dot"]], ref.y[[0, 1, 3], -1], rtol=1e-9,
+                               atol=1e-9)
+    assert abs(m.holonomic_residual(r.y[:, -1], p, r.t[-1])[0]) < 1e-9
+    assert np.ptp(r.y[m.state_names.index("q2")]) > 0.5  # it swung
+
+
+# ---------------------------------------------------------------- SymPy's test_kane3.py Whipple bicycle
+
+def test_sympys_whipple_bicycle_as_written_is_refused_with_the_reason():
+    """test_kane3.py's bicycle fixes the rear contact point in N and leaves the wheels' angles out (u3, u6
+    have no coordinates): its velocities already obey the rolling constraints, so there is no Lagrangian
+    to build from it.  The model is run as SymPy's own test builds it (its source, up to the benchmark's
+    numbers); ``tests/models/whipple_bicycle.py`` is the same bicycle with those coordinates."""
+    import inspect
+    import textwrap
+
+    from sympy.physics.mechanics.tests import test_kane3
+    body = textwrap.dedent(inspect.getsource(test_kane3.test_bicycle).split("\n", 2)[2])
+    namespace = {}
+    exec("from sympy import *\nfrom sympy.physics.mechanics import *\n" + body[:body.index("PaperRadRear")],
+         namespace)
+    with pytest.raises(MechanicsConversionError, match=r"speeds \[u3\(t\), u6\(t\)\] have no kinematic"):
+        from_mechanics(namespace["KM"], name="whipple", cyclic={namespace["q1"]: 0})

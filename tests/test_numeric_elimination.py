@@ -69,6 +69,7 @@ def test_numeric_jacobians_equal_the_closed_forms(disks):
             assert np.allclose(b, a, rtol=1e-11, atol=1e-11 * np.max(np.abs(a)))
 
 
+@pytest.mark.slow  # derives the two-body model (6-12 s) and compiles it: the slow tier
 def test_disk_pendulum_jacobian_against_central_differences(disk_pendulum):
     """The pendulum on the disk (numeric elimination): the exact Jacobian against 8th-order central differences."""
     m = disk_pendulum
@@ -119,6 +120,7 @@ def disk_pendulum(tmp_path_factory):
     return ke.load("disk_pendulum", path=out)
 
 
+@pytest.mark.slow  # derives the two-body model (6-12 s) and compiles it: the slow tier
 def test_disk_pendulum_is_numeric_and_straight_line(disk_pendulum):
     """Four independent accelerations: ``elimination="auto"`` solves numerically, in code irexpr writes as IR."""
     from knifeedge.integrators import irexpr
@@ -127,6 +129,7 @@ def test_disk_pendulum_is_numeric_and_straight_line(disk_pendulum):
     assert "define" in irexpr.rhs_ir(disk_pendulum.module.rhs_q_into, "rhs")
 
 
+@pytest.mark.slow  # derives the two-body model (6-12 s) and compiles it: the slow tier
 def test_disk_pendulum_matches_the_unreduced_equations(disk_pendulum):
     """Two bodies: the compiled right-hand side and multipliers against the full DAE
     ``[[M, -A^T], [A, 0]] [q_ddot, lambda] = [-h, -c]`` solved in 30-digit arithmetic from the Lagrangian
@@ -154,6 +157,7 @@ def test_disk_pendulum_matches_the_unreduced_equations(disk_pendulum):
         assert np.allclose(m.module.multipliers(s, p), np.array(lam, dtype=float), rtol=1e-12, atol=1e-12)
 
 
+@pytest.mark.slow  # derives the two-body model (6-12 s) and compiles it: the slow tier
 def test_disk_pendulum_conserves_energy(disk_pendulum):
     """Rolling without slipping and a frictionless axle do no work: the energy holds along a run."""
     m = disk_pendulum
@@ -164,6 +168,7 @@ def test_disk_pendulum_conserves_energy(disk_pendulum):
     assert np.max(np.abs(e - e[0])) < 1e-9 * abs(e[0])
 
 
+@pytest.mark.slow  # derives the two-body model (6-12 s) and compiles it: the slow tier
 def test_doc_section_on_two_bodies_runs(tmp_path, monkeypatch):
     """docs/your-own-model.md section 9 as written (tags ``bodies-file=``, ``bodies-example``)."""
     import contextlib
