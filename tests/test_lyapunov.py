@@ -20,6 +20,7 @@ import knifeedge as ke
 st = importlib.import_module("knifeedge.stability")
 
 
+@pytest.mark.slow  # the variational loop compiles in every process (about 20 s of a worker): the slow tier
 def test_sum_of_exponents_is_the_time_averaged_divergence():
     m = ke.load("two_mode")
     p = m.params(m.default_params)

@@ -36,6 +36,7 @@ def disks(tmp_path_factory):
     return ke.load("disk_symbolic", path=out), ke.load("disk_numeric", path=out), out
 
 
+@pytest.mark.slow  # derives the disk twice (about 15 s of a worker): the slow tier
 def test_header_says_which_elimination(disks):
     symbolic, numeric, out = disks
     assert symbolic.module.ELIMINATION == "symbolic" and numeric.module.ELIMINATION == "numeric"
@@ -43,6 +44,7 @@ def test_header_says_which_elimination(disks):
     assert "_lu_solve" not in (out / "disk_symbolic_full.py").read_text()
 
 
+@pytest.mark.slow  # derives the disk twice (about 15 s of a worker): the slow tier
 def test_numeric_and_symbolic_agree_at_random_states(disks):
     symbolic, numeric, _ = disks
     rng = np.random.default_rng(7)
@@ -56,6 +58,7 @@ def test_numeric_and_symbolic_agree_at_random_states(disks):
         assert numeric.module.energy(s, p) == pytest.approx(symbolic.module.energy(s, p), rel=1e-13)
 
 
+@pytest.mark.slow  # derives the disk twice (about 15 s of a worker): the slow tier
 def test_numeric_jacobians_equal_the_closed_forms(disks):
     """The numeric model's Jacobians (implicit differentiation of the multipliers' system, kkt_emit) equal those
     derived from the closed form of the same disk (derivation/jacobian.py), at random states."""
@@ -87,6 +90,7 @@ def test_disk_pendulum_jacobian_against_central_differences(disk_pendulum):
         assert np.allclose(J, fd, rtol=1e-8, atol=1e-8 * np.max(np.abs(J)))
 
 
+@pytest.mark.slow  # derives the disk twice (about 15 s of a worker): the slow tier
 def test_numeric_run_conserves_energy(disks):
     """The rolling disk conserves its energy (Jacobi integral): a run through the numeric right-hand side holds it."""
     _, numeric, _ = disks
