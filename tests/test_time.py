@@ -46,9 +46,9 @@ def reference():
     return t, sol.y
 
 
-METHODS = [("DOP853", {}), ("RK4", {"h": 2e-3}), ("scipy:DOP853", {}),
+METHODS = [("DOP853", {}), ("scipy:DOP853", {}),
            *(pytest.param(m, kw, marks=pytest.mark.slow) for m, kw in [
-               ("DP54", {}), ("Tsit5", {}), ("gauss4", {"h": 5e-3}), ("gauss6", {"h": 1e-2}),
+               ("RK4", {"h": 2e-3}), ("DP54", {}), ("Tsit5", {}), ("gauss4", {"h": 5e-3}), ("gauss6", {"h": 1e-2}),
                ("implicit_midpoint", {"h": 1e-3}), ("scipy:RK45", {}), ("scipy:LSODA", {}), ("scipy:Radau", {})])]
 
 

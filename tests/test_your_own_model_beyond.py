@@ -15,11 +15,14 @@ import io
 import re
 import shlex
 
+import pytest
+
 from knifeedge.cli import main
 
 from test_your_own_model import DOC, _blocks, _check_printed
 
 
+@pytest.mark.slow  # the docs' runs are the slow tier's (as test_your_own_model's)
 def test_sections_on_time_constraints_and_rigid_bodies_run(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     files = re.findall(r"```python file=(\w+\.py)\n(.*?)```", DOC.read_text(), flags=re.S)
