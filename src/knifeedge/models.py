@@ -347,8 +347,8 @@ class Model:
     @property
     def jacobian_needs_time(self) -> bool:
         """The rates depend on the time explicitly: the Jacobians take it as a third argument."""
-        self._closed(np.zeros(self.n_state))  # refuses a module written without Jacobians
-        return self.module.jacobian.py_func.__code__.co_argcount == 3
+        jacobian = getattr(self.module, "jacobian", None)
+        return jacobian is not None and jacobian.py_func.__code__.co_argcount == 3
 
     def _jacobian(self, name: str, y, p, t):
         y = self._closed(y)  # refuses a module written without Jacobians
