@@ -66,7 +66,7 @@ def knifeedge_side(repeats: int, want) -> dict:
 
     t0 = time.perf_counter()
     system = rigid.derive(celt())
-    source = rigid_emit.module_source(system, "full")
+    source = rigid_emit.module_source(system)
     build = time.perf_counter() - t0
     m = ke.load("celt")
     p = m.preset("kane_levinson_1982")

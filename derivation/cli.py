@@ -23,15 +23,10 @@ from pathlib import Path
 from knifeedge import modulecheck
 
 from . import emit, engine, models
+from .codegen import EXAMPLE_MODELS, USER_MODULE_PREFIX  # the example models of make derive; a user file's module
 from .engine import ModelSpec, ModelSpecError
 
 ROOT = Path(__file__).resolve().parent.parent
-#: model files of the source tree's examples/ derived into generated/ with the package's models (``make derive``)
-EXAMPLE_MODELS = ("examples/rolling_disk.py",)
-
-
-#: a user's model file runs as the module ``<prefix><file stem>`` (a RigidBody's ``source=__name__`` names it)
-USER_MODULE_PREFIX = "knifeedge_user_spec_"
 
 
 class DeriveError(ValueError):

@@ -42,6 +42,7 @@ from pathlib import Path
 import sympy as sp
 
 from . import models, sleigh
+from .codegen import cse_block, unpack
 from .names import Own
 
 #: curve parameter of outlines, ``u`` in ``[0, 2 pi)``
@@ -415,17 +416,15 @@ def block_source(drawing: Drawing, state, params, name: str = "model") -> str:
     params : symbols of the parameter vector ``p``, in order.
     name : the model's name, for error messages.
     """
-    from .emit import _cse_block, _unpack
-
     allowed = set(state) | set(params)
     state = [str(q) for q in state]
     params = [str(q) for q in params]
     names = list(drawing.points)
     exprs = [c for k in names for c in drawing.points[k]]
-    pt_lines, pt_ops = _cse_block(exprs, [f"out[{i // 3}, {i % 3}]" for i in range(len(exprs))], allowed)
+    pt_lines, pt_ops = cse_block(exprs, [f"out[{i // 3}, {i % 3}]" for i in range(len(exprs))], allowed)
     onames = list(drawing.outlines)
     oexprs = [c for k in onames for c in drawing.outlines[k]]
-    ol_lines, ol_ops = _cse_block(oexprs, [f"out[{i // 3}, j, {i % 3}]" for i in range(len(oexprs))],
+    ol_lines, ol_ops = cse_block(oexprs, [f"out[{i // 3}, j, {i % 3}]" for i in range(len(oexprs))],
                                   allowed | {u}, indent="        ")
     missing = [q for q in drawing.magnify if q not in state]
     if missing:
@@ -454,8 +453,8 @@ DRAWING = {meta!r}
 def body_points(s, p):
     """World coordinates (z up, table z = 0) of DRAWING["points"] at the pose-extended state ``s``; shape ({len(names)}, 3) ({pt_ops} operations)."""
     out = np.empty(({len(names)}, 3))
-{nl.join(_unpack(state, "s"))}
-{nl.join(_unpack(params, "p"))}
+{nl.join(unpack(state, "s"))}
+{nl.join(unpack(params, "p"))}
 {body}
     return out
 
@@ -464,8 +463,8 @@ def body_points(s, p):
 def body_outlines(s, p, uu):
     """World coordinates of the curves DRAWING["outlines"] at the parameters ``uu`` in [0, 2 pi); shape ({len(onames)}, len(uu), 3) ({ol_ops} operations)."""
     out = np.empty(({len(onames)}, uu.shape[0], 3))
-{nl.join(_unpack(state, "s"))}
-{nl.join(_unpack(params, "p"))}
+{nl.join(unpack(state, "s"))}
+{nl.join(unpack(params, "p"))}
 {outline_loop}
     return out
 '''

@@ -16,41 +16,17 @@ import inspect
 from pathlib import Path
 
 import sympy as sp
-from sympy.printing.pycode import PythonCodePrinter
 
 from knifeedge.modulecheck import seal
 
-from . import averaging, drawing, engine, jacobian, models, names, steady, truncation
+from . import (averaging, codegen, drawing, engine, jacobian, kkt_emit, models, names, rigid, rigid_emit,
+               rigid_small, rigid_small_emit, steady, truncation)
 from .averaging import AmplitudeSystem
+from .codegen import (ModuleParts, const, cse_block, expression_function, finish, lines_function, module_text,
+                      provenance, rhs_functions, unpack)
 from .fidelities import FIDELITIES
 
 GENERATOR = "derivation/emit.py (make derive)"
-
-class _Printer(PythonCodePrinter):
-    """Python printer with bare ``math`` names and small integer powers as products.
-
-    A power printed as a product is always parenthesized, ``(L*L)``, so that
-    it keeps its precedence wherever the printer of the enclosing expression
-    places it (``x/(L*L)``, never ``x/L*L``).
-    """
-
-    def _print_Pow(self, expr, rational=False):
-        b, e = expr.args
-        if e.is_Integer and 1 < abs(int(e)) <= 4:
-            product = "(" + "*".join([self.parenthesize(b, 100)] * abs(int(e))) + ")"
-            return product if int(e) > 0 else f"(1.0/{product})"
-        return super()._print_Pow(expr, rational=rational)
-
-    def _print_Rational(self, expr):
-        return f"({float(expr.p)!r}/{float(expr.q)!r})"
-
-    def _print_Symbol(self, expr):
-        """The emitter's own symbols as they are; a user's through :func:`.names.identifier`."""
-        return expr.name if isinstance(expr, names.Own) else names.identifier(expr.name)
-
-
-def _code(e: sp.Expr) -> str:
-    return _Printer({"fully_qualified_modules": True, "standard": "python3"}).doprint(e)
 
 
 def spec_file(spec: engine.ModelSpec) -> Path | None:
@@ -80,12 +56,7 @@ def regenerate_hint(spec) -> str:
 
     ``spec``: a :class:`ModelSpec`, or the :func:`source_label` of the file that defines the model.
     """
-    from .cli import EXAMPLE_MODELS
-
-    label = spec if isinstance(spec, str) else source_label(spec)
-    if label.startswith("derivation/") or label in EXAMPLE_MODELS:
-        return "Run ``make derive`` to regenerate."
-    return f"Run ``knifeedge derive {label} --out DIR`` to regenerate."
+    return codegen.regenerate_hint(spec if isinstance(spec, str) else source_label(spec))
 
 
 def input_hash(spec: engine.ModelSpec, fidelity: str) -> str:
@@ -96,7 +67,7 @@ def input_hash(spec: engine.ModelSpec, fidelity: str) -> str:
         spec.name, fidelity, sp.__version__,
         sp.srepr(spec.lagrangian), *(sp.srepr(c) for c in spec.constraints), *(sp.srepr(f) for f in spec.holonomic),
         inspect.getsource(engine), inspect.getsource(truncation), inspect.getsource(models), inspect.getsource(names),
-        Path(__file__).read_text(), (Path(__file__).parent / "kkt_emit.py").read_text(),
+        Path(__file__).read_text(), (Path(__file__).parent / "kkt_emit.py").read_text(), Path(codegen.__file__).read_text(),
         *((spec.elimination,) if spec.elimination != "auto" else ()),
         *((inspect.getsource(averaging),) if fidelity == "amplitude" else ()),
         *(sp.srepr(e) for _, _, e in spec.quasi_velocities),
@@ -108,68 +79,6 @@ def input_hash(spec: engine.ModelSpec, fidelity: str) -> str:
         h.update(part.encode())
         h.update(b"\0")
     return h.hexdigest()
-
-
-def _cse_block(exprs, targets, allowed, indent="    ", prefix="_c"):
-    """CSE ``exprs`` and assign them to ``targets``; returns (code lines, op count)."""
-    bad = set().union(*(e.free_symbols for e in exprs)) - set(allowed)
-    if bad:
-        raise ValueError(f"refusing to emit: undeclared symbols {sorted(map(str, bad))}")
-    subs, reduced_exprs = sp.cse(exprs, symbols=sp.numbered_symbols(prefix, cls=names.Own), order="canonical")
-    lines = [f"{indent}{s} = {_code(v)}" for s, v in subs]
-    lines += [f"{indent}{t} = {_code(v)}" for t, v in zip(targets, reduced_exprs)]
-    ops = sum(sp.count_ops(v) for _, v in subs) + sum(sp.count_ops(v) for v in reduced_exprs)
-    return lines, int(ops)
-
-
-def hoist_parameters(exprs, params):
-    """Replace the parameter-only subexpressions of ``exprs`` by symbols ``_k0, _k1, ...``.
-
-    A subexpression is hoisted when it depends on parameters only and is
-    more than a bare symbol or number; inside a sum or a product the
-    parameter-only terms or factors are grouped and hoisted together
-    (``4*D*g*theta/L**2`` -> ``_k0*theta``).  Returns ``(constants, new)``:
-    the ``(symbol, expression)`` pairs in order of first appearance
-    (a deterministic preorder walk of SymPy's canonical argument order) and
-    the rewritten expressions.  Evaluating the constants once per
-    integration and the rewritten expressions at every step gives the same
-    values, computed with fewer operations per step.
-    """
-    params = set(params)
-    memo: dict = {}
-
-    def const(e):
-        if e.is_Atom:
-            return e
-        if e not in memo:
-            memo[e] = names.Own(f"_k{len(memo)}")
-        return memo[e]
-
-    def walk(e):
-        if e.is_Atom:
-            return e
-        if e.free_symbols <= params:
-            return const(e)
-        if e.is_Add or e.is_Mul:
-            fixed = [a for a in e.args if a.free_symbols <= params]
-            rest = [walk(a) for a in e.args if not a.free_symbols <= params]
-            if len(fixed) > 1 or (fixed and not fixed[0].is_Atom):
-                fixed = [const(e.func(*fixed))]
-            return e.func(*fixed, *rest)
-        return e.func(*[walk(a) for a in e.args])
-
-    new = [walk(e) for e in exprs]
-    return [(symbol, e) for e, symbol in memo.items()], new
-
-
-def _unpack(user_names, array, indent="    ", start=0):
-    """Lines binding names to ``array[start]``, ``array[start + 1]``, ...
-
-    A user's name (a string or a symbol) is written as its :func:`.names.identifier`, an emitter's own
-    symbol (:class:`.names.Own`, e.g. a hoisted constant) as it is.
-    """
-    ident = lambda n: n.name if isinstance(n, names.Own) else names.identifier(str(n))  # noqa: E731
-    return [f"{indent}{ident(n)} = {array}[{start + i}]" for i, n in enumerate(user_names)]
 
 
 def unit(spec: engine.ModelSpec, name: str) -> str:
@@ -189,8 +98,8 @@ def _number(v) -> float:
 
 
 def _metadata(spec: engine.ModelSpec, fidelity: str, state: list, units: list, defaults_state: dict,
-              rename: dict | None = None, events: tuple = ()) -> str:
-    """The metadata block of a generated module: everything the runtime reads about the model.
+              rename: dict | None = None, events: tuple = ()) -> tuple:
+    """The metadata constants of a generated module: everything the runtime reads about the model.
 
     ``rename`` maps names of the closed state of ``full`` to this fidelity's
     state names (the amplitude fidelity); entries without an image are dropped.
@@ -207,44 +116,32 @@ def _metadata(spec: engine.ModelSpec, fidelity: str, state: list, units: list, d
     bounds = spec.validity.get(fidelity, {})
     validity = {rename[str(k)]: float(v) for k, v in sorted(bounds.items(), key=lambda kv: str(kv[0]))
                 if str(k) in rename}
-    valid_doc = spec.validity_description if validity else ""
-    lines = [
-        f"MODEL = {spec.name!r}",
-        f"FIDELITY = {fidelity!r}",
-        "#: what this fidelity is",
-        f"FIDELITY_DOC = {FIDELITIES[fidelity].doc!r}",
-        f"STATE_NAMES = {tuple(state)!r}",
-        "#: unit of each state (``time`` is the unit of t)",
-        f"STATE_UNITS = {tuple(units)!r}",
-        f"POSE_NAMES = {tuple(pose)!r}",
-        f"POSE_UNITS = {tuple(unit(spec, q) for q in pose)!r}",
-        "#: what the pose coordinates mean",
-        f"POSE_DOC = {(spec.pose_description if pose else '')!r}",
-        f"PARAM_NAMES = {tuple(params)!r}",
-        f"PARAM_UNITS = {tuple(unit(spec, q) for q in params)!r}",
-        "#: admissible values of each parameter: 'positive' (> 0) or 'real' (any finite value)",
-        f"PARAM_DOMAINS = {tuple(engine._param_domain(spec, q) for q in spec.params)!r}",
-        "#: default parameter set and initial state (the CLI's defaults); empty if the model declares none",
-        f"DEFAULT_PARAMS = {default_params!r}",
-        f"DEFAULT_STATE = {defaults_state!r}",
-        "#: (coordinate, rate) pairs of the state",
-        f"RATE_PAIRS = {pairs!r}",
-        "#: the small coordinates (tilts) of the small-angle fidelities",
-        f"TILT_NAMES = {tuple(rename[str(q)] for q in spec.small if str(q) in rename)!r}",
-        "#: states (or EVENT_NAMES) whose zero crossings are reported as ``reversal_times``",
-        f"REVERSAL_EVENTS = {reversal!r}",
-        "#: scalar functions of the state returned by ``event_values(s, p)``",
-        f"EVENT_NAMES = {tuple(map(str, events))!r}",
-        "#: largest |value| of each named state where this fidelity holds (empty: everywhere)",
-        f"VALIDITY = {validity!r}",
-        f"VALIDITY_DOC = {valid_doc!r}",
-        f"MULTIPLIER_NAMES = {(tuple(spec.multiplier_labels) if fidelity != 'amplitude' else ())!r}",
-        "#: non-conservative forces: the module has ``power_dissipated(s, p)``",
-        f"HAS_DISSIPATION = {spec.dissipative and fidelity != 'amplitude'!r}",
-        "#: model-specific helpers defined at the end of this module",
-        f"EXPORTS = {tuple(spec.exports)!r}",
-    ]
-    return "\n".join(lines)
+    return (
+        const("MODEL", spec.name), const("FIDELITY", fidelity),
+        const("FIDELITY_DOC", FIDELITIES[fidelity].doc, "what this fidelity is"),
+        const("STATE_NAMES", tuple(state)),
+        const("STATE_UNITS", tuple(units), "unit of each state (``time`` is the unit of t)"),
+        const("POSE_NAMES", tuple(pose)), const("POSE_UNITS", tuple(unit(spec, q) for q in pose)),
+        const("POSE_DOC", spec.pose_description if pose else "", "what the pose coordinates mean"),
+        const("PARAM_NAMES", tuple(params)), const("PARAM_UNITS", tuple(unit(spec, q) for q in params)),
+        const("PARAM_DOMAINS", tuple(engine._param_domain(spec, q) for q in spec.params),
+              "admissible values of each parameter: 'positive' (> 0) or 'real' (any finite value)"),
+        const("DEFAULT_PARAMS", default_params,
+              "default parameter set and initial state (the CLI's defaults); empty if the model declares none"),
+        const("DEFAULT_STATE", defaults_state),
+        const("RATE_PAIRS", pairs, "(coordinate, rate) pairs of the state"),
+        const("TILT_NAMES", tuple(rename[str(q)] for q in spec.small if str(q) in rename),
+              "the small coordinates (tilts) of the small-angle fidelities"),
+        const("REVERSAL_EVENTS", reversal,
+              "states (or EVENT_NAMES) whose zero crossings are reported as ``reversal_times``"),
+        const("EVENT_NAMES", tuple(map(str, events)), "scalar functions of the state returned by ``event_values(s, p)``"),
+        const("VALIDITY", validity, "largest |value| of each named state where this fidelity holds (empty: everywhere)"),
+        const("VALIDITY_DOC", spec.validity_description if validity else ""),
+        const("MULTIPLIER_NAMES", tuple(spec.multiplier_labels) if fidelity != "amplitude" else ()),
+        const("HAS_DISSIPATION", spec.dissipative and fidelity != "amplitude",
+              "non-conservative forces: the module has ``power_dissipated(s, p)``"),
+        const("EXPORTS", tuple(spec.exports), "model-specific helpers defined at the end of this module"),
+    )
 
 
 def _state_defaults(spec: engine.ModelSpec, state) -> dict:
@@ -254,131 +151,29 @@ def _state_defaults(spec: engine.ModelSpec, state) -> dict:
 
 
 def _state_function(name: str, exprs, state, params, doc: str, scalar: bool = False,
-                    args: str = "s, p") -> tuple[str, int]:
+                    args: str = "s, p") -> Function:
     """A jitted ``name(s, p)`` of state and parameters (an array, or a scalar when ``scalar``).
 
     ``args="s, p, t"``: also of the time (a model whose equations depend on it).
     """
     allowed = set(state) | set(params) | ({names.t} if args.endswith(", t") else set())
     targets = [name] if scalar else [f"out[{i}]" for i in range(len(exprs))]
-    lines, ops = _cse_block(list(exprs), targets, allowed)
-    nl = "\n"
-    head = "" if scalar else f"\n    out = np.empty({len(exprs)})"
-    tail = name if scalar else "out"
-    return f'''
+    return expression_function(name, args, doc, exprs, targets, allowed,
+                               (unpack([str(x) for x in state], "s"), unpack([str(q) for q in params], "p")),
+                               name if scalar else "out", () if scalar else (f"    out = np.empty({len(exprs)})",))
 
-@njit(cache=True)
-def {name}({args}):
-    """{doc} ({ops} operations)."""{head}
-{nl.join(_unpack([str(x) for x in state], "s"))}
-{nl.join(_unpack([str(q) for q in params], "p"))}
-{nl.join(lines)}
-    return {tail}
-''', ops
+
+def _coefficient_function(name: str, exprs, params, doc: str) -> Function:
+    """A jitted ``name(p)`` returning the parameter-only expressions ``exprs`` as an array."""
+    return expression_function(name, "p", doc, exprs, [f"out[{i}]" for i in range(len(exprs))], set(params),
+                               (unpack([str(q) for q in params], "p"),), "out",
+                               (f"    out = np.empty({len(exprs)})",))
 
 
 def _extra_source(spec: engine.ModelSpec) -> str:
     if not spec.extra_source:
         return ""
     return "\n\n# -- model-specific helpers (ModelSpec.extra_source) --\n" + spec.extra_source.strip("\n") + "\n"
-
-
-def _rhs_source(syms_state, syms_par, rates, syms_pose=(), pose_rates=(), solve=((), 0),
-                known=frozenset()) -> tuple[str, dict]:
-    """Source of the right-hand-side functions shared by every generated module.
-
-    ``rhs_into(t, s, p, ds)`` and ``rhs(t, s, p)`` take the parameters;
-    ``constants(p)`` returns ``q``: the parameters followed by the
-    parameter-only subexpressions (:func:`hoist_parameters`), and
-    ``rhs_q_into(t, s, q, ds)`` is the same right-hand side reading them
-    from ``q``, which the compiled integrators call at every stage.  With a
-    pose, ``rhs_pose_into``/``rhs_pose``/``rhs_pose_q_into`` likewise.
-    Returns the source and the operation count of each function body.
-    ``solve``: lines (and their op count) that open every ``*_into`` body after its unpacking, binding the
-    symbols ``known`` that ``rates`` may hold (the numeric elimination, :mod:`.kkt_emit`).
-    """
-    nl = "\n"
-    pre, pre_ops = "".join(line + "\n" for line in solve[0]), solve[1]
-    state, pose, params = [str(x) for x in syms_state], [str(x) for x in syms_pose], [str(x) for x in syms_par]
-    n, npose = len(state), len(pose)
-    allowed = set(syms_state) | set(syms_par) | {names.t} | set(known)
-    constants, hoisted = hoist_parameters(list(rates) + list(pose_rates), syms_par)
-    q_names = list(params) + [k for k, _ in constants]
-    const_lines, const_ops = _cse_block([v for _, v in constants], [f"q[{len(params) + i}]" for i in
-                                                                    range(len(constants))], set(syms_par))
-    allowed_q = set(syms_state) | set(syms_par) | {k for k, _ in constants} | {names.t} | set(known)
-    rhs_lines, rhs_ops = _cse_block(list(rates), [f"ds[{i}]" for i in range(n)], allowed)
-    q_lines, q_ops = _cse_block(hoisted[:n], [f"ds[{i}]" for i in range(n)], allowed_q)
-    rhs_ops, q_ops = rhs_ops + pre_ops, q_ops + pre_ops
-    out = f'''@njit(cache=True)
-def rhs_into(t, s, p, ds):
-    """Write d(state)/dt into ``ds`` ({rhs_ops} operations)."""
-{nl.join(_unpack(state, "s"))}
-{nl.join(_unpack(params, "p"))}
-{pre}{nl.join(rhs_lines)}
-
-
-@njit(cache=True)
-def rhs(t, s, p):
-    """Return d(state)/dt as a new array of length {n}."""
-    ds = np.empty({n})
-    rhs_into(t, s, p, ds)
-    return ds
-
-
-@njit(cache=True)
-def constants(p):
-    """``q``: the parameters, then the {len(constants)} parameter-only subexpressions of the right-hand side ({const_ops} operations)."""
-    q = np.empty({len(q_names)})
-{nl.join(_unpack(params, "p"))}
-{nl.join(f"    q[{i}] = {names.identifier(x)}" for i, x in enumerate(params))}
-{nl.join(const_lines)}
-    return q
-
-
-@njit(cache=True)
-def rhs_q_into(t, s, q, ds):
-    """``rhs_into`` with ``q = constants(p)`` in place of ``p`` ({q_ops} operations)."""
-{nl.join(_unpack(state, "s"))}
-{nl.join(_unpack(q_names, "q"))}
-{pre}{nl.join(q_lines)}
-'''
-    ops = {"rhs": rhs_ops, "constants": const_ops, "rhs_q": q_ops}
-    if not npose:
-        return out, ops
-    allowed_pose = allowed | set(syms_pose)
-    rhsp_lines, rhsp_ops = _cse_block(list(rates) + list(pose_rates), [f"ds[{i}]" for i in range(n + npose)],
-                                      allowed_pose)
-    qp_lines, qp_ops = _cse_block(hoisted, [f"ds[{i}]" for i in range(n + npose)], allowed_q | set(syms_pose))
-    unpack_pose = _unpack(pose, "s", start=n)
-    ops.update(rhs_pose=rhsp_ops + pre_ops, rhs_pose_q=qp_ops + pre_ops)
-    return out + f'''
-
-@njit(cache=True)
-def rhs_pose_into(t, s, p, ds):
-    """Write d(state, pose)/dt into ``ds`` ({rhsp_ops} operations)."""
-{nl.join(_unpack(state, "s"))}
-{nl.join(unpack_pose)}
-{nl.join(_unpack(params, "p"))}
-{pre}{nl.join(rhsp_lines)}
-
-
-@njit(cache=True)
-def rhs_pose(t, s, p):
-    """Return d(state, pose)/dt as a new array of length {n + npose}."""
-    ds = np.empty({n + npose})
-    rhs_pose_into(t, s, p, ds)
-    return ds
-
-
-@njit(cache=True)
-def rhs_pose_q_into(t, s, q, ds):
-    """``rhs_pose_into`` with ``q = constants(p)`` in place of ``p`` ({qp_ops} operations)."""
-{nl.join(_unpack(state, "s"))}
-{nl.join(unpack_pose)}
-{nl.join(_unpack(q_names, "q"))}
-{pre}{nl.join(qp_lines)}
-''', ops
 
 
 _ELIMINATION_DOC = {
@@ -389,213 +184,146 @@ _ELIMINATION_DOC = {
 }
 
 
-def module_source(system, fidelity: str, frequencies=None) -> str:
-    """Source of the generated module of ``system`` (a reduced or an amplitude system).
+def module_parts(system, fidelity: str, frequencies=None) -> ModuleParts:
+    """What the generated module of ``system`` holds: a point-mass model's reduced or amplitude system, a rigid
+    body's (:mod:`.rigid_emit`) or its small-tilt fidelities' (:mod:`.rigid_small_emit`).
 
     ``frequencies``: linear frequencies of the tilts (from the amplitude
     fidelity), emitted as ``frequencies(p)`` when given.
     """
     if isinstance(system, AmplitudeSystem):
-        return amplitude_module_source(system, fidelity)
-    from . import rigid, rigid_emit  # rigid bodies: derivation/rigid.py
+        return amplitude_parts(system, fidelity)
     if isinstance(system, rigid.RollingSystem):
-        return rigid_emit.module_source(system, fidelity)
+        return rigid_emit.module_parts(system) if fidelity == "full" else \
+            rigid_small_emit.module_parts(system, fidelity)
+    return point_mass_parts(system, fidelity, frequencies)
+
+
+def module_source(system, fidelity: str, frequencies=None) -> str:
+    """Source of the generated module of ``system`` (unsealed; :func:`module_parts`)."""
+    return module_text(module_parts(system, fidelity, frequencies))
+
+
+def point_mass_parts(system, fidelity: str, frequencies=None) -> ModuleParts:
+    """The module of a reduced system of a :class:`~.engine.ModelSpec` at ``fidelity``."""
     spec = system.spec
-    state = [str(s) for s in system.state]
-    pose = [str(q) for q in spec.pose]
-    params = [str(p) for p in spec.params]
-    n, npose = len(state), len(pose)
-    rates = system.state_rhs()
-    timed = system.time_dependent
-    elimination = "symbolic" if system.kkt is None else "numeric"
-    args = "s, p, t" if timed else "s, p"  # the functions besides the right-hand side
-    allowed = set(system.state) | set(spec.params) | ({names.t} if timed else set())
-    pose_exprs = [system.pose_rates[q] for q in spec.pose]
-    pose_lines, pose_ops = _cse_block(pose_exprs, [f"out[{i}]" for i in range(npose)], allowed | set(spec.pose))
-    if system.kkt is not None:  # multipliers eliminated numerically (derivation/kkt_emit.py)
-        from . import kkt_emit
-        rhs_src, rhs_ops = kkt_emit.rhs_source(system)
-    else:
-        rhs_src, rhs_ops = _rhs_source(system.state, spec.params, rates, spec.pose, pose_exprs)
-    energy_pose = bool(system.energy.free_symbols & set(spec.pose))  # a potential of a cyclic coordinate
-    energy_lines, energy_ops = _cse_block([system.energy], ["energy"], allowed | set(spec.pose))
-    lam = list(system.multipliers)
-    lam_lines, lam_ops = (kkt_emit.multiplier_lines(system, allowed) if system.kkt is not None else
-                          _cse_block(lam, [f"out[{i}]" for i in range(len(lam))], allowed))
-    jacobians = (kkt_emit.jacobian_source(system, allowed) if system.kkt is not None
-                 else jacobian.block_source(rates, system.state, spec.params))
-    labels = ", ".join(spec.multiplier_labels)
+    state, params = [str(s) for s in system.state], [str(p) for p in spec.params]
     digest = input_hash(spec, fidelity)
-    fid_doc = FIDELITIES[fidelity].doc
     units = [unit(spec, nm) for nm in state]
+    elimination = "symbolic" if system.kkt is None else "numeric"
+    labels = ", ".join(spec.multiplier_labels)
+    n = len(state)
     state_doc = "\n".join(f"    s[{i}] = {nm:<12} [{u}]" for i, (nm, u) in enumerate(zip(state, units)))
-    pose_doc = "\n".join(f"    s[{n + i}] = {nm:<12} [{unit(spec, nm)}]" for i, nm in enumerate(pose))
+    pose_doc = "\n".join(f"    s[{n + i}] = {str(nm):<12} [{unit(spec, str(nm))}]" for i, nm in enumerate(spec.pose))
     par_doc = "\n".join(f"    p[{i}] = {nm:<12} [{unit(spec, nm)}]" for i, nm in enumerate(params))
     meta = _metadata(spec, fidelity, state, units, _state_defaults(spec, system.state), events=tuple(spec.events))
-    extra_src, extra_ops = "", {}
+    return ModuleParts(
+        title=f"{spec.name}, fidelity {fidelity}: {FIDELITIES[fidelity].doc}.", hint=regenerate_hint(spec),
+        produced=f"Produced by {GENERATOR} from {source_label(spec)} (model {spec.name!r},\nconstraints {labels}) "
+                 f"through derivation/engine.py{' and derivation/truncation.py' if fidelity != 'full' else ''}.\n"
+                 f"{_ELIMINATION_DOC[elimination]}",
+        digest=digest,
+        doc=f"{spec.description}\n\nState vector ``s`` (closed state; the pose follows by quadrature):\n{state_doc}\n"
+            f"Pose-extended state (``*_pose`` functions) appends:\n{pose_doc}\nParameter vector ``p``:\n{par_doc}\n"
+            f"Multipliers (constraint forces in the normalization of the Lagrangian, e.g. per unit mass),\n"
+            f"in the order {labels}.  Energy in the same normalization.",
+        constants=(*meta, *_model_metadata(system), *provenance(digest),
+                   const("ELIMINATION", elimination, 'how the multipliers are eliminated: "symbolic" (closed form) or '
+                                                     '"numeric" (a linear solve at every call)')),
+        body=_point_mass_body(system, frequencies))
+
+
+def _point_mass_body(system, frequencies) -> tuple:
+    """The functions of a point-mass module, in order."""
+    spec = system.spec
+    timed = system.time_dependent
+    args = "s, p, t" if timed else "s, p"  # the functions besides the right-hand side
+    allowed = set(system.state) | set(spec.params) | ({names.t} if timed else set())
+    unpack_s, unpack_p = unpack([str(s) for s in system.state], "s"), unpack([str(p) for p in spec.params], "p")
+    unpack_pose = unpack([str(q) for q in spec.pose], "s", start=len(system.state))
+    pose_exprs = [system.pose_rates[q] for q in spec.pose]
+    if system.kkt is not None:  # multipliers eliminated numerically (derivation/kkt_emit.py)
+        rhs = kkt_emit.rhs_source(system)
+        lam_lines, lam_ops = kkt_emit.multiplier_lines(system, allowed)
+        jacobians = kkt_emit.jacobian_source(system, allowed)
+    else:
+        rhs = rhs_functions(system.state, spec.params, system.state_rhs(), spec.pose, pose_exprs)
+        lam_lines, lam_ops = cse_block(list(system.multipliers), [f"out[{i}]" for i in range(len(system.multipliers))],
+                                       allowed)
+        jacobians = jacobian.block_source(system.state_rhs(), system.state, spec.params)
+    energy_pose = bool(system.energy.free_symbols & set(spec.pose))  # a potential of a cyclic coordinate
+    return (
+        *rhs,
+        expression_function(
+            "pose_rates", args, f"Return the rates ({', '.join(str(spec.velocity_of(q)) for q in spec.pose)}) of "
+            f"the pose at the pose-extended state ``s``", pose_exprs, [f"out[{i}]" for i in range(len(pose_exprs))],
+            allowed | set(spec.pose), (unpack_s, unpack_pose, unpack_p), "out",
+            (f"    out = np.empty({len(pose_exprs)})",)),
+        expression_function(
+            "energy", args, f"Energy per unit mass{' at the pose-extended state' if energy_pose else ''}",
+            [system.energy], ["energy"], allowed | set(spec.pose),
+            (unpack_s + (unpack_pose if energy_pose else []), unpack_p), "energy"),
+        lines_function("multipliers", args, "Lagrange multipliers (contact forces per unit mass) "
+                       f"{', '.join(spec.multiplier_labels)}", lam_lines, lam_ops, (unpack_s, unpack_p), "out",
+                       (f"    out = np.empty({len(system.multipliers)})",)),
+        drawing.module_source(system),
+        *_optional_functions(system, frequencies, args),
+        _extra_source(spec), jacobians, steady.block_source(spec.steady, system.state, spec.params))
+
+
+def _optional_functions(system, frequencies, args) -> list:
+    """``frequencies``, ``event_values``, ``power_dissipated``, ``holonomic_residual``, ``power_input``: those that
+    apply to the model."""
+    spec, out = system.spec, []
     if frequencies is not None:
-        extra_src, extra_ops["frequencies"] = _coefficient_block(
+        out.append(_coefficient_function(
             "frequencies", frequencies, spec.params,
             "Angular frequencies omega_i of the small oscillations of " + ", ".join(map(str, spec.small))
-            + " at zero spin [1/time]")
+            + " at zero spin [1/time]"))
     if spec.events:
-        src_, extra_ops["event_values"] = _state_function(
+        out.append(_state_function(
             "event_values", [spec.events[k] for k in spec.events], system.state, spec.params,
-            "Values of the events " + ", ".join(map(str, spec.events)) + " (EVENT_NAMES)")
-        extra_src += src_
+            "Values of the events " + ", ".join(map(str, spec.events)) + " (EVENT_NAMES)"))
     if system.power is not None:
-        src_, extra_ops["power_dissipated"] = _state_function(
+        out.append(_state_function(
             "power_dissipated", [system.power], system.state, spec.params,
             "Rate at which the non-conservative forces remove energy, -q_dot . Q (>= 0 for pure dissipation)",
-            scalar=True, args=args)
-        extra_src += src_
+            scalar=True, args=args))
     if spec.holonomic:
-        src_, extra_ops["holonomic_residual"] = _state_function(
+        out.append(_state_function(
             "holonomic_residual", list(spec.holonomic), system.state, spec.params,
             "Values of the holonomic constraints " + ", ".join(spec.holonomic_labels) + " (zero on the constraint "
-            "manifold; the run integrates their derivative, so they drift)", args=args)
-        extra_src += src_
+            "manifold; the run integrates their derivative, so they drift)", args=args))
     if system.power_input is not None:
-        src_, extra_ops["power_input"] = _state_function(
+        out.append(_state_function(
             "power_input", [system.power_input], system.state, spec.params,
             "Rate at which the explicit time and the rheonomic constraints add energy, -dL/dt - lambda . b",
-            scalar=True, args=args)
-        extra_src += src_
-    extra_src += _extra_source(spec)
-    unpack_s = _unpack(state, "s")
-    unpack_p = _unpack(params, "p")
-    unpack_pose = _unpack(pose, "s", start=n)
-    nl = "\n"
-    return f'''"""{spec.name}, fidelity {fidelity}: {fid_doc}.
-
-GENERATED FILE -- DO NOT EDIT BY HAND.  {regenerate_hint(spec)}
-Produced by {GENERATOR} from {source_label(spec)} (model {spec.name!r},
-constraints {labels}) through derivation/engine.py{" and derivation/truncation.py" if fidelity != "full" else ""}.
-{_ELIMINATION_DOC[elimination]}
-SymPy {sp.__version__}; input hash sha256:{digest}
-
-{spec.description}
-
-State vector ``s`` (closed state; the pose follows by quadrature):
-{state_doc}
-Pose-extended state (``*_pose`` functions) appends:
-{pose_doc}
-Parameter vector ``p``:
-{par_doc}
-Multipliers (constraint forces in the normalization of the Lagrangian, e.g. per unit mass),
-in the order {labels}.  Energy in the same normalization.
-"""
-import math
-
-import numpy as np
-from numba import njit
-
-{meta}{_model_metadata(system)}
-INPUT_HASH = {digest!r}
-SYMPY_VERSION = {sp.__version__!r}
-#: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
-ELIMINATION = {elimination!r}
-#: floating-point operation counts of each function body (SymPy count_ops after CSE)
-OP_COUNTS = {dict(rhs_ops, pose_rates=pose_ops, energy=energy_ops, multipliers=lam_ops, **extra_ops)!r}
-
-
-{rhs_src}
-
-@njit(cache=True)
-def pose_rates({args}):
-    """Return the rates ({", ".join(str(spec.velocity_of(q)) for q in spec.pose)}) of the pose at the pose-extended state ``s`` ({pose_ops} operations)."""
-    out = np.empty({npose})
-{nl.join(unpack_s)}
-{nl.join(unpack_pose)}
-{nl.join(unpack_p)}
-{nl.join(pose_lines)}
+            scalar=True, args=args))
     return out
 
 
-@njit(cache=True)
-def energy({args}):
-    """Energy per unit mass{" at the pose-extended state" if energy_pose else ""} ({energy_ops} operations)."""
-{nl.join(unpack_s + (unpack_pose if energy_pose else []))}
-{nl.join(unpack_p)}
-{nl.join(energy_lines)}
-    return energy
-
-
-@njit(cache=True)
-def multipliers({args}):
-    """Lagrange multipliers (contact forces per unit mass) {labels} ({lam_ops} operations)."""
-    out = np.empty({len(lam)})
-{nl.join(unpack_s)}
-{nl.join(unpack_p)}
-{nl.join(lam_lines)}
-    return out
-''' + drawing.module_source(system) + extra_src + jacobians \
-        + steady.block_source(spec.steady, system.state, spec.params)
-
-
-def _model_metadata(system) -> str:
-    """Metadata lines of an energy that needs the pose, holonomic constraints, explicit time (none otherwise)."""
-    out = ""
+def _model_metadata(system) -> tuple:
+    """Constants of an energy that needs the pose, holonomic constraints, explicit time (none otherwise)."""
+    out = ()
     if system.energy.free_symbols & set(system.spec.pose):
-        out += ("\n#: ``energy`` holds a potential of pose coordinates: it reads the pose-extended state\n"
-                "ENERGY_NEEDS_POSE = True")
+        out += (const("ENERGY_NEEDS_POSE", True,
+                      "``energy`` holds a potential of pose coordinates: it reads the pose-extended state"),)
     if system.spec.holonomic:
-        out += ("\n#: holonomic constraints, whose values ``holonomic_residual`` gives (zero on the manifold)\n"
-                f"HOLONOMIC_NAMES = {tuple(system.spec.holonomic_labels)!r}")
+        out += (const("HOLONOMIC_NAMES", tuple(system.spec.holonomic_labels),
+                      "holonomic constraints, whose values ``holonomic_residual`` gives (zero on the manifold)"),)
     if not system.time_dependent:
         return out
-    return out + ("\n#: the equations depend on the time: energy, multipliers, pose_rates, power_dissipated and power_input\n"
-            "#: take it as a third argument ``(s, p, t)``; energy is not conserved:\n"
-            "#: energy(t) = energy(0) + integral of (power_input - power_dissipated)\n"
-            "TIME_DEPENDENT = True\n"
-            f"HAS_POWER_INPUT = {system.power_input is not None!r}")
+    return out + (const("TIME_DEPENDENT", True,
+                        "the equations depend on the time: energy, multipliers, pose_rates, power_dissipated and "
+                        "power_input\ntake it as a third argument ``(s, p, t)``; energy is not conserved:\n"
+                        "energy(t) = energy(0) + integral of (power_input - power_dissipated)"),
+                  const("HAS_POWER_INPUT", system.power_input is not None))
 
 
-def _coefficient_block(name: str, exprs, params, doc: str) -> tuple[str, int]:
-    """A jitted ``name(p)`` returning the parameter-only expressions ``exprs`` as an array."""
-    lines, ops = _cse_block(list(exprs), [f"out[{i}]" for i in range(len(exprs))], set(params))
-    nl = "\n"
-    return f'''
-
-@njit(cache=True)
-def {name}(p):
-    """{doc} ({ops} operations)."""
-    out = np.empty({len(exprs)})
-{nl.join(_unpack([str(q) for q in params], "p"))}
-{nl.join(lines)}
-    return out
-''', ops
-
-
-def amplitude_module_source(system: AmplitudeSystem, fidelity: str) -> str:
-    """Source of an ``amplitude`` module: slow flow, invariants and its coefficients; no pose, no multipliers."""
+def amplitude_parts(system: AmplitudeSystem, fidelity: str) -> ModuleParts:
+    """The module of an amplitude system: slow flow, invariants and its coefficients; no pose, no multipliers."""
     spec = system.spec
-    state = [str(s) for s in system.state]
-    params = [str(p) for p in spec.params]
-    n, n_tilt = len(state), len(system.amplitudes)
-    allowed = set(system.state) | set(spec.params)
-    rhs_src, rhs_ops = _rhs_source(system.state, spec.params, system.rates)
-    inv_names = list(system.invariants)
-    inv_lines, inv_ops = _cse_block(list(system.invariants.values()), [f"out[{i}]" for i in range(len(inv_names))],
-                                    allowed)
-    energy_lines, energy_ops = _cse_block([system.energy], ["energy"], allowed)
-    freq_src, freq_ops = _coefficient_block(
-        "frequencies", system.frequencies, spec.params,
-        "Angular frequencies omega_i of the tilts " + ", ".join(map(str, system.tilts)) + " at zero spin")
-    extra_src, extra_ops = "", {}
-    if system.growth is not None:
-        spin = system.spin_amplitudes[0]
-        drive = sp.Poly(sp.expand(system.rates[n_tilt]), *system.amplitudes)
-        if drive.is_homogeneous and drive.total_degree() == 2 and all(
-                sum(1 for k in m if k) == 1 for m in drive.monoms()):
-            k_i = [sp.factor(drive.coeff_monomial(a**2)) for a in system.amplitudes]
-            src1, ops1 = _coefficient_block(
-                "growth_rates", system.growth, spec.params,
-                f"c_i in d(A_i)/dt = c_i {spin} A_i [dimensionless]")
-            src2, ops2 = _coefficient_block(
-                "drive_rates", k_i, spec.params,
-                f"k_i in d({spin})/dt = sum_i k_i A_i^2 [1/time^2]")
-            extra_src, extra_ops = src1 + src2, {"growth_rates": ops1, "drive_rates": ops2}
+    state, params = [str(s) for s in system.state], [str(p) for p in spec.params]
     digest = input_hash(spec, fidelity)
     rename = {str(q): str(a) for q, a in zip(system.tilts, system.amplitudes)}
     rename.update({str(s): str(a) for s, a in zip(system.spins, system.spin_amplitudes)})
@@ -603,71 +331,63 @@ def amplitude_module_source(system: AmplitudeSystem, fidelity: str) -> str:
     units = [unit(spec, back[nm]) for nm in state]
     state_doc = "\n".join(f"    s[{i}] = {nm:<12} [{u}]" for i, (nm, u) in enumerate(zip(state, units)))
     par_doc = "\n".join(f"    p[{i}] = {nm:<12} [{unit(spec, nm)}]" for i, nm in enumerate(params))
-    meta = _metadata(spec, fidelity, state, units, _amplitude_defaults(system), rename)
     flow_doc = "\n".join(f"    d{nm}/dt = {r}" for nm, r in zip(state, system.rates))
     inv_doc = "\n".join(f"    {k}: {v}" for k, v in system.invariants.items())
     phase_doc = ", ".join(f"d(beta_{i + 1})/dt = {r}" for i, r in enumerate(system.phase_rates))
-    ops = {**rhs_ops, "energy": energy_ops, "invariants": inv_ops, "frequencies": freq_ops, **extra_ops}
-    nl = "\n"
-    return f'''"""{spec.name}, fidelity {fidelity}: first-order averaged slow flow of the reduced equations.
-
-GENERATED FILE -- DO NOT EDIT BY HAND.  {regenerate_hint(spec)}
-Produced by {GENERATOR} from {source_label(spec)} (model {spec.name!r})
-through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy {sp.__version__}; input hash sha256:{digest}
-
-{spec.description}
-
-Tilts theta_i = A_i cos(psi_i), theta_i_dot = -omega_i A_i sin(psi_i), averaged
-over independent fast phases psi_i, leading order in (spin rate)/omega.
-Averaged phase drifts: {phase_doc} (the phases do not enter the slow flow).
-
-State vector ``s``:
-{state_doc}
-Parameter vector ``p``:
-{par_doc}
-Slow flow:
-{flow_doc}
-Invariants (conserved by the slow flow):
-{inv_doc}
-No pose and no multipliers at this fidelity.
-"""
-import math
-
-import numpy as np
-from numba import njit
-
-{meta}
-#: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
-INVARIANT_NAMES = {tuple(inv_names)!r}
-INPUT_HASH = {digest!r}
-SYMPY_VERSION = {sp.__version__!r}
-#: floating-point operation counts of each function body (SymPy count_ops after CSE)
-OP_COUNTS = {ops!r}
+    return ModuleParts(
+        title=f"{spec.name}, fidelity {fidelity}: first-order averaged slow flow of the reduced equations.",
+        hint=regenerate_hint(spec),
+        produced=f"Produced by {GENERATOR} from {source_label(spec)} (model {spec.name!r})\n"
+                 "through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.",
+        digest=digest,
+        doc=f"{spec.description}\n\nTilts theta_i = A_i cos(psi_i), theta_i_dot = -omega_i A_i sin(psi_i), averaged\n"
+            "over independent fast phases psi_i, leading order in (spin rate)/omega.\n"
+            f"Averaged phase drifts: {phase_doc} (the phases do not enter the slow flow).\n\n"
+            f"State vector ``s``:\n{state_doc}\nParameter vector ``p``:\n{par_doc}\nSlow flow:\n{flow_doc}\n"
+            f"Invariants (conserved by the slow flow):\n{inv_doc}\nNo pose and no multipliers at this fidelity.",
+        constants=(*_metadata(spec, fidelity, state, units, _amplitude_defaults(system), rename),
+                   const("INVARIANT_NAMES", tuple(system.invariants), "conserved quantities returned by "
+                         "``invariants`` (``energy`` is the averaged energy per unit mass)"),
+                   *provenance(digest)),
+        body=_amplitude_body(system, rename))
 
 
-{rhs_src}
+def _amplitude_body(system: AmplitudeSystem, rename: dict) -> tuple:
+    """The functions of an amplitude module, in order."""
+    spec = system.spec
+    allowed = set(system.state) | set(spec.params)
+    unpacked = (unpack([str(s) for s in system.state], "s"), unpack([str(p) for p in spec.params], "p"))
+    inv = list(system.invariants)
+    return (
+        *rhs_functions(system.state, spec.params, system.rates),
+        expression_function("energy", "s, p", "Averaged energy per unit mass, a conserved quantity of the slow flow",
+                            [system.energy], ["energy"], allowed, unpacked, "energy"),
+        expression_function("invariants", "s, p", f"Conserved quantities {inv}", list(system.invariants.values()),
+                            [f"out[{i}]" for i in range(len(inv))], allowed, unpacked, "out",
+                            (f"    out = np.empty({len(inv)})",)),
+        _coefficient_function(
+            "frequencies", system.frequencies, spec.params,
+            "Angular frequencies omega_i of the tilts " + ", ".join(map(str, system.tilts)) + " at zero spin"),
+        *_growth_functions(system),
+        jacobian.block_source(system.rates, system.state, spec.params),
+        steady.block_source(spec.steady, system.state, spec.params, rename=rename))
 
-@njit(cache=True)
-def energy(s, p):
-    """Averaged energy per unit mass, a conserved quantity of the slow flow ({energy_ops} operations)."""
-{nl.join(_unpack(state, "s"))}
-{nl.join(_unpack(params, "p"))}
-{nl.join(energy_lines)}
-    return energy
 
-
-@njit(cache=True)
-def invariants(s, p):
-    """Conserved quantities {inv_names} ({inv_ops} operations)."""
-    out = np.empty({len(inv_names)})
-{nl.join(_unpack(state, "s"))}
-{nl.join(_unpack(params, "p"))}
-{nl.join(inv_lines)}
-    return out
-{freq_src}{extra_src}''' + jacobian.block_source(system.rates, system.state, spec.params) \
-        + steady.block_source(spec.steady, system.state, spec.params, rename=rename)
-
+def _growth_functions(system: AmplitudeSystem) -> tuple:
+    """``growth_rates(p)`` and ``drive_rates(p)`` of a slow flow ``dA_i/dt = c_i s A_i``, ``ds/dt = sum k_i A_i^2``
+    (none for another shape)."""
+    if system.growth is None:
+        return ()
+    spec, spin = system.spec, system.spin_amplitudes[0]
+    drive = sp.Poly(sp.expand(system.rates[len(system.amplitudes)]), *system.amplitudes)
+    if not (drive.is_homogeneous and drive.total_degree() == 2
+            and all(sum(1 for k in m if k) == 1 for m in drive.monoms())):
+        return ()
+    k_i = [sp.factor(drive.coeff_monomial(a**2)) for a in system.amplitudes]
+    return (_coefficient_function("growth_rates", system.growth, spec.params,
+                                  f"c_i in d(A_i)/dt = c_i {spin} A_i [dimensionless]"),
+            _coefficient_function("drive_rates", k_i, spec.params,
+                                  f"k_i in d({spin})/dt = sum_i k_i A_i^2 [1/time^2]"))
 
 def _amplitude_defaults(system: AmplitudeSystem) -> dict:
     """Default amplitudes ``A_i = sqrt(theta_i^2 + (theta_i_dot/omega_i)^2)`` and spin of the model's default state."""
@@ -687,10 +407,7 @@ def _amplitude_defaults(system: AmplitudeSystem) -> dict:
 
 def build(spec: engine.ModelSpec) -> dict:
     """Derive one model at every fidelity of :data:`~derivation.fidelities.FIDELITIES` that applies to it."""
-    from . import rigid  # a rigid body (derivation/rigid.py): full, and reduced/amplitude when it says so
-    if isinstance(spec, rigid.RigidBody):
-        from . import rigid_small
-
+    if isinstance(spec, rigid.RigidBody):  # a rigid body (derivation/rigid.py): full, and reduced/amplitude when it says so
         return rigid_small.build(spec)
     out = {}
     for fid in FIDELITIES.values():
@@ -750,7 +467,7 @@ def write_all(out_dir: Path, systems: dict | None = None, registry: bool = True)
     for (name, fidelity), path in paths.items():
         amp = systems.get((name, "amplitude"))
         freq = amp.frequencies if amp is not None and fidelity != "amplitude" else None
-        path.write_text(seal(module_source(systems[(name, fidelity)], fidelity, frequencies=freq)), encoding="utf-8")
+        path.write_text(finish(module_parts(systems[(name, fidelity)], fidelity, frequencies=freq)), encoding="utf-8")
     paths = list(paths.values())
     if registry:
         reg = out_dir / "__init__.py"

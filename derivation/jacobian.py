@@ -18,6 +18,7 @@ from __future__ import annotations
 import sympy as sp
 
 from . import names
+from .codegen import code as _code, unpack as _unpack
 
 
 def _gradients(exprs, variables):
@@ -65,8 +66,6 @@ def _gradients(exprs, variables):
 
 def _function(name, exprs, wrt, state, params, shape, doc):
     """Source and op count of ``name(s, p)`` returning ``d exprs / d wrt`` as an array of ``shape``."""
-    from .emit import _code, _unpack  # emit imports this module
-
     subs, deriv_subs, rows = _gradients(exprs, list(wrt))
     allowed = set(state) | set(params) | {names.t}
     bad = set().union(*(e.free_symbols for e in exprs)) - allowed

@@ -15,7 +15,7 @@ from __future__ import annotations
 import sympy as sp
 
 from . import names
-from .emit import _cse_block, _rhs_source
+from .codegen import cse_block as _cse_block, rhs_functions as _rhs_source, unpack as _unpack
 
 
 def _reduced(system):
@@ -66,8 +66,8 @@ def _solve_block(system, allowed):
     return lines + _ldl_lines(k), ops + k * (k + 1) * (2 * k + 1) // 3 + 2 * k * k
 
 
-def rhs_source(system) -> tuple[str, dict]:
-    """Source of the right-hand-side functions (the signatures of :func:`.emit._rhs_source`) and their op counts.
+def rhs_source(system) -> tuple:
+    """The right-hand-side functions (:func:`.codegen.rhs_functions`: their signatures and op counts).
 
     The closed-form emitter writes the functions; the accelerations enter as the symbols ``_a*`` that the solve
     lines (placed first in each body) bind.
@@ -95,8 +95,6 @@ def _jacobian_function(system, name: str, wrt: list, allowed) -> tuple[str, int]
     ``d a / d x = Mr^-1 (d fr / d x - (d Mr / d x) a)``: the factor of ``Mr`` the right-hand side computes is
     reused for every column (one forward and one back substitution each).
     """
-    from .emit import _unpack
-
     spec = system.spec
     Mr, fr, a, _ = _reduced(system)
     k = Mr.rows

@@ -17,8 +17,9 @@ from pathlib import Path
 
 import sympy as sp
 
-from . import drawing, emit, jacobian, rigid, steady
-from .emit import _cse_block, _rhs_source, _unpack
+from . import codegen, drawing, jacobian, rigid, steady
+from .codegen import (USER_MODULE_PREFIX, Constant, ModuleParts, const, cse_block, expression_function, module_text,
+                      provenance, regenerate_hint, rhs_functions, unpack)
 
 
 def input_hash(system: rigid.RollingSystem, fidelity: str) -> str:
@@ -30,7 +31,7 @@ def input_hash(system: rigid.RollingSystem, fidelity: str) -> str:
         spec.name, fidelity, sp.__version__, sp.srepr(spec.lagrangian), *(sp.srepr(c) for c in spec.constraints),
         sp.srepr(sp.Matrix(body.inertia)), sp.srepr(body.sigma), repr(sorted(body.presets.items())),
         inspect.getsource(rigid), inspect.getsource(model_file) if model_file else "", Path(__file__).read_text(),
-        Path(emit.__file__).read_text(), drawing.source_text(), repr(sorted(body.param_units.items())),
+        Path(codegen.__file__).read_text(), drawing.source_text(), repr(sorted(body.param_units.items())),
         repr(sorted(body.param_domains.items())), body.description,
     ):
         h.update(part.encode())
@@ -40,8 +41,6 @@ def input_hash(system: rigid.RollingSystem, fidelity: str) -> str:
 
 def source_label(body: rigid.RigidBody) -> str:
     """The file that defines ``body``, as the header names it: ``derivation/celt.py`` or the user's file name."""
-    from .cli import USER_MODULE_PREFIX
-
     source = body.source or ""
     if source.startswith(("knifeedge.derive.", "derivation.")):
         return f"derivation/{source.rsplit('.', 1)[1]}.py"
@@ -109,7 +108,7 @@ def body_values_source(body: rigid.RigidBody, params) -> str:
     mass, gravity, sigma, inertia, height = rigid.body_values(body)
     dropped = {q: 0 for q in body.params if q not in params}
     exprs = [sp.sympify(e).subs(dropped) for e in (mass, gravity, sigma, *inertia, height if height is not None else 0)]
-    lines, _ = _cse_block(exprs, [f"out[{i}]" for i in range(len(exprs))], set(params))
+    lines, _ = cse_block(exprs, [f"out[{i}]" for i in range(len(exprs))], set(params))
     nl = "\n"
     return f'''
 
@@ -118,44 +117,20 @@ def body_values(p):
     ``knifeedge.bodies.problems`` checks (``height``: of the centre of mass above the table at rest; ``None`` for
     a body that hangs below the edge it balances on)."""
     out = [0.0] * {len(exprs)}
-{nl.join(_unpack([str(q) for q in params], "p"))}
+{nl.join(unpack([str(q) for q in params], "p"))}
 {nl.join(lines)}
     return (out[0], out[1], out[2], (out[3:6], out[6:9], out[9:12]), {"out[12]" if height is not None else "None"})
 '''
 
 
-def module_source(system: rigid.RollingSystem, fidelity: str) -> str:
-    """Source of the generated module of a derived rigid body."""
-    if fidelity != "full":  # small-tilt fidelities (derivation/rigid_small.py)
-        from . import rigid_small_emit
+def module_source(system: rigid.RollingSystem) -> str:
+    """Source of the generated module of a derived rigid body, fidelity ``full`` (unsealed)."""
+    return module_text(module_parts(system))
 
-        return rigid_small_emit.module_source(system, fidelity)
-    spec, body = system.spec, system.body
-    state = [str(s) for s in system.state]
-    pose = [str(q) for q in spec.pose]
-    params = [str(p) for p in spec.params]
-    n, npose = len(state), len(pose)
-    rates = system.state_rhs()
-    allowed = set(system.state) | set(spec.params)
-    pose_exprs = [system.pose_rates[q] for q in spec.pose]
-    pose_lines, pose_ops = _cse_block(pose_exprs, [f"out[{i}]" for i in range(npose)], allowed | set(spec.pose))
-    rhs_src, rhs_ops = _rhs_source(system.state, spec.params, rates, spec.pose, pose_exprs)
-    energy_lines, energy_ops = _cse_block([system.energy], ["energy"], allowed)
-    power_lines, power_ops = _cse_block([sp.sympify(system.power)], ["power"], allowed)
-    lam = list(system.multipliers)
-    lam_lines, lam_ops = _cse_block(lam, [f"out[{i}]" for i in range(len(lam))], allowed)
-    digest = input_hash(system, fidelity)
-    nl = "\n"
-    power_src = (f'''@njit(cache=True)
-def power_dissipated(s, p):
-    """Power dissipated by the damping torque ({power_ops} operations)."""
-{nl.join(_unpack([str(x) for x in system.state], "s"))}
-{nl.join(_unpack([str(x) for x in spec.params], "p"))}
-{nl.join(power_lines)}
-    return power
-''' if body.sigma is not None and body.sigma != 0 else "")
-    units = {**rigid.STATE_UNITS, **{str(k): v for k, v in body.param_units.items()}}
-    domains = {p: body.param_domains.get(p, "positive") for p in params}
+
+def _rigid_defaults(body: rigid.RigidBody, params: list, state: list) -> tuple:
+    """``(DEFAULT_PARAMS, DEFAULT_STATE)``: the body's defaults (else its first preset) and its default physical
+    state as the closed state."""
     presets = {k: {p: float(v[p]) for p in params} for k, v in sorted(body.presets.items())}
     if body.defaults:
         defaults = {p: float(body.defaults[p]) for p in params}
@@ -166,120 +141,101 @@ def power_dissipated(s, p):
     nrm = sum(float(c) ** 2 for c in n0) ** 0.5
     n0 = [float(c) / nrm for c in n0]
     omega0 = [float(c) for c in omega0]
-    default_state = dict(zip(state, n0 + omega0 + [sum(a * b for a, b in zip(n0, omega0))]))
-    dissipative = body.sigma is not None and body.sigma != 0
+    return defaults, dict(zip(state, n0 + omega0 + [sum(a * b for a, b in zip(n0, omega0))]))
+
+
+def module_parts(system: rigid.RollingSystem) -> ModuleParts:
+    """What the generated module of a derived rigid body (fidelity ``full``) holds."""
+    spec, body = system.spec, system.body
+    state, pose, params = [str(s) for s in system.state], [str(q) for q in spec.pose], [str(p) for p in spec.params]
+    n = len(state)
+    digest = input_hash(system, "full")
+    units = {**rigid.STATE_UNITS, **{str(k): v for k, v in body.param_units.items()}}
+    domains = {p: body.param_domains.get(p, "positive") for p in params}
     state_doc = "\n".join(f"    s[{i}] = {nm:<12} [{units.get(nm, '?')}]" for i, nm in enumerate(state))
     pose_doc = "\n".join(f"    s[{n + i}] = {nm:<12} [{units.get(nm, '?')}]" for i, nm in enumerate(pose))
     par_doc = "\n".join(f"    p[{i}] = {nm:<12} [{units.get(nm, '?')}] {domains[nm]}" for i, nm in enumerate(params))
     preset_doc = "\n".join(f"    {k}: {body.preset_sources.get(k, '')}" for k in sorted(body.presets))
-    unpack_s, unpack_p = _unpack(state, "s"), _unpack(params, "p")
-    unpack_pose = _unpack(pose, "s", start=n)
-    model_file = body.source
-    nl = "\n"
-    ops = dict(rhs_ops, pose_rates=pose_ops, energy=energy_ops, multipliers=lam_ops)
-    if dissipative:
-        ops["power_dissipated"] = power_ops
-    return f'''"""{spec.name}, fidelity {fidelity}: rigid body rolling without slipping, nothing dropped.
-
-GENERATED FILE -- DO NOT EDIT BY HAND.  {emit.regenerate_hint(source_label(body))}
-Produced by derivation/rigid_emit.py (make derive) from the rigid body {spec.name!r}
-through derivation/rigid.py (Lagrange-d'Alembert in body quasi-velocities).
-SymPy {sp.__version__}; input hash sha256:{digest}
-
-{spec.description}
-
-State vector ``s`` (closed state; the pose follows by quadrature):
-{state_doc}
-Pose-extended state (``*_pose`` functions) appends:
-{pose_doc}
-Parameter vector ``p``:
-{par_doc}
-Presets:
-{preset_doc}
-Multipliers: the contact force on the body in body axes, {", ".join(spec.constraint_labels)}.
-Energy and ``power_dissipated`` in the units of the parameters (J and W for SI parameters).
-"""
-import math
-
-import numpy as np
-from numba import njit
-
-MODEL = {spec.name!r}
-FIDELITY = {fidelity!r}
-#: what this fidelity is
-FIDELITY_DOC = "rigid body rolling without slipping, exact in the orientation (derivation/rigid.py)"
-STATE_NAMES = {tuple(state)!r}
-#: unit of each state
-STATE_UNITS = {tuple(units[k] for k in state)!r}
-POSE_NAMES = {tuple(pose)!r}
-POSE_UNITS = {tuple(units[k] for k in pose)!r}
-#: what the pose coordinates mean
-POSE_DOC = "psi: heading of the horizontal projection of the body axis {tuple(body.heading_axis)}; (x, y): centre of mass"
-PARAM_NAMES = {tuple(params)!r}
-PARAM_UNITS = {tuple(units[k] for k in params)!r}
-#: admissible values of each parameter: 'positive' (> 0), 'nonnegative' (>= 0) or 'real' (any finite value)
-PARAM_DOMAINS = {tuple(domains[k] for k in params)!r}
-#: default parameter set and initial state (the CLI's defaults)
-DEFAULT_PARAMS = {defaults!r}
-DEFAULT_STATE = {default_state!r}
-#: (coordinate, rate) pairs of the state: none (n and omega are not coordinate and rate)
-RATE_PAIRS = ()
-TILT_NAMES = ()
-#: the vertical spin omega . n (carried as a state), whose zero crossings are the spin reversals
-REVERSAL_EVENTS = ('omega_n',)
-EVENT_NAMES = ()
-#: largest |value| of each named state where this fidelity holds (empty: everywhere)
-VALIDITY = {{}}
-VALIDITY_DOC = ''
-MULTIPLIER_NAMES = {tuple(spec.constraint_labels)!r}
-#: non-conservative forces (the torque -sigma omega): the module has ``power_dissipated(s, p)``
-HAS_DISSIPATION = {dissipative!r}
-#: model-specific helpers: named parameter sets and the initial state from the physical description
-EXPORTS = ('PRESETS', 'PRESET_SOURCES', 'initial_state')
-#: named parameter sets (SI units); sources in PRESET_SOURCES
-PRESETS = {presets!r}
-PRESET_SOURCES = {dict(sorted(body.preset_sources.items()))!r}
-#: the model file the body comes from
-SOURCE = {model_file!r}
-INPUT_HASH = {digest!r}
-SYMPY_VERSION = {sp.__version__!r}
-#: floating-point operation counts of each function body (SymPy count_ops after CSE)
-OP_COUNTS = {ops!r}
+    return ModuleParts(
+        title=f"{spec.name}, fidelity full: rigid body rolling without slipping, nothing dropped.",
+        hint=regenerate_hint(source_label(body)),
+        produced=f"Produced by derivation/rigid_emit.py (make derive) from the rigid body {spec.name!r}\n"
+                 "through derivation/rigid.py (Lagrange-d'Alembert in body quasi-velocities).",
+        digest=digest,
+        doc=f"{spec.description}\n\nState vector ``s`` (closed state; the pose follows by quadrature):\n{state_doc}\n"
+            f"Pose-extended state (``*_pose`` functions) appends:\n{pose_doc}\nParameter vector ``p``:\n{par_doc}\n"
+            f"Presets:\n{preset_doc}\n"
+            f"Multipliers: the contact force on the body in body axes, {', '.join(spec.constraint_labels)}.\n"
+            "Energy and ``power_dissipated`` in the units of the parameters (J and W for SI parameters).",
+        constants=_constants(system, units, domains, digest),
+        body=_body(system))
 
 
-{rhs_src}
+def _constants(system: rigid.RollingSystem, units: dict, domains: dict, digest: str) -> tuple:
+    """The metadata of a rigid body's module."""
+    spec, body = system.spec, system.body
+    state, pose, params = [str(s) for s in system.state], [str(q) for q in spec.pose], [str(p) for p in spec.params]
+    defaults, default_state = _rigid_defaults(body, params, state)
+    presets = {k: {p: float(v[p]) for p in params} for k, v in sorted(body.presets.items())}
+    return (
+        const("MODEL", spec.name), const("FIDELITY", "full"),
+        Constant("FIDELITY_DOC", '"rigid body rolling without slipping, exact in the orientation (derivation/rigid.py)"',
+                 "what this fidelity is"),
+        const("STATE_NAMES", tuple(state)), const("STATE_UNITS", tuple(units[k] for k in state), "unit of each state"),
+        const("POSE_NAMES", tuple(pose)), const("POSE_UNITS", tuple(units[k] for k in pose)),
+        Constant("POSE_DOC", f'"psi: heading of the horizontal projection of the body axis {tuple(body.heading_axis)}; '
+                 '(x, y): centre of mass"', "what the pose coordinates mean"),
+        const("PARAM_NAMES", tuple(params)), const("PARAM_UNITS", tuple(units[k] for k in params)),
+        const("PARAM_DOMAINS", tuple(domains[k] for k in params), "admissible values of each parameter: 'positive' "
+              "(> 0), 'nonnegative' (>= 0) or 'real' (any finite value)"),
+        const("DEFAULT_PARAMS", defaults, "default parameter set and initial state (the CLI's defaults)"),
+        const("DEFAULT_STATE", default_state),
+        const("RATE_PAIRS", (), "(coordinate, rate) pairs of the state: none (n and omega are not coordinate and "
+              "rate)"),
+        const("TILT_NAMES", ()),
+        const("REVERSAL_EVENTS", ("omega_n",), "the vertical spin omega . n (carried as a state), whose zero "
+              "crossings are the spin reversals"),
+        const("EVENT_NAMES", ()),
+        const("VALIDITY", {}, "largest |value| of each named state where this fidelity holds (empty: everywhere)"),
+        const("VALIDITY_DOC", ""), const("MULTIPLIER_NAMES", tuple(spec.constraint_labels)),
+        const("HAS_DISSIPATION", _dissipative(body), "non-conservative forces (the torque -sigma omega): the "
+              "module has ``power_dissipated(s, p)``"),
+        const("EXPORTS", ("PRESETS", "PRESET_SOURCES", "initial_state"), "model-specific helpers: named parameter "
+              "sets and the initial state from the physical description"),
+        const("PRESETS", presets, "named parameter sets (SI units); sources in PRESET_SOURCES"),
+        const("PRESET_SOURCES", dict(sorted(body.preset_sources.items()))),
+        const("SOURCE", body.source, "the model file the body comes from"),
+        *provenance(digest))
 
-@njit(cache=True)
-def pose_rates(s, p):
-    """Return (psi_dot, x_dot, y_dot) at the pose-extended state ``s`` ({pose_ops} operations)."""
-    out = np.empty({npose})
-{nl.join(unpack_s)}
-{nl.join(unpack_pose)}
-{nl.join(unpack_p)}
-{nl.join(pose_lines)}
-    return out
+
+def _dissipative(body: rigid.RigidBody) -> bool:
+    return body.sigma is not None and body.sigma != 0
 
 
-@njit(cache=True)
-def energy(s, p):
-    """Mechanical energy ({energy_ops} operations)."""
-{nl.join(unpack_s)}
-{nl.join(unpack_p)}
-{nl.join(energy_lines)}
-    return energy
-
-
-{power_src}
-
-@njit(cache=True)
-def multipliers(s, p):
-    """Contact force on the body in body axes ({lam_ops} operations)."""
-    out = np.empty({len(lam)})
-{nl.join(unpack_s)}
-{nl.join(unpack_p)}
-{nl.join(lam_lines)}
-    return out
-{_INITIAL_STATE.format(n=n, n_pose=n + npose, VERTICAL=VERTICAL_CHECK)}''' + body_values_source(body, spec.params) \
-        + drawing.module_source(system) \
-        + jacobian.block_source(rates, system.state, spec.params) \
-        + steady.block_source(body.steady, system.state, spec.params, steady.rigid_invariants(system.state))
+def _body(system: rigid.RollingSystem) -> tuple:
+    """The functions of a rigid body's module, in order."""
+    spec, body = system.spec, system.body
+    n, npose = len(system.state), len(spec.pose)
+    rates = system.state_rhs()
+    allowed = set(system.state) | set(spec.params)
+    unpack_s, unpack_p = unpack([str(s) for s in system.state], "s"), unpack([str(p) for p in spec.params], "p")
+    pose_exprs = [system.pose_rates[q] for q in spec.pose]
+    lam = list(system.multipliers)
+    power = (expression_function("power_dissipated", "s, p", "Power dissipated by the damping torque",
+                                 [sp.sympify(system.power)], ["power"], allowed, (unpack_s, unpack_p), "power"),)
+    return (
+        *rhs_functions(system.state, spec.params, rates, spec.pose, pose_exprs),
+        expression_function("pose_rates", "s, p", "Return (psi_dot, x_dot, y_dot) at the pose-extended state ``s``",
+                            pose_exprs, [f"out[{i}]" for i in range(npose)], allowed | set(spec.pose),
+                            (unpack_s, unpack([str(q) for q in spec.pose], "s", start=n), unpack_p), "out",
+                            (f"    out = np.empty({npose})",)),
+        expression_function("energy", "s, p", "Mechanical energy", [system.energy], ["energy"], allowed,
+                            (unpack_s, unpack_p), "energy"),
+        *(power if _dissipative(body) else ()),
+        expression_function("multipliers", "s, p", "Contact force on the body in body axes", lam,
+                            [f"out[{i}]" for i in range(len(lam))], allowed, (unpack_s, unpack_p), "out",
+                            (f"    out = np.empty({len(lam)})",)),
+        _INITIAL_STATE.format(n=n, n_pose=n + npose, VERTICAL=VERTICAL_CHECK),
+        body_values_source(body, spec.params), drawing.module_source(system),
+        jacobian.block_source(rates, system.state, spec.params),
+        steady.block_source(body.steady, system.state, spec.params, steady.rigid_invariants(system.state)))

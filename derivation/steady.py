@@ -24,6 +24,8 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
+from .codegen import code as _code, unpack as _unpack
+
 
 @dataclass(frozen=True)
 class Steady:
@@ -53,7 +55,6 @@ def block_source(families, state, params, invariants=None, rename=None) -> str:
     invariants : ``{name: expression of the state}`` fixed by construction (default none).
     rename : ``{declared name: state name}`` (the amplitude fidelity's spin ``phi_dot -> A_phi``).
     """
-    from .emit import _code, _unpack  # emit imports this module
     from .names import identifier
 
     rename = rename or {}

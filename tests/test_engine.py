@@ -4,7 +4,7 @@ from dataclasses import replace
 import pytest
 import sympy as sp
 
-from knifeedge.derive import emit, engine, models
+from knifeedge.derive import codegen, engine, models
 from knifeedge.derive.rigid import RollingSystem
 from knifeedge.generated import MODULES
 from knifeedge.derive.truncation import ORDER
@@ -79,4 +79,4 @@ def test_engine_rejects_a_state_that_does_not_close():
 def test_emitter_refuses_undeclared_symbols():
     stray = sp.Symbol("stray")
     with pytest.raises(ValueError, match="undeclared symbols"):
-        emit._cse_block([models.theta + stray], ["ds[0]"], {models.theta})
+        codegen.cse_block([models.theta + stray], ["ds[0]"], {models.theta})
