@@ -671,9 +671,9 @@ def test_local_workers_are_forked_with_the_kernel_loaded():
                 events.append("simulate")
             return simulate(self)
 
-        def logged_start(self, n):
+        def logged_start(self, n, fn):
             events.append("workers")
-            start(self, n)
+            start(self, n, fn)
 
         runspec.RunSpec.simulate, workers.LocalPool.__init__ = logged_simulate, logged_start
         t = ke.sweep(ke.scene("numerical", t_end=40.0), {"phi_dot": [0.1, 0.2, 0.3]}, max_workers=2, progress=False)

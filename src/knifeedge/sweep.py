@@ -33,7 +33,8 @@ import sys
 import time
 import warnings
 from collections import deque
-from collections.abc import Callable, Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
+from dataclasses import dataclass, field
 from operator import itemgetter
 from pathlib import Path
 from typing import Any
@@ -710,6 +711,20 @@ def _heap_frozen():
         gc.unfreeze()
 
 
+@dataclass
+class _Queues:
+    """Where the runs of a sweep without a result are: to claim (``todo``), claimed and not handed out
+    (``ready``), in a task (``inflight``: task id -> run ids), held by another sweep (``others``: run_id -> who)."""
+
+    todo: deque
+    ready: deque = field(default_factory=deque)
+    inflight: dict = field(default_factory=dict)
+    others: dict = field(default_factory=dict)
+    attempts: dict = field(default_factory=dict)  # run_id -> how many times its worker was lost
+    task_ids: Iterator = field(default_factory=itertools.count)
+    last_poll: float = 0.0  # when the runs of ``others`` were last asked for
+
+
 class _Sweep:
     def __init__(self, runs, columns, store, export, executor, max_workers, resume, progress, chunksize):
         self.inputs = [r.inputs for r in runs]
@@ -757,7 +772,7 @@ class _Sweep:
             n = max(1, min(n, n_todo))
             if _can_fork():
                 self._warm()
-            return LocalPool(n), n
+            return LocalPool(n, run_batch), n
         n = self.max_workers
         client = getattr(ex, "_client", None)  # distributed.Client.get_executor()
         if n is None and client is not None:
@@ -803,76 +818,15 @@ class _Sweep:
     # -- the loop -----------------------------------------------------------------
     def run(self) -> SweepTable:
         order = list(self.by_id)
-        if self.store is not None:
-            found, damaged = self.store.read(order, self.since)
-            self.damaged.extend(damaged)
-            self.results.update({rid: {**self._row(rid, {}), **{c: row[c] for c in RESULT_COLUMNS if c in row}}
-                                 for rid, row in found.items()})
+        self._read_store(order)
         for msg in self.damaged:
             warnings.warn(msg, RuntimeWarning, stacklevel=3)
         n_reused = len(self.results)
-        todo = deque(r for r in order if r not in self.results)
-        pool, n_workers = (None, 0)
-        if todo:  # before the progress bar's thread: workers are forked while this process has one thread
-            pool, n_workers = self._pool(len(todo))
-        try:
-            self.bar = _Progress(len(order), n_reused, self.progress)
-        except BaseException:
-            if pool is not None:
-                pool.shutdown()
-            raise
-        attempts: dict = {}
-        others: dict = {}  # run_id -> who holds it
-        ready: deque = deque()  # runs claimed, not handed out yet
-        inflight: dict = {}  # task id -> run ids
-        task_ids = itertools.count()
+        queues = _Queues(deque(r for r in order if r not in self.results))
+        pool, n_workers = self._start(queues.todo, len(order), n_reused)
         interrupted = gone = False
-        last_poll = 0.0
         try:
-            while todo or ready or inflight or others:
-                # hand out work while the pool has room
-                while (ready or todo) and pool.free():
-                    head = ready[0] if ready else todo[0]
-                    k = 1 if head in attempts else self._chunk(len(ready) + len(todo), n_workers, pool)
-                    if len(ready) < k and todo:  # claim this task's runs and the next task's at once
-                        ids = [todo.popleft() for _ in range(min(2 * k - len(ready), len(todo)))]
-                        ready.extend(self._claim(ids, others))
-                        continue
-                    ids = [ready.popleft() for _ in range(min(k, len(ready)))]
-                    t = next(task_ids)
-                    inflight[t] = ids
-                    pool.submit(t, [self.spec_of[r].spec for r in ids])
-                # collect finished tasks
-                for t, out in pool.wait(0.5 if (inflight or not others) else 1.0):
-                    ids = inflight.pop(t)
-                    if isinstance(out, WorkerLost):
-                        self._lost(ids, str(out), attempts, ready)
-                        continue
-                    rows = [self._row(rid, o) for rid, o in zip(ids, out)]
-                    self.times.extend(o["seconds"] for o in out)
-                    if self.store is not None:
-                        self.pending.append((rows, ids, out))
-                    self._record(rows, computed=True)
-                broken = getattr(pool, "broken", None)
-                if broken and not inflight and (todo or ready):  # an executor that takes no more work
-                    for rid in itertools.chain(ready, todo):
-                        self.missing[rid] = f"not computed: the executor is broken ({broken})"
-                    self.bar.missing += len(todo) + len(ready)
-                    if self.store is not None:
-                        self.store.release(list(ready))
-                    todo.clear()
-                    ready.clear()
-                if self.store is not None:
-                    now = time.monotonic()
-                    if self.pending and now - self.written_at >= WRITE_SECONDS:
-                        self._write_now()
-                    self.store.renew()
-                    if others and not todo and not ready and now - last_poll > 0.5:  # another sweep's runs: done?
-                        last_poll = now
-                        waiting = list(others)
-                        others.clear()
-                        ready.extend(self._claim(waiting, others))
-                    self.bar.postfix(waiting=others)
+            self._loop(pool, n_workers, queues)
             if self.store is not None:
                 self._write_now()
                 self.store.check_file()
@@ -881,21 +835,7 @@ class _Sweep:
             gone = isinstance(exc, StoreGone)  # said by the error itself: no store to resume from
             raise
         finally:
-            if pool is not None:
-                pool.shutdown()
-            if self.store is not None:
-                self._write_last(interrupted)
-            self.bar.close()
-            rows = [self.results.get(inp["run_id"]) or _missing_row(inp, self.missing.get(
-                inp["run_id"], "not computed: the sweep was interrupted")) for inp in self.inputs]
-            if self.export is not None:
-                write_text(self.export, [r for r in rows if r["status"] != MISSING], self.columns)
-            if interrupted and self.progress is True and not gone:
-                where = self.store.path if self.store is not None else None
-                saved = (f"; the finished runs are in {where}: run the same sweep again to resume"
-                         if where is not None else "")
-                print(f"sweep: interrupted after {len(self.results)}/{len(order)} runs{saved}", file=sys.stderr,
-                      flush=True)
+            rows = self._finish(pool, interrupted, gone, len(order))
         table = SweepTable(self.columns, rows, n_computed=self.n_computed, n_reused=len(self.results) - self.n_computed,
                            n_missing=len(self.inputs) - sum(r["status"] != MISSING for r in rows),
                            store=self.store.path if self.store is not None else None, damaged=self.damaged,
@@ -904,6 +844,107 @@ class _Sweep:
             warnings.warn(f"sweep: {table.n_missing} run(s) have no result ({next(iter(self.missing.values()))}); "
                           "run the same sweep again to compute them", RuntimeWarning, stacklevel=3)
         return table
+
+    def _read_store(self, order: list) -> None:
+        """The rows of ``order`` the store holds already (written since ``self.since``), as results."""
+        if self.store is None:
+            return
+        found, damaged = self.store.read(order, self.since)
+        self.damaged.extend(damaged)
+        self.results.update({rid: {**self._row(rid, {}), **{c: row[c] for c in RESULT_COLUMNS if c in row}}
+                             for rid, row in found.items()})
+
+    def _start(self, todo, n_total: int, n_reused: int) -> tuple:
+        """``(pool, n_workers)`` (``(None, 0)`` with nothing to do), then the progress bar."""
+        pool, n_workers = (None, 0)
+        if todo:  # before the progress bar's thread: workers are forked while this process has one thread
+            pool, n_workers = self._pool(len(todo))
+        try:
+            self.bar = _Progress(n_total, n_reused, self.progress)
+        except BaseException:
+            if pool is not None:
+                pool.shutdown()
+            raise
+        return pool, n_workers
+
+    def _loop(self, pool, n_workers: int, q: _Queues) -> None:
+        """Until every run has a result or none can get one: hand out work, collect it, keep the store."""
+        while q.todo or q.ready or q.inflight or q.others:
+            self._hand_out(pool, n_workers, q)
+            for t, out in pool.wait(0.5 if (q.inflight or not q.others) else 1.0):
+                self._received(q.inflight.pop(t), out, q)
+            self._drop_if_broken(pool, q)
+            if self.store is not None:
+                self._keep_store(q)
+
+    def _hand_out(self, pool, n_workers: int, q: _Queues) -> None:
+        """Hand out work while the pool has room."""
+        while (q.ready or q.todo) and pool.free():
+            head = q.ready[0] if q.ready else q.todo[0]
+            k = 1 if head in q.attempts else self._chunk(len(q.ready) + len(q.todo), n_workers, pool)
+            if len(q.ready) < k and q.todo:  # claim this task's runs and the next task's at once
+                ids = [q.todo.popleft() for _ in range(min(2 * k - len(q.ready), len(q.todo)))]
+                q.ready.extend(self._claim(ids, q.others))
+                continue
+            ids = [q.ready.popleft() for _ in range(min(k, len(q.ready)))]
+            t = next(q.task_ids)
+            q.inflight[t] = ids
+            pool.submit(t, [self.spec_of[r].spec for r in ids])
+
+    def _received(self, ids: list, out, q: _Queues) -> None:
+        """The outcomes of a finished task (or the news that its worker was lost)."""
+        if isinstance(out, WorkerLost):
+            self._lost(ids, str(out), q.attempts, q.ready)
+            return
+        rows = [self._row(rid, o) for rid, o in zip(ids, out)]
+        self.times.extend(o["seconds"] for o in out)
+        if self.store is not None:
+            self.pending.append((rows, ids, out))
+        self._record(rows, computed=True)
+
+    def _drop_if_broken(self, pool, q: _Queues) -> None:
+        """An executor that takes no more work: the runs not handed out stay without a result."""
+        broken = getattr(pool, "broken", None)
+        if broken and not q.inflight and (q.todo or q.ready):
+            for rid in itertools.chain(q.ready, q.todo):
+                self.missing[rid] = f"not computed: the executor is broken ({broken})"
+            self.bar.missing += len(q.todo) + len(q.ready)
+            if self.store is not None:
+                self.store.release(list(q.ready))
+            q.todo.clear()
+            q.ready.clear()
+
+    def _keep_store(self, q: _Queues) -> None:
+        """Write the rows waiting (every WRITE_SECONDS), renew the claims, take over the runs another sweep left."""
+        now = time.monotonic()
+        if self.pending and now - self.written_at >= WRITE_SECONDS:
+            self._write_now()
+        self.store.renew()
+        if q.others and not q.todo and not q.ready and now - q.last_poll > 0.5:  # another sweep's runs: done?
+            q.last_poll = now
+            waiting = list(q.others)
+            q.others.clear()
+            q.ready.extend(self._claim(waiting, q.others))
+        self.bar.postfix(waiting=q.others)
+
+    def _finish(self, pool, interrupted: bool, gone: bool, n_total: int) -> list:
+        """Shut the pool down, write the last rows and the export, close the bar; returns the rows in grid order."""
+        if pool is not None:
+            pool.shutdown()
+        if self.store is not None:
+            self._write_last(interrupted)
+        self.bar.close()
+        rows = [self.results.get(inp["run_id"]) or _missing_row(inp, self.missing.get(
+            inp["run_id"], "not computed: the sweep was interrupted")) for inp in self.inputs]
+        if self.export is not None:
+            write_text(self.export, [r for r in rows if r["status"] != MISSING], self.columns)
+        if interrupted and self.progress is True and not gone:
+            where = self.store.path if self.store is not None else None
+            saved = (f"; the finished runs are in {where}: run the same sweep again to resume"
+                     if where is not None else "")
+            print(f"sweep: interrupted after {len(self.results)}/{n_total} runs{saved}", file=sys.stderr,
+                  flush=True)
+        return rows
 
     def _write(self) -> int:
         """Write the rows received since the last write, inside the store's transaction the caller opened; returns

@@ -28,6 +28,7 @@ cache first.
 from __future__ import annotations
 
 import concurrent.futures as cf
+import importlib
 import os
 import pickle
 import selectors
@@ -74,21 +75,25 @@ def _die_with_parent(parent: int) -> None:
     threading.Thread(target=watch, name="knifeedge-parent-watch", daemon=True).start()
 
 
-def worker_main(parent: int) -> None:
-    """Entry of a worker started as a new interpreter: the protocol runs on its stdin and stdout."""
+def worker_main(parent: int, fn: str) -> None:
+    """Entry of a worker started as a new interpreter: the protocol runs on its stdin and stdout.
+
+    ``fn``: ``"module:name"`` of the function that runs a task's list of runs (the pool's, :func:`_reference`).
+    """
+    module, _, name = fn.partition(":")
+    run = getattr(importlib.import_module(module), name)
     proto_out = os.fdopen(os.dup(1), "wb", buffering=0)
     os.dup2(2, 1)  # anything printed goes to stderr, not into the protocol
     sys.stdout = sys.stderr
     proto_in = os.fdopen(os.dup(0), "rb", buffering=0)
-    _serve(proto_in, proto_out, parent)
+    _serve(proto_in, proto_out, parent, run)
 
 
-def _serve(proto_in, proto_out, parent: int) -> None:
-    """Loop of a worker: read a task, run it, write the outcomes; leave with ``os._exit``."""
+def _serve(proto_in, proto_out, parent: int, run_batch: Callable) -> None:
+    """Loop of a worker: read a task, run it (``run_batch(runs)``), write the outcomes; leave with ``os._exit``."""
     try:
         signal.signal(signal.SIGINT, signal.SIG_IGN)
         _die_with_parent(parent)
-        from .sweep import run_batch
 
         def read_exact(n: int) -> bytes | None:
             buf = b""
@@ -122,7 +127,7 @@ class _Forked:
     """A worker forked from this process (Linux, when no other thread runs): it starts with the package and the
     compiled kernels already loaded.  Offers the part of ``subprocess.Popen`` the pool uses."""
 
-    def __init__(self):
+    def __init__(self, fn: Callable):
         parent = os.getpid()
         r_task, w_task = os.pipe()
         r_out, w_out = os.pipe()
@@ -130,7 +135,7 @@ class _Forked:
         if pid == 0:  # the worker
             os.close(w_task)
             os.close(r_out)
-            _serve(os.fdopen(r_task, "rb", buffering=0), os.fdopen(w_out, "wb", buffering=0), parent)
+            _serve(os.fdopen(r_task, "rb", buffering=0), os.fdopen(w_out, "wb", buffering=0), parent, fn)
         os.close(r_task)
         os.close(w_out)
         self.pid = pid
@@ -161,13 +166,20 @@ def _can_fork() -> bool:
     return sys.platform.startswith("linux") and threading.active_count() == 1 and hasattr(os, "fork")
 
 
+def _reference(fn: Callable) -> str:
+    """``"module:name"`` of a module-level function, which a new interpreter imports (:func:`worker_main`)."""
+    if getattr(importlib.import_module(fn.__module__), fn.__qualname__, None) is not fn:
+        raise ValueError(f"`fn` must be a module-level function (a worker imports it by name), got {fn!r}")
+    return f"{fn.__module__}:{fn.__qualname__}"
+
+
 class _Worker:
-    def __init__(self, env: dict):
+    def __init__(self, env: dict, fn: Callable):
         if _can_fork():
-            self.proc = _Forked()
+            self.proc = _Forked(fn)
         else:
-            code = ("import sys; sys.path[:0] = %r; from knifeedge.workers import worker_main; worker_main(%d)"
-                    % ([p for p in sys.path if p], os.getpid()))
+            code = ("import sys; sys.path[:0] = %r; from knifeedge.workers import worker_main; worker_main(%d, %r)"
+                    % ([p for p in sys.path if p], os.getpid(), _reference(fn)))
             self.proc = subprocess.Popen([sys.executable, "-c", code], stdin=subprocess.PIPE,
                                          stdout=subprocess.PIPE, env=env, close_fds=True)
         os.set_blocking(self.proc.stdout.fileno(), False)
@@ -237,7 +249,8 @@ class _Worker:
 
 
 class LocalPool:
-    """``n`` worker processes; a dead worker is replaced and its task reported lost.
+    """``n`` worker processes running ``fn`` (a module-level function of a task's list of runs, which returns
+    their outcomes); a dead worker is replaced and its task reported lost.
 
     Use :meth:`submit` (returns False if no worker is free for more work) and
     :meth:`wait`, which returns ``[(task_id, outcomes or WorkerLost)]``.
@@ -245,8 +258,8 @@ class LocalPool:
 
     depth = 2  # tasks queued per worker, so that it never waits for the parent
 
-    def __init__(self, n: int):
-        self.n = int(n)
+    def __init__(self, n: int, fn: Callable):
+        self.n, self.fn = int(n), fn
         self.env = dict(os.environ)
         self.sel = selectors.DefaultSelector()
         self.workers: list = []
@@ -260,7 +273,7 @@ class LocalPool:
         return self.n * self.depth
 
     def _start(self) -> None:
-        w = _Worker(self.env)
+        w = _Worker(self.env, self.fn)
         self.workers.append(w)
         self.sel.register(w.proc.stdout, selectors.EVENT_READ, w)
 
