@@ -428,7 +428,27 @@ class FrameRenderer:
 
     # layout and the artists that stay
     def _setup(self, title: str) -> None:
-        mo, fig = self.mo, self.fig
+        self._scene_axes()
+        self._top_view()
+        self._spin_gauge()
+        self._texts(title)
+        self.body = [*self.seg_lines, *self.outline_lines, self.mass_dots, self.contact_mark]
+        self.overlay = [self.arc, self.arc_head, self.trail, self.tv_mark, self.spin_done, self.spin_dot]
+        # the texts that change every frame are set on matplotlib Text artists (their position, size, colour and
+        # content) but written into the pixels by pillow: matplotlib's text layout costs ~7 ms a text, 3/4 of a frame
+        self.labels = [self.spin_text, self.time_text, self.speed_text]
+        self._label_fonts = [self._pil_font(a) for a in self.labels]
+        # blitting: the moving artists are drawn over a background drawn once (fixed camera and limits)
+        # (the table too: what hangs below it is drawn first, then the translucent table, then the rest)
+        self.moving = [self.table, self.table_trail, *self.body, *self.overlay]
+        for a in self.moving:
+            a.set_animated(True)
+        self.canvas.draw()
+        self.background = self.canvas.copy_from_bbox(self.fig.bbox)
+
+    def _scene_axes(self) -> None:
+        """The 3D view: limits around everything drawn, the table, and the body's artists."""
+        fig = self.fig
         allp = np.concatenate([self.pts.reshape(-1, 3), self.outl.reshape(-1, 3)]) if self.outl.size else \
             self.pts.reshape(-1, 3)
         centre = 0.5 * (allp.min(0) + allp.max(0))
@@ -467,8 +487,9 @@ class FrameRenderer:
         self.arc_head = ax.plot([], [], [], color="C3", lw=2.0)[0]
         self.table_trail = ax.plot([], [], [], color="C3", lw=1.0)[0]  # the recent contact path (camera following)
 
-        # top view of the contact path, true scale
-        tv = fig.add_axes((0.66, 0.55, 0.31, 0.33))
+    def _top_view(self) -> None:
+        """The contact path seen from above, true scale."""
+        tv = self.fig.add_axes((0.66, 0.55, 0.31, 0.33))
         path = self.run_path
         tv.plot(path[:, 0], path[:, 1], color="0.85", lw=0.5)
         self.trail = tv.plot([], [], color="C3", lw=0.9)[0]
@@ -485,8 +506,10 @@ class FrameRenderer:
         tv.set_title(f"contact point on the table, from above\n(true scale, box {1.2 * span:.2g} wide; red: "
                      "last 8 frames)", fontsize=7)
 
-        # spin gauge: the spin rate against time, with a cursor
-        ga = fig.add_axes((0.66, 0.12, 0.31, 0.27))
+    def _spin_gauge(self) -> None:
+        """The spin rate against time, with a cursor, and the reversals."""
+        mo = self.mo
+        ga = self.fig.add_axes((0.66, 0.12, 0.31, 0.27))
         ga.plot(mo.spin_t, mo.spin_y, color="0.75", lw=0.8)
         self.spin_done = ga.plot([], [], color="C3", lw=1.2)[0]
         self.spin_dot = ga.plot([], [], "o", color="C3", ms=5)[0]
@@ -501,6 +524,9 @@ class FrameRenderer:
         self.spin_text = ga.text(0.5, 1.02, "", transform=ga.transAxes, fontsize=7, color="C3", ha="center",
                                  va="bottom")
 
+    def _texts(self, title: str) -> None:
+        """The title, what drew the body, the magnification, and the texts of time and speed."""
+        mo, fig = self.mo, self.fig
         fig.text(0.01, 0.975, title or f"{mo.model.name}: the body drawn from its own simulation", fontsize=9,
                  va="top", weight="bold")
         fig.text(0.01, 0.012, f"drawn by {mo.drawn_by}", fontsize=6, color="0.3", va="bottom")
@@ -509,22 +535,9 @@ class FrameRenderer:
         fig.text(0.01, 0.045, mag, fontsize=7, color="C0" if self.mag != 1 else "0.3", va="bottom")
         self.time_text = fig.text(0.01, 0.92, "", fontsize=9, va="top", family="monospace")
         self.speed_text = fig.text(0.01, 0.875, "", fontsize=7, va="top")
-        # blitting: the moving artists are drawn over a background drawn once (fixed camera and limits)
-        # (the table too: what hangs below it is drawn first, then the translucent table, then the rest)
         if self.follow:
             fig.text(0.01, 0.078, "camera follows the body: drawn relative to its contact point, its path of the "
                      "last 8 frames in red on the table", fontsize=6, color="0.3", va="bottom")
-        self.body = [*self.seg_lines, *self.outline_lines, self.mass_dots, self.contact_mark]
-        self.overlay = [self.arc, self.arc_head, self.trail, self.tv_mark, self.spin_done, self.spin_dot]
-        # the texts that change every frame are set on matplotlib Text artists (their position, size, colour and
-        # content) but written into the pixels by pillow: matplotlib's text layout costs ~7 ms a text, 3/4 of a frame
-        self.labels = [self.spin_text, self.time_text, self.speed_text]
-        self._label_fonts = [self._pil_font(a) for a in self.labels]
-        self.moving = [self.table, self.table_trail, *self.body, *self.overlay]
-        for a in self.moving:
-            a.set_animated(True)
-        self.canvas.draw()
-        self.background = self.canvas.copy_from_bbox(fig.bbox)
 
     def render(self, k: int) -> np.ndarray:
         """Draw frame ``k``; returns its pixels, shape (height, width, 3), uint8."""
