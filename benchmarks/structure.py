@@ -99,6 +99,41 @@ def cycles(edges: dict) -> list:
     return sorted(out)
 
 
+#: the layers, lowest first (issue 25: derivation -> generated -> models -> integrators -> simulate ->
+#: sweep/scenes/figures/animation -> cli), each a tuple of module-name prefixes; a module imports only modules
+#: of its own layer or lower ones.  The first layer holds the runtime's helpers that the derivation shares
+#: (the seal of a generated module, the checks of a rigid body's numbers).
+LAYERS = (
+    ("knifeedge.modulecheck", "knifeedge.bodies", "knifeedge._validate", "knifeedge._process"),
+    ("knifeedge.derive",),
+    ("knifeedge.generated",),
+    ("knifeedge.models",),
+    ("knifeedge.integrators",),
+    ("knifeedge.simulate", "knifeedge.runspec", "knifeedge.sections", "knifeedge.reversal", "knifeedge.stability",
+     "knifeedge.lyapunov", "knifeedge.background", "knifeedge.store"),
+    ("knifeedge.sweep", "knifeedge.workers", "knifeedge.scenes", "knifeedge.figures", "knifeedge.animation"),
+    ("knifeedge.cli", "knifeedge.__main__", "knifeedge"),
+)
+
+
+def layer(module: str) -> int:
+    """The index in :data:`LAYERS` of ``module`` (by its longest matching prefix)."""
+    best, found = -1, None
+    for i, prefixes in enumerate(LAYERS):
+        for p in prefixes:
+            below = module.startswith(p + ".") and p != "knifeedge"  # the package's __init__ only, not all
+            if (module == p or below) and len(p) > best:
+                best, found = len(p), i
+    if found is None:
+        raise ValueError(f"module {module!r} is in no layer: add it to LAYERS in benchmarks/structure.py")
+    return found
+
+
+def upward_imports(edges: dict) -> list:
+    """``(module, imported)`` pairs where a module imports one of a higher layer."""
+    return sorted((m, t) for m, ts in edges.items() for t in ts if layer(t) > layer(m))
+
+
 @dataclass(frozen=True)
 class Function:
     path: str  # relative to the root
@@ -175,6 +210,10 @@ def main() -> None:
     print(f"import cycles: {len(found)}")
     for group in found:
         print("    " + " <-> ".join(group))
+    upward = upward_imports(graph())
+    print(f"imports against the layers (LAYERS): {len(upward)}")
+    for m, t in upward:
+        print(f"    {m} -> {t}")
     print(f"functions over {LONG} lines: {len(long)} "
           f"({sum(1 for f in long if not f.path.startswith(INTEGRATORS + '/'))} outside integrators/)")
     for f in long:

@@ -59,6 +59,16 @@ def test_no_import_cycles_but_the_integrators_listed(graph):
     assert structure.cycles(rest) == []
 
 
+def test_imports_follow_the_layers(graph):
+    """derivation -> generated -> models -> integrators -> simulate -> sweep/scenes/figures/animation -> cli: a
+    module imports nothing of a higher layer (but the integrators' listed imports)."""
+    assert [e for e in structure.upward_imports(graph) if e not in INTEGRATOR_CYCLE_IMPORTS] == []
+    assert structure.upward_imports({"knifeedge.models": {"knifeedge.simulate", "knifeedge.generated.x"}}) == [
+        ("knifeedge.models", "knifeedge.simulate")]
+    with pytest.raises(ValueError, match="no layer"):
+        structure.layer("knifeedge.newcomer")
+
+
 def test_the_listed_integrator_imports_still_exist(graph):
     """An import of INTEGRATOR_CYCLE_IMPORTS that is gone is removed from the list (the list only shrinks)."""
     gone = [edge for edge in sorted(INTEGRATOR_CYCLE_IMPORTS) if edge[1] not in graph.get(edge[0], ())]
