@@ -61,12 +61,12 @@ def _error(n, spin, want) -> float:
 def knifeedge_side(repeats: int, want) -> dict:
     """Build and generate (SymPy), first call (compile or cache load), median simulate time, error."""
     import knifeedge as ke
-    from knifeedge.derive import rigid, rigid_emit
+    from knifeedge.derive import codegen, rigid, rigid_emit
     from knifeedge.derive.celt import celt
 
     t0 = time.perf_counter()
     system = rigid.derive(celt())
-    source = rigid_emit.module_source(system)
+    source = codegen.module_text(rigid_emit.module_parts(system))
     build = time.perf_counter() - t0
     m = ke.load("celt")
     p = m.preset("kane_levinson_1982")

@@ -22,8 +22,8 @@ from knifeedge.modulecheck import seal
 from . import (averaging, codegen, drawing, engine, jacobian, kkt_emit, models, names, rigid, rigid_emit,
                rigid_small, rigid_small_emit, steady, truncation)
 from .averaging import AmplitudeSystem
-from .codegen import (ModuleParts, const, cse_block, expression_function, finish, lines_function, module_text,
-                      provenance, rhs_functions, unpack)
+from .codegen import (ModuleParts, const, cse_block, expression_function, finish, lines_function, provenance,
+                      rhs_functions, unpack)
 from .fidelities import FIDELITIES
 
 GENERATOR = "derivation/emit.py (make derive)"
@@ -197,11 +197,6 @@ def module_parts(system, fidelity: str, frequencies=None) -> ModuleParts:
         return rigid_emit.module_parts(system) if fidelity == "full" else \
             rigid_small_emit.module_parts(system, fidelity)
     return point_mass_parts(system, fidelity, frequencies)
-
-
-def module_source(system, fidelity: str, frequencies=None) -> str:
-    """Source of the generated module of ``system`` (unsealed; :func:`module_parts`)."""
-    return module_text(module_parts(system, fidelity, frequencies))
 
 
 def point_mass_parts(system, fidelity: str, frequencies=None) -> ModuleParts:

@@ -18,7 +18,7 @@ from pathlib import Path
 import sympy as sp
 
 from . import codegen, drawing, jacobian, rigid, steady
-from .codegen import (USER_MODULE_PREFIX, Constant, ModuleParts, const, cse_block, expression_function, module_text,
+from .codegen import (USER_MODULE_PREFIX, Constant, ModuleParts, const, cse_block, expression_function,
                       provenance, regenerate_hint, rhs_functions, unpack)
 
 
@@ -121,11 +121,6 @@ def body_values(p):
 {nl.join(lines)}
     return (out[0], out[1], out[2], (out[3:6], out[6:9], out[9:12]), {"out[12]" if height is not None else "None"})
 '''
-
-
-def module_source(system: rigid.RollingSystem) -> str:
-    """Source of the generated module of a derived rigid body, fidelity ``full`` (unsealed)."""
-    return module_text(module_parts(system))
 
 
 def _rigid_defaults(body: rigid.RigidBody, params: list, state: list) -> tuple:

@@ -16,7 +16,7 @@ from pathlib import Path
 import sympy as sp
 
 from . import codegen, jacobian, rigid, rigid_emit, rigid_small, steady
-from .codegen import (Function, ModuleParts, const, expression_function, module_text, provenance, regenerate_hint,
+from .codegen import (Function, ModuleParts, const, expression_function, provenance, regenerate_hint,
                       rhs_functions, unpack)
 from .rigid_emit import VERTICAL_CHECK, _dissipative
 
@@ -237,8 +237,3 @@ def module_parts(system: rigid_small.SmallTiltSystem, fidelity: str) -> ModulePa
             const("PRESET_SOURCES", dict(sorted((k, body.preset_sources.get(k, "")) for k in presets))),
             const("SOURCE", body.source), *provenance(digest)),
         body=_body(system, fidelity))
-
-
-def module_source(system: rigid_small.SmallTiltSystem, fidelity: str) -> str:
-    """Source of the generated module of a small-tilt fidelity of a rigid body (unsealed)."""
-    return module_text(module_parts(system, fidelity))

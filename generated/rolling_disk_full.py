@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:73def04884d830ee6cc54b5752ef1a419d7d871fd8b0185888e5fe3803d4d818
+SymPy 1.14.0; input hash sha256:d1aa8c4715f68424d6449893b8099573a0fa62e8ffc31eca1d4d30fbe8584b83
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table: heading q1, lean q2 from the vertical, rotation q3 about the axle, contact point (x, y).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '73def04884d830ee6cc54b5752ef1a419d7d871fd8b0185888e5fe3803d4d818'
+INPUT_HASH = 'd1aa8c4715f68424d6449893b8099573a0fa62e8ffc31eca1d4d30fbe8584b83'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -673,4 +673,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '936afab94b76fda6d7249ec9010df355dfdbfc6f808da2c7697276b1122cadaf'
+MODULE_SHA256 = '3087222516ccdd33df10fd4e2b68a2f42eeaf1ccf6d8cb7c949cddff24f2d572'

@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:9b6b2c4a485e388f506b76331f9b42f3dde825c333b7483c6dac17b9c9ab6701
+SymPy 1.14.0; input hash sha256:ef536be91172861547d09a15a761257bdef2faeed9de35fe88419b60d41c4d1a
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '9b6b2c4a485e388f506b76331f9b42f3dde825c333b7483c6dac17b9c9ab6701'
+INPUT_HASH = 'ef536be91172861547d09a15a761257bdef2faeed9de35fe88419b60d41c4d1a'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -427,4 +427,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '428ea6283578a07571ebff25420b70cbd630ab447726c2b3800c1c111689205e'
+MODULE_SHA256 = 'ab1037c5bd6dfb1b09e26e94f14757dc63083b374f918356180c70c3ce7358a1'

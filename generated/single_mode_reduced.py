@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py and derivation/truncation.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:bbb62c19899d12a47292114857b31d0df7f820eed3af475675aae5f9aeeff306
+SymPy 1.14.0; input hash sha256:e7b5bb5b4249116418ac36c1b16ffae69300fa244128f2a0d2696af3c01656c4
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'bbb62c19899d12a47292114857b31d0df7f820eed3af475675aae5f9aeeff306'
+INPUT_HASH = 'e7b5bb5b4249116418ac36c1b16ffae69300fa244128f2a0d2696af3c01656c4'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -409,4 +409,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '326b6c4d71532047d087d688635b40f2888612f82161d5b12486ca84bbdfbae0'
+MODULE_SHA256 = 'a0baf623035e70120bcb10a804ec899312c3eb61fddc1ad087ed403887bc51fe'

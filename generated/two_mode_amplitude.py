@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:c0e03f0537665918d25b2f364c5e9bff09b3594e7cb84f7180d9ae08a18ed426
+SymPy 1.14.0; input hash sha256:f8b878bb6250ffc99e39848fe6a76ade874de266178bb787b7cdc76a9d117a13
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -71,7 +71,7 @@ HAS_DISSIPATION = False
 EXPORTS = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy', 'log_A1_A2')
-INPUT_HASH = 'c0e03f0537665918d25b2f364c5e9bff09b3594e7cb84f7180d9ae08a18ed426'
+INPUT_HASH = 'f8b878bb6250ffc99e39848fe6a76ade874de266178bb787b7cdc76a9d117a13'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 24, 'constants': 14, 'rhs_q': 10, 'energy': 12, 'invariants': 19, 'frequencies': 12, 'growth_rates': 11, 'drive_rates': 12}
@@ -353,4 +353,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'c0ecac8b290eea0af22187c91822b9acb976347ee9a83812a1c20a8593f218aa'
+MODULE_SHA256 = 'f7e1e9c3cb53e5c3e4aad0be561f0c6e743170b604ede0e0bd0864da2a80bb7f'

@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:0f4ded6c4d3465163b70511d2efb4335b2ca39793ae03959ad780ab3b6f4be79
+SymPy 1.14.0; input hash sha256:7e914b81cb19889800c1ae312a661fcb3164e6435493efa1d794a22a2681c7ec
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -66,7 +66,7 @@ MULTIPLIER_NAMES = ('Const22', 'Const23')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '0f4ded6c4d3465163b70511d2efb4335b2ca39793ae03959ad780ab3b6f4be79'
+INPUT_HASH = '7e914b81cb19889800c1ae312a661fcb3164e6435493efa1d794a22a2681c7ec'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -920,4 +920,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '3d6e0a94cf855379681e6cb4a32bf4647455a33e384ec96a3b72f89682f5eebc'
+MODULE_SHA256 = '6bb7fc5442349557db76f193671b0ca0a41602ef10223b93716e99dd170badc1'

@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py and derivation/truncation.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:505a2023716f381f11f5e67bd2f8dd00589feff3b0830dc83a902e5b1ed7d2a3
+SymPy 1.14.0; input hash sha256:82b44f1cacefe76fc7f5c5a4e137de4095f92948444a2a9657998e3cd34bdd3b
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -66,7 +66,7 @@ MULTIPLIER_NAMES = ('Const22', 'Const23')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '505a2023716f381f11f5e67bd2f8dd00589feff3b0830dc83a902e5b1ed7d2a3'
+INPUT_HASH = '82b44f1cacefe76fc7f5c5a4e137de4095f92948444a2a9657998e3cd34bdd3b'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -705,4 +705,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '54be7db878d9717297edcc3820b2965e7962d6eab143d375058129afa04d71f4'
+MODULE_SHA256 = '4369d4d012beec5061bfc4d83f088ba5aaf8bf77fcea2ca9ebeaad89c63ec810'
