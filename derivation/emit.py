@@ -20,7 +20,7 @@ from sympy.printing.pycode import PythonCodePrinter
 
 from knifeedge.modulecheck import seal
 
-from . import averaging, drawing, engine, jacobian, models, names, steady, truncation
+from . import averaging, drawing, engine, input_slots, jacobian, models, names, steady, truncation
 from .averaging import AmplitudeSystem
 from .fidelities import FIDELITIES
 
@@ -104,6 +104,7 @@ def input_hash(spec: engine.ModelSpec, fidelity: str) -> str:
         *((sp.srepr(spec.dissipation),) if spec.dissipation is not None else ()),
         *(sp.srepr(sp.sympify(f)) for f in spec.forces),
         *((drawing.source_text(),) if fidelity != "amplitude" else ()),
+        *((inspect.getsource(input_slots), *map(sp.srepr, spec.inputs)) if getattr(spec, "inputs", ()) else ()),
     ):
         h.update(part.encode())
         h.update(b"\0")
@@ -197,7 +198,7 @@ def _metadata(spec: engine.ModelSpec, fidelity: str, state: list, units: list, d
     """
     rename = rename if rename is not None else {n: n for n in map(str, spec.state)}
     rename = {**rename, **{str(e): str(e) for e in events}}
-    params = [str(q) for q in spec.params]
+    params = [str(q) for q in spec.params if not isinstance(q, input_slots.Slot)]  # not the inputs' slots
     pose = [str(q) for q in spec.pose] if fidelity != "amplitude" else []
     default_params = {n: _number(spec.lookup(spec.defaults, q)) for n, q in zip(params, spec.params)
                       if spec.lookup(spec.defaults, q) is not None}
@@ -223,7 +224,7 @@ def _metadata(spec: engine.ModelSpec, fidelity: str, state: list, units: list, d
         f"PARAM_NAMES = {tuple(params)!r}",
         f"PARAM_UNITS = {tuple(unit(spec, q) for q in params)!r}",
         "#: admissible values of each parameter: 'positive' (> 0) or 'real' (any finite value)",
-        f"PARAM_DOMAINS = {tuple(engine._param_domain(spec, q) for q in spec.params)!r}",
+        f"PARAM_DOMAINS = {tuple(engine._param_domain(spec, q) for q in spec.params[:len(params)])!r}",
         "#: default parameter set and initial state (the CLI's defaults); empty if the model declares none",
         f"DEFAULT_PARAMS = {default_params!r}",
         f"DEFAULT_STATE = {defaults_state!r}",
@@ -244,7 +245,7 @@ def _metadata(spec: engine.ModelSpec, fidelity: str, state: list, units: list, d
         "#: model-specific helpers defined at the end of this module",
         f"EXPORTS = {tuple(spec.exports)!r}",
     ]
-    return "\n".join(lines)
+    return "\n".join(lines) + input_slots.metadata(spec)
 
 
 def _state_defaults(spec: engine.ModelSpec, state) -> dict:
@@ -400,6 +401,8 @@ def module_source(system, fidelity: str, frequencies=None) -> str:
     from . import rigid, rigid_emit  # rigid bodies: derivation/rigid.py
     if isinstance(system, rigid.RollingSystem):
         return rigid_emit.module_source(system, fidelity)
+    if getattr(system.spec, "inputs", ()):  # the inputs read from parameter slots, affine in the time (input_slots.py)
+        system = input_slots.lowered(system)
     spec = system.spec
     state = [str(s) for s in system.state]
     pose = [str(q) for q in spec.pose]
@@ -458,7 +461,8 @@ def module_source(system, fidelity: str, frequencies=None) -> str:
     if system.power_input is not None:
         src_, extra_ops["power_input"] = _state_function(
             "power_input", [system.power_input], system.state, spec.params,
-            "Rate at which the explicit time and the rheonomic constraints add energy, -dL/dt - lambda . b",
+            "Rate at which the explicit time, the rheonomic constraints and the inputs add energy, "
+            "-dL/dt - lambda . b + q_dot . Q_inputs",
             scalar=True, args=args)
         extra_src += src_
     extra_src += _extra_source(spec)

@@ -176,6 +176,31 @@ def assignments(items, what: str = "--set") -> dict:
     return out
 
 
+def input_assignments(items, model) -> dict | None:
+    """``["tau=0.5", "f=samples.csv"]`` -> ``{"tau": 0.5, "f": (t, u)}`` (``None`` for a model without inputs
+    given none): a number, or a CSV file of samples read by :func:`knifeedge.inputs.read_samples`."""
+    from .inputs import read_samples
+
+    if not items and not model.input_names:
+        return None
+    out = {}
+    for item in items:
+        name, sep, text = item.partition("=")
+        name, text = name.strip(), text.strip()
+        if not sep or not name:
+            raise ValueError(f"`--input` expects NAME=VALUE or NAME=FILE.csv, got {item!r}")
+        if name in out:
+            raise ValueError(f"`--input` gives {name!r} twice; give each input once")
+        if text.lower().endswith(".csv"):
+            out[name] = read_samples(Path(text), name)
+        else:
+            try:
+                out[name] = number(text)
+            except ValueError as exc:
+                raise ValueError(f"`--input {name}`: {exc} (or give a samples file NAME=FILE.csv)") from None
+    return out
+
+
 def grid_assignments(items) -> dict:
     """``["phi_dot=0.05,0.1,0.2"]`` -> ``{"phi_dot": [0.05, 0.1, 0.2]}``; also ``NAME=START:STOP:N`` (geometric).
 
@@ -246,6 +271,9 @@ def _simulate_args(sub: argparse.ArgumentParser) -> None:
                      help="parameters and initial state by name, e.g. --set D=0.5 phi_dot=0.2 alpha=pi/4. Defaults: "
                           "the model's own (its module's DEFAULT_PARAMS and DEFAULT_STATE; for the knife edges the "
                           "paper's scenes: tilts 1e-3, rates 0, spin 0.1)")
+    sub.add_argument("--input", nargs="+", action="extend", default=[], metavar="NAME=VALUE|NAME=FILE.csv",
+                     help="a run-time input of the model (model.input_names): a number, or a CSV file of samples "
+                          "(columns t, value; interpolated piecewise linearly)")
     sub.add_argument("--t-end", type=number, default=300.0, help="end time in sqrt(ell/g) (default: %(default)s)")
     sub.add_argument("--t-start", type=number, default=0.0, help="start time (default: %(default)s)")
     sub.add_argument("--method", default="DOP853", help="integration method, see knifeedge.METHODS (default: %(default)s)")
@@ -308,7 +336,7 @@ def simulate_cmd(args) -> int:
     t_eval = np.linspace(args.t_start, args.t_end, args.n_eval)
     r = simulate(m, y0, (args.t_start, args.t_end), p, method=args.method, rtol=args.rtol, atol=args.atol,
                  t_eval=t_eval, max_step=args.max_step, h=args.h, max_steps=args.max_steps,
-                 error_control=args.error_control)
+                 error_control=args.error_control, inputs=input_assignments(args.input, m))
     print(f"{m.name} ({m.fidelity}{', pose' if m.pose else ''}), " + ", ".join(f"{k}={v:g}" for k, v in p.items()))
     print("  y0: " + ", ".join(f"{k}={v:g}" for k, v in y0.items()))
     rev = r.reversal_times

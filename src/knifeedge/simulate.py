@@ -19,6 +19,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from . import _validate
+from . import inputs as _inputs
 from .integrators import (ALIASES, COMPILED_METHODS, EVENTS_PER_STEP, Status, call_repairing, compile_mode,
                           from_code, kernel, kernel_compiled)
 from .models import Model, ValidityWarning
@@ -73,6 +74,9 @@ class SimulationResult:
         (``model.validity``); a :class:`~knifeedge.models.ValidityWarning`
         is then issued and ``validity_message`` says which states left it.
     validity_message : str
+    inputs : knifeedge.inputs.Inputs or None
+        The run's validated inputs (a model with ``input_names``); ``energy`` and the model's functions
+        take them (``model.energy(r.y, r.p, r.t, inputs=r.inputs)``).
     """
 
     t: np.ndarray
@@ -92,6 +96,7 @@ class SimulationResult:
     events: dict = field(default_factory=dict)
     in_validity_domain: bool = True
     validity_message: str = ""
+    inputs: object = field(default=None, repr=False)
 
     def __getitem__(self, name: str) -> np.ndarray:
         """Time series of the named state, e.g. ``r["phi_dot"]``."""
@@ -100,12 +105,12 @@ class SimulationResult:
     @property
     def energy(self) -> np.ndarray:
         """Energy per unit mass along the trajectory."""
-        return self.model.energy(self.y, self.p, self.t)
+        return self.model.energy(self.y, self.p, self.t, inputs=self.inputs)
 
     @property
     def holonomic_residual(self) -> np.ndarray:
         """Values of the model's holonomic constraints along the trajectory, shape (n_holonomic, n_times)."""
-        return self.model.holonomic_residual(self.y, self.p, self.t)
+        return self.model.holonomic_residual(self.y, self.p, self.t, inputs=self.inputs)
 
 
 @dataclass(frozen=True)
@@ -125,6 +130,7 @@ class _Run:
     max_steps: int
     error_control: str
     events: tuple = ()
+    inputs: object = None  # knifeedge.inputs.Inputs of a model with inputs
 
 
 SCIPY_METHODS = ("RK45", "DOP853", "LSODA", "Radau", "BDF")
@@ -580,12 +586,14 @@ def _scipy_phase(r: _Run, scipy_method: str, fun, event_values, stop=None, jac=N
     return _Phase(ts, ys, found, outcome, solver.nfev, nsteps, solver, done)
 
 
-def _scipy_jacobian(model: Model, p: np.ndarray):
+def _scipy_jacobian(model: Model, p: np.ndarray, inputs=None):
     """``jac(t, y)`` for SciPy: the generated ``jacobian`` of the closed state; ``None`` with the pose (SciPy then
-    differentiates numerically)."""
+    differentiates numerically).  ``inputs``: a run's function inputs, their slots at every time."""
     if model.pose:
         return None
     jacobian = model.module.jacobian
+    if inputs is not None:
+        return lambda t, y: jacobian(y, inputs.parameters(p, t), t)
     if model.jacobian_needs_time:
         return lambda t, y: jacobian(y, p, t)
     return lambda t, y: jacobian(y, p)
@@ -606,8 +614,12 @@ def _run_scipy(scipy_method: str):
         model, p = r.model, r.p
         rhs = model.rhs
         module_events = getattr(model.module, "event_values", None)
-        ph = _scipy_phase(r, scipy_method, lambda t, y: rhs(t, y, p), lambda y: module_events(y, p),
-                          jac=_scipy_jacobian(model, p) if scipy_method in SCIPY_IMPLICIT else None)
+        jac = _scipy_jacobian(model, p) if scipy_method in SCIPY_IMPLICIT else None
+        fun = lambda t, y: rhs(t, y, p)  # noqa: E731
+        if r.inputs is not None:  # a function input (knifeedge/inputs.py): the slots at every time
+            fun = lambda t, y: rhs(t, y, r.inputs.parameters(p, t))  # noqa: E731
+            jac = _scipy_jacobian(model, p, r.inputs) if jac is not None else None
+        ph = _scipy_phase(r, scipy_method, fun, lambda y: module_events(y, p), jac=jac)
         ts, ys, n = ph.ts, ph.ys, model.n_state
         if r.t_eval is None:
             t_out, y_out = np.array(ts), np.array(ys).T
@@ -731,7 +743,7 @@ def _check_fixed_step(h, t0: float, t1: float) -> float:
 
 def check_inputs(model: Model, y0, t_span, p, method: str = "DOP853", rtol: float = 1e-10, atol=1e-12, t_eval=None,
                  max_step: float = math.inf, *, h: float | None = None, max_steps: int = 1_000_000,
-                 error_control: str = "component", events=()) -> _Run:
+                 error_control: str = "component", events=(), inputs=None) -> _Run:
     """Validate the arguments of :func:`simulate` (same signature) without integrating.
 
     Raises the ``ValueError``/``TypeError`` that :func:`simulate` would, naming
@@ -764,7 +776,12 @@ def check_inputs(model: Model, y0, t_span, p, method: str = "DOP853", rtol: floa
     if error_control != "component" and (spec is None or fixed):
         raise ValueError(f"`error_control={error_control!r}` needs a compiled adaptive method, not {method!r}")
     events = _check_events(events, model)
-    return _Run(model, y0, t0, t1, p, rtol, atol, t_eval, max_step, h, max_steps, error_control, events)
+    inp = _inputs.check(model, inputs)
+    if inp is not None:
+        inp.cover(t0, t1)
+        if spec is not None:
+            _inputs.refuse_function(inp, method)
+    return _Run(model, y0, t0, t1, p, rtol, atol, t_eval, max_step, h, max_steps, error_control, events, inp)
 
 
 def simulate(
@@ -782,6 +799,7 @@ def simulate(
     max_steps: int = 1_000_000,
     error_control: str = "component",
     events=(),
+    inputs=None,
 ) -> SimulationResult:
     """Integrate ``model`` from ``y0`` over ``t_span`` with parameters ``p``.
 
@@ -821,15 +839,22 @@ def simulate(
         is sampled when the cubic through the event's values and rates at
         its ends dips toward zero inside it (see
         ``knifeedge/integrators/templates/_blocks.py``).
+    inputs : ``{name: value}`` for each of ``model.input_names`` (a model that declares ``inputs``): a
+        number, samples ``(t_array, u_array)`` covering ``t_span`` (interpolated piecewise linearly: the run
+        restarts at each sample time, exact for that input), or a function of ``t`` (SciPy methods only).
+        See :mod:`knifeedge.inputs`.
 
     Returns
     -------
     SimulationResult
     """
     run = check_inputs(model, y0, t_span, p, method, rtol, atol, t_eval, max_step, h=h, max_steps=max_steps,
-                       error_control=error_control, events=events)
+                       error_control=error_control, events=events, inputs=inputs)
     model, t0, p = run.model, run.t0, run.p
-    t, y, found, outcome, nfev, nsteps, nrej = METHODS[method](run)
+    if run.inputs is not None and not run.inputs.has_function:  # numbers and samples: interval by interval
+        t, y, found, outcome, nfev, nsteps, nrej = _inputs.run_segments(METHODS[method], run)
+    else:
+        t, y, found, outcome, nfev, nsteps, nrej = METHODS[method](run)
     t, y = np.asarray(t), np.asarray(y)
     if not np.isfinite(y).all():  # SciPy methods accept non-finite states; cut them off and say so
         bad = int(np.argmin(np.isfinite(y).all(axis=0)))
@@ -851,7 +876,7 @@ def simulate(
         t=t, y=y, state_names=model.state_names, reversal_times=rev,
         success=outcome.success, status=outcome.code, message=message, nfev=int(nfev), method=method,
         model=model, p=p, outcome=outcome, nsteps=int(nsteps), nrejected=int(nrej), events=found,
-        in_validity_domain=not excess, validity_message=validity_message,
+        in_validity_domain=not excess, validity_message=validity_message, inputs=run.inputs,
     )
 
 

@@ -1,0 +1,214 @@
+"""Run-time inputs: ``ModelSpec(inputs=...)`` and ``simulate(..., inputs=...)`` (issue 22, item 1).
+
+The Chaplygin sleigh steered by a control torque ``tau`` given at run time
+(``tests/models/controlled_sleigh.py``; Bloch, *Nonholonomic Mechanics and
+Control*, section 1.7), with a viscous torque ``-c omega``, has per unit mass,
+with ``v`` the speed of the contact point along the axis and ``omega`` the
+turning rate,
+
+    dv/dt = a omega^2,    (k^2 + a^2) d(omega)/dt = -a v omega - c omega + tau(t),
+
+written here by hand and integrated with SciPy; the lateral force of the knife
+edge (its multiplier) is the lateral acceleration of the centre of mass,
+``a d(omega)/dt + v omega``.  The runs start at ``t0 = 1.3`` so that a method
+that passed the time since the start, or an input read at the wrong time, is
+wrong.
+"""
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+from scipy.integrate import solve_ivp
+
+import knifeedge as ke
+from knifeedge import cli
+
+HERE = Path(__file__).resolve().parent
+A, K, C = 0.5, 0.8, 0.1
+T0, T1 = 1.3, 9.0
+Y0 = np.array([0.1, 0.0])
+#: sample times of the piecewise-linear input: uneven, covering [T0, T1]
+SAMPLE_T = np.array([0.0, 1.0, 1.7, 2.2, 3.1, 4.0, 4.6, 5.5, 6.3, 7.2, 8.1, 9.5])
+SAMPLE_U = np.array([0.0, 0.3, -0.2, 0.5, 0.1, -0.4, 0.0, 0.6, 0.2, -0.3, 0.4, 0.1])
+
+
+def triangle(t: float) -> float:
+    """The samples' piecewise-linear interpolant in closed form: on [t_j, t_j+1] the straight line."""
+    j = min(max(np.searchsorted(SAMPLE_T, t, side="right") - 1, 0), SAMPLE_T.size - 2)
+    t0, t1, u0, u1 = SAMPLE_T[j], SAMPLE_T[j + 1], SAMPLE_U[j], SAMPLE_U[j + 1]
+    return u0 + (u1 - u0) * (t - t0) / (t1 - t0)
+
+
+def by_hand(t, z, torque):
+    v, w = z
+    return [A * w * w, (-A * v * w - C * w + torque(t)) / (K * K + A * A)]
+
+
+def reference(torque, t_eval, breaks=()):
+    """The hand-written ODE integrated with SciPy, piece by piece between ``breaks`` (where the torque kinks)."""
+    cuts = [T0, *[b for b in breaks if T0 < b < T1], T1]
+    y, out = Y0, []
+    for a, b in zip(cuts[:-1], cuts[1:]):
+        sol = solve_ivp(by_hand, (a, b), y, args=(torque,), method="DOP853", rtol=1e-13, atol=1e-15,
+                        dense_output=True)
+        inside = t_eval[(t_eval >= a) & ((t_eval < b) | (b == T1))]
+        out.append(sol.sol(inside) if inside.size else np.empty((2, 0)))
+        y = sol.y[:, -1]
+    return np.concatenate(out, axis=1)
+
+
+@pytest.fixture(scope="module")
+def model(tmp_path_factory):
+    out = tmp_path_factory.mktemp("controlled")
+    assert cli.main(["derive", str(HERE / "models" / "controlled_sleigh.py"), "--out", str(out)]) == 0
+    return ke.load("controlled_sleigh", path=out)
+
+
+@pytest.fixture(scope="module")
+def p(model):
+    return model.params(a=A, k=K, c=C)
+
+
+T_EVAL = np.linspace(T0, T1, 41)
+
+
+@pytest.fixture(scope="module")
+def piecewise_reference():
+    return reference(triangle, T_EVAL, SAMPLE_T)
+
+
+def test_the_module_declares_its_inputs(model):
+    assert model.input_names == ("tau",)
+    assert model.param_names == ("a", "k", "c")  # the slots are not parameters
+    assert model.time_dependent and model.has_power_input
+
+
+METHODS = [("DOP853", {}), ("RK4", {"h": 2e-3}), ("scipy:DOP853", {}),
+           *(pytest.param(m, kw, marks=pytest.mark.slow) for m, kw in [
+               ("DP54", {}), ("Tsit5", {}), ("gauss4", {"h": 5e-3}), ("gauss6", {"h": 1e-2}),
+               ("implicit_midpoint", {"h": 1e-3}), ("scipy:RK45", {}), ("scipy:LSODA", {}), ("scipy:Radau", {})])]
+
+
+@pytest.mark.parametrize("method, kw", METHODS)
+def test_samples_are_the_piecewise_linear_input(model, p, piecewise_reference, method, kw):
+    """Samples against the same input in closed form (the straight lines between them), on every method."""
+    r = ke.simulate(model, Y0, (T0, T1), p, method=method, t_eval=T_EVAL, rtol=1e-11, atol=1e-13,
+                    inputs={"tau": (SAMPLE_T, SAMPLE_U)}, **kw)
+    assert r.success, r.message
+    assert np.array_equal(r.t, T_EVAL)
+    assert np.max(np.abs(r.y - piecewise_reference)) < (2e-9 if method != "implicit_midpoint" else 2e-5)
+    assert np.max(np.abs(piecewise_reference[1])) > 0.2  # the torque turned the sleigh
+
+
+def test_a_constant_input(model, p):
+    want = reference(lambda t: 0.3, T_EVAL)
+    for method, kw in (("DOP853", {}), ("scipy:DOP853", {})):
+        r = ke.simulate(model, Y0, (T0, T1), p, method=method, t_eval=T_EVAL, rtol=1e-11, atol=1e-13,
+                        inputs={"tau": 0.3}, **kw)
+        assert np.max(np.abs(r.y - want)) < 2e-9, method
+
+
+def test_a_numba_function_on_a_scipy_method(model, p):
+    from numba import njit
+
+    @njit
+    def torque(t):
+        return 0.4 * math.sin(t)
+
+    want = reference(lambda t: 0.4 * math.sin(t), T_EVAL)
+    r = ke.simulate(model, Y0, (T0, T1), p, method="scipy:DOP853", t_eval=T_EVAL, rtol=1e-11, atol=1e-13,
+                    inputs={"tau": torque})
+    assert np.max(np.abs(r.y - want)) < 2e-9
+
+
+def test_every_step_output_has_each_time_once(model, p):
+    r = ke.simulate(model, Y0, (T0, T1), p, rtol=1e-10, inputs={"tau": (SAMPLE_T, SAMPLE_U)})
+    assert r.success and r.t[0] == T0 and r.t[-1] == T1
+    assert (np.diff(r.t) > 0).all()
+    inside = SAMPLE_T[(SAMPLE_T > T0) & (SAMPLE_T < T1)]
+    assert np.isin(inside, r.t).all()  # every interval ends at a sample time
+
+
+def test_multipliers_are_the_lateral_force(model, p):
+    """The knife edge's force: ``a d(omega)/dt + v omega`` of the hand-written equations."""
+    r = ke.simulate(model, Y0, (T0, T1), p, t_eval=T_EVAL, rtol=1e-11, atol=1e-13,
+                    inputs={"tau": (SAMPLE_T, SAMPLE_U)})
+    lam = model.multipliers(r.y, p, r.t, inputs=r.inputs)[0]
+    rates = np.array([by_hand(t, z, triangle) for t, z in zip(r.t, r.y.T)]).T
+    assert np.allclose(lam, A * rates[1] + r.y[0] * r.y[1], rtol=1e-12, atol=1e-14)
+
+
+def _simpson(f, t):
+    """Integral of the samples ``f`` at the evenly spaced ``t`` (an odd number of points), Simpson's rule."""
+    h = t[1] - t[0]
+    return h / 3 * (f[0] + f[-1] + 4 * f[1:-1:2].sum() + 2 * f[2:-1:2].sum())
+
+
+def test_energy_balance_with_inputs(model, p):
+    """``energy(t) = energy(t0) + input work - dissipated work`` along a run at rtol 1e-11, to 1e-9 relative.
+
+    The works are integrated by Simpson's rule interval by interval of the samples (the input's rate jumps
+    at the sample times), on the run's own output.
+    """
+    cuts = np.concatenate([[T0], SAMPLE_T[(SAMPLE_T > T0) & (SAMPLE_T < T1)], [T1]])
+    grids = [np.linspace(a, b, 401) for a, b in zip(cuts[:-1], cuts[1:])]
+    t_eval = np.unique(np.concatenate(grids))
+    r = ke.simulate(model, Y0, (T0, T1), p, t_eval=t_eval, rtol=1e-11, atol=1e-13,
+                    inputs={"tau": (SAMPLE_T, SAMPLE_U)})
+    with pytest.raises(ValueError, match="pass `inputs`"):
+        model.energy(r.y, p, r.t)
+    energy = r.energy
+    power = (model.power_input(r.y, p, r.t, inputs=r.inputs)
+             - model.power_dissipated(r.y, p, r.t, inputs=r.inputs))
+    assert np.allclose(model.power_dissipated(r.y, p, r.t, inputs=r.inputs), C * r.y[1] ** 2, rtol=1e-13)
+    work, total = [0.0], 0.0
+    for g in grids:
+        sel = np.isin(r.t, g)
+        total += _simpson(power[sel], r.t[sel])
+        work.append(total)
+    at_cuts = energy[np.isin(r.t, cuts)]
+    assert np.ptp(energy) > 0.01  # not conserved
+    assert np.max(np.abs(at_cuts - (energy[0] + np.array(work)))) < 1e-9 * np.max(np.abs(energy))
+
+
+def test_bad_inputs_are_refused_naming_inputs(model, p):
+    run = lambda **kw: ke.simulate(model, Y0, (T0, T1), p, **kw)  # noqa: E731
+    with pytest.raises(ValueError, match=r"has inputs \('tau',\): pass `inputs`"):
+        run()
+    with pytest.raises(ValueError, match=r"`inputs` of controlled_sleigh: missing \['tau'\]"):
+        run(inputs={})
+    with pytest.raises(ValueError, match=r"`inputs` of controlled_sleigh: unknown \['u'\]"):
+        run(inputs={"tau": 1.0, "u": 2.0})
+    with pytest.raises(ValueError, match=r"`inputs\['tau'\]` samples must be two 1-D arrays"):
+        run(inputs={"tau": ([0.0, 10.0], [1.0, 2.0, 3.0])})
+    with pytest.raises(ValueError, match=r"`inputs\['tau'\]` sample times must be strictly increasing"):
+        run(inputs={"tau": ([0.0, 10.0, 5.0], [1.0, 2.0, 3.0])})
+    with pytest.raises(ValueError, match=r"`inputs\['tau'\]`: its samples cover \[2, 10\], the run's `t_span`"):
+        run(inputs={"tau": ([2.0, 10.0], [1.0, 2.0])})
+    with pytest.raises(ValueError, match=r"`inputs\['tau'\]` must be a number, samples"):
+        run(inputs={"tau": "0.5"})
+    with pytest.raises(ValueError, match=r"`inputs\['tau'\]` is a function of the time: the compiled method "
+                                         r"'DOP853'.*method='scipy:DOP853'"):
+        run(inputs={"tau": math.sin})
+    with pytest.raises(ValueError, match=r"`inputs`: .* declares no inputs"):
+        ke.simulate(ke.load("chaplygin_sleigh"), [0.1, 0.0], (0, 1), ke.load("chaplygin_sleigh").default_params,
+                    inputs={"tau": 1.0})
+
+
+def test_the_cli_takes_a_constant_and_a_samples_file(model, tmp_path, capsys):
+    """``knifeedge simulate --input tau=0.3`` and ``--input tau=FILE.csv`` against the hand-written equations."""
+    folder = str(model.source_path.parent)
+    common = ["simulate", "--path", folder, "--model", "controlled_sleigh", "--t-start", str(T0), "--t-end", str(T1),
+              "--n-eval", "41", "--rtol", "1e-11", "--atol", "1e-13", "--set", f"a={A}", f"k={K}", f"c={C}"]
+    samples = tmp_path / "tau.csv"
+    samples.write_text("t,tau\n" + "".join(f"{a!r},{b!r}\n" for a, b in zip(SAMPLE_T.tolist(), SAMPLE_U.tolist())))
+    for given, torque, breaks in (("tau=0.3", lambda t: 0.3, ()), (f"tau={samples}", triangle, SAMPLE_T)):
+        out = tmp_path / "run.csv"
+        assert cli.main([*common, "--input", given, "--out", str(out)]) == 0
+        table = np.loadtxt(out, delimiter=",", skiprows=1)
+        assert np.max(np.abs(table[:, 1:].T - reference(torque, table[:, 0], breaks))) < 2e-9, given
+    assert cli.main([*common]) == 2
+    assert "missing ['tau']" in capsys.readouterr().err
+    assert cli.main([*common, "--input", f"tau={tmp_path / 'none.csv'}"]) == 2
+    assert "does not exist" in capsys.readouterr().err
