@@ -49,20 +49,22 @@ class Inputs:
         inside = [d[0][(d[0] > t0) & (d[0] < t1)] for k, d in zip(self.kinds, self.data) if k == "samples"]
         return np.unique(np.concatenate([[t0, t1], *inside]))
 
-    def slots(self, ta: float, tb: float) -> np.ndarray:
-        """The slots over ``[ta, tb]`` (no sample time inside): ``[ta, u_1(ta), rate_1, u_2(ta), rate_2, ...]``."""
-        out = [ta]
-        for kind, data in zip(self.kinds, self.data):
+    def slots(self, starts: np.ndarray) -> np.ndarray:
+        """The slots of the intervals that start at ``starts`` (no sample time inside an interval), one row each:
+        ``[ta, u_1(ta), rate_1, u_2(ta), rate_2, ...]``."""
+        out = np.empty((starts.size, 1 + 2 * len(self.names)))
+        out[:, 0] = starts
+        for i, (kind, data) in enumerate(zip(self.kinds, self.data)):
             if kind == "constant":
-                out += [data, 0.0]
+                out[:, 1 + 2 * i], out[:, 2 + 2 * i] = data, 0.0
             elif kind == "samples":
                 ts, us = data
-                j = min(max(int(np.searchsorted(ts, ta, side="right")) - 1, 0), ts.size - 2)
+                j = np.clip(np.searchsorted(ts, starts, side="right") - 1, 0, ts.size - 2)
                 rate = (us[j + 1] - us[j]) / (ts[j + 1] - ts[j])
-                out += [us[j] + rate * (ta - ts[j]), rate]
+                out[:, 1 + 2 * i], out[:, 2 + 2 * i] = us[j] + rate * (starts - ts[j]), rate
             else:
                 raise ValueError("a function input has no slots over an interval")  # simulate never asks
-        return np.array(out)
+        return out
 
     def at(self, t: float) -> np.ndarray:
         """The slots at the time ``t``: ``[t, u_1(t), du_1/dt(t), ...]`` (the rate of samples: of the interval
@@ -189,7 +191,11 @@ def run_segments(runner, r):
 
     inp = r.inputs
     cuts = inp.breakpoints(r.t0, r.t1)
+    slots = np.concatenate([np.broadcast_to(r.p, (cuts.size - 1, r.p.size)), inp.slots(cuts[:-1])], axis=1)
     every = r.t_eval is None
+    if not every:  # the requested times in (ta, tb] ([t0, tb] first)
+        bounds = np.searchsorted(r.t_eval, cuts, side="right")
+        bounds[0] = np.searchsorted(r.t_eval, r.t0, side="left")
     ts, ys, found = [], [], {}
     nfev = nsteps = nrej = 0
     y, outcome = r.y0, Status.SUCCESS
@@ -199,13 +205,12 @@ def run_segments(runner, r):
             outcome = Status.MAX_STEPS
             break
         t_eval, extra = None, False
-        if not every:  # the requested times in (ta, tb] ([t0, tb] first), and tb for the next start
-            lo = int(np.searchsorted(r.t_eval, ta, side="left" if k == 0 else "right"))
-            t_eval = r.t_eval[lo:int(np.searchsorted(r.t_eval, tb, side="right"))]
+        if not every:  # and tb, whose state starts the next interval
+            t_eval = r.t_eval[bounds[k]:bounds[k + 1]]
             extra = not (t_eval.size and t_eval[-1] == tb)
-            t_eval = np.append(t_eval, tb) if extra else t_eval
-        seg = dataclasses.replace(r, y0=y, t0=ta, t1=tb, p=np.concatenate([r.p, inp.slots(ta, tb)]), t_eval=t_eval,
-                                  max_steps=r.max_steps - nsteps, inputs=None)
+            t_eval = np.concatenate([t_eval, [tb]]) if extra else t_eval
+        seg = dataclasses.replace(r, y0=y, t0=ta, t1=tb, p=slots[k], t_eval=t_eval, max_steps=r.max_steps - nsteps,
+                                  inputs=None)
         if k == 0:
             t, yy, fnd, outcome, nf, ns, nr = runner(seg)
         else:  # the kernel is compiled (or compiles) at the first interval; no second background phase
