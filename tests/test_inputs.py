@@ -212,3 +212,35 @@ def test_the_cli_takes_a_constant_and_a_samples_file(model, tmp_path, capsys):
     assert "missing ['tau']" in capsys.readouterr().err
     assert cli.main([*common, "--input", f"tau={tmp_path / 'none.csv'}"]) == 2
     assert "does not exist" in capsys.readouterr().err
+
+
+@pytest.mark.slow  # derives and compiles the doc's model: the slow tier, as the other doc sections
+def test_doc_section_on_inputs_runs(tmp_path, monkeypatch):
+    """docs/your-own-model.md section 10 as written (tags ``inputs-file=``, ``sh inputs-example``,
+    ``python inputs-example``), the example blocks in the order of the text."""
+    import contextlib
+    import io
+    import re
+    import shlex
+
+    from test_your_own_model import DOC, _check_printed
+
+    monkeypatch.chdir(tmp_path)
+    text = DOC.read_text()
+    files = re.findall(r"```python inputs-file=(\w+\.py)\n(.*?)```", text, flags=re.S)
+    assert [name for name, _ in files] == ["steered_sleigh.py"]
+    (tmp_path / "steered_sleigh.py").write_text(files[0][1])
+    blocks = re.findall(r"```(sh|python) inputs-example\n(.*?)```", text, flags=re.S)
+    assert [kind for kind, _ in blocks].count("sh") == 2
+    namespace: dict = {}
+    for kind, code in blocks:
+        if kind == "sh":
+            for line in (ln for ln in code.splitlines() if ln.startswith("knifeedge ")):
+                assert cli.main(shlex.split(line)[1:]) == 0, line
+            continue
+        out = io.StringIO()
+        with contextlib.redirect_stdout(out):
+            exec(compile(code, str(DOC), "exec"), namespace)
+        _check_printed(code, out.getvalue())
+    sampled = np.loadtxt(tmp_path / "sampled.csv", delimiter=",", skiprows=1)
+    assert sampled[-1, 0] == 10.0 and np.allclose(sampled[-1, 1:], namespace["z"], rtol=1e-8, atol=1e-10)
