@@ -139,6 +139,19 @@ def test_multipliers_are_the_lateral_force(model, p):
     assert np.allclose(lam, A * rates[1] + r.y[0] * r.y[1], rtol=1e-12, atol=1e-14)
 
 
+def test_the_jacobians_with_inputs(model, p):
+    """d rhs / d (v, omega) and d rhs / d c of the hand-written equations (the torque is not a parameter)."""
+    y = np.array([0.3, -0.7])
+    with pytest.raises(ValueError, match="pass `inputs`"):
+        model.jacobian(y, p, t=2.0)
+    v, w = y
+    want = np.array([[0.0, 2 * A * w], [-A * w / (K * K + A * A), -(A * v + C) / (K * K + A * A)]])
+    got = model.jacobian(y, p, t=2.0, inputs={"tau": (SAMPLE_T, SAMPLE_U)})
+    assert np.allclose(got, want, rtol=1e-14, atol=1e-16)
+    d_p = model.jacobian_p(y, p, t=2.0, inputs={"tau": 0.5})
+    assert d_p.shape == (2, 3) and np.isclose(d_p[1, 2], -w / (K * K + A * A), rtol=1e-14)
+
+
 def _simpson(f, t):
     """Integral of the samples ``f`` at the evenly spaced ``t`` (an odd number of points), Simpson's rule."""
     h = t[1] - t[0]
@@ -244,3 +257,55 @@ def test_doc_section_on_inputs_runs(tmp_path, monkeypatch):
         _check_printed(code, out.getvalue())
     sampled = np.loadtxt(tmp_path / "sampled.csv", delimiter=",", skiprows=1)
     assert sampled[-1, 0] == 10.0 and np.allclose(sampled[-1, 1:], namespace["z"], rtol=1e-8, atol=1e-10)
+
+
+def test_an_input_in_a_constraint_reads_its_rate(tmp_path):
+    """The sleigh's heading turned at a rate ``w(t)`` given at run time (the constraint ``phi_dot - w = 0``).
+    From the hand-written equations with ``omega = w``: ``dv/dt = a w^2``, so over an interval where
+    ``w = w0 + s (t - ta)``, ``v`` gains ``a (w0^2 d + w0 s d^2 + s^2 d^3 / 3)`` (d = t - ta); the torque
+    that enforces the turn is the multiplier ``(k^2 + a^2) dw/dt + a v w`` (it reads the input's rate ``s``),
+    and its power ``w * torque`` is ``power_input``."""
+    import sympy as sp
+
+    from knifeedge.derive import ModelSpec, emit
+    from knifeedge.derive.cli import derive_specs
+
+    a, k = sp.symbols("a k", positive=True)
+    x, y, phi, x_dot, y_dot, phi_dot, v, w = sp.symbols("x y phi x_dot y_dot phi_dot v w", real=True)
+    across, along = sp.Matrix([-sp.sin(phi), sp.cos(phi)]), sp.Matrix([sp.cos(phi), sp.sin(phi)])
+    contact = sp.Matrix([x_dot, y_dot])
+    centre = contact + a * phi_dot * across
+    spec = ModelSpec(
+        name="turned_by_input", coordinates=(x, y, phi), velocities=(x_dot, y_dot, phi_dot),
+        lagrangian=sp.Rational(1, 2) * (centre.dot(centre) + k**2 * phi_dot**2),
+        constraints=(contact.dot(across), phi_dot - w), constraint_labels=("knife_edge", "turn"),
+        dependent=(y, phi), params=(a, k), inputs=(w,), cyclic={x: 0, y: 0, phi: 0}, pose=(phi, x, y),
+        quasi_velocities=((v, x_dot, contact.dot(along)),))
+    emit.write_all(tmp_path, derive_specs([spec]), registry=False)
+    m = ke.load("turned_by_input", path=tmp_path)
+    assert m.state_names == ("v",) and m.module.INPUT_RATES_READ == ("w",)
+    p = m.params(a=A, k=K)
+    t_eval = np.linspace(T0, T1, 31)
+    gained = []
+    for t in t_eval:  # a * integral of w^2 from T0 to t, interval by interval, in closed form
+        total, lo = 0.0, T0
+        for ta, tb in zip(SAMPLE_T[:-1], SAMPLE_T[1:]):
+            a_, b_ = max(ta, lo), min(tb, t)
+            if b_ > a_:
+                s = (SAMPLE_U[np.searchsorted(SAMPLE_T, tb)] - SAMPLE_U[np.searchsorted(SAMPLE_T, ta)]) / (tb - ta)
+                w0, d = triangle(a_), b_ - a_
+                total += w0 * w0 * d + w0 * s * d * d + s * s * d**3 / 3
+        gained.append(A * total)
+    v_exact = 0.1 + np.array(gained)
+    for method, kw in (("DOP853", {}), ("scipy:DOP853", {})):
+        r = ke.simulate(m, [0.1], (T0, T1), p, method=method, t_eval=t_eval, rtol=1e-11, atol=1e-13,
+                        inputs={"w": (SAMPLE_T, SAMPLE_U)}, **kw)
+        assert np.max(np.abs(r["v"] - v_exact)) < 1e-9 * np.max(np.abs(v_exact)), method
+    inside = (t_eval[:-1] + t_eval[1:]) / 2  # away from the samples, where the rate jumps
+    j = np.searchsorted(SAMPLE_T, inside, side="right") - 1
+    rate = (SAMPLE_U[j + 1] - SAMPLE_U[j]) / (SAMPLE_T[j + 1] - SAMPLE_T[j])
+    w_in = np.array([triangle(t) for t in inside])
+    r = ke.simulate(m, [0.1], (T0, T1), p, t_eval=inside, rtol=1e-11, atol=1e-13, inputs={"w": (SAMPLE_T, SAMPLE_U)})
+    torque = (K * K + A * A) * rate + A * r["v"] * w_in
+    assert np.allclose(m.multipliers(r.y, p, r.t, inputs=r.inputs)[1], torque, rtol=1e-12, atol=1e-14)
+    assert np.allclose(m.power_input(r.y, p, r.t, inputs=r.inputs), w_in * torque, rtol=1e-12, atol=1e-14)
