@@ -309,3 +309,43 @@ def test_an_input_in_a_constraint_reads_its_rate(tmp_path):
     torque = (K * K + A * A) * rate + A * r["v"] * w_in
     assert np.allclose(m.multipliers(r.y, p, r.t, inputs=r.inputs)[1], torque, rtol=1e-12, atol=1e-14)
     assert np.allclose(m.power_input(r.y, p, r.t, inputs=r.inputs), w_in * torque, rtol=1e-12, atol=1e-14)
+
+
+@pytest.mark.slow  # derives and compiles two more models
+def test_numeric_elimination_reads_the_inputs_as_the_closed_form(tmp_path):
+    """The same steered sleigh (no quasi-velocity) with the multipliers eliminated symbolically and numerically
+    (``elimination=``): the same run, multipliers and input power with the same sampled torque."""
+    import sympy as sp
+
+    from knifeedge.derive import ModelSpec, emit
+    from knifeedge.derive.cli import derive_specs
+
+    a, k, c = sp.symbols("a k c", positive=True)
+    tau = sp.Symbol("tau", real=True)
+    x, y, phi, x_dot, y_dot, phi_dot = sp.symbols("x y phi x_dot y_dot phi_dot", real=True)
+    across = sp.Matrix([-sp.sin(phi), sp.cos(phi)])
+    contact = sp.Matrix([x_dot, y_dot])
+    centre = contact + a * phi_dot * across
+    kw = dict(coordinates=(x, y, phi), velocities=(x_dot, y_dot, phi_dot),
+              lagrangian=sp.Rational(1, 2) * (centre.dot(centre) + k**2 * phi_dot**2),
+              constraints=(contact.dot(across),), dependent=(y,), params=(a, k, c), inputs=(tau,),
+              cyclic={x: 0, y: 0, phi: 0}, forces=(0, 0, tau - c * phi_dot))
+    specs = [ModelSpec(name="closed_in", elimination="symbolic", **kw),
+             ModelSpec(name="solved_in", elimination="numeric", **kw)]
+    # check=False: x_dot (not the forward speed) is not symmetric under the heading; the equations at phi = 0 are
+    emit.write_all(tmp_path, derive_specs(specs, check=False), registry=False)
+    closed, solved = (ke.load(n, path=tmp_path) for n in ("closed_in", "solved_in"))
+    assert solved.module.ELIMINATION == "numeric"
+    p = closed.params(a=A, k=K, c=C)
+    given = {"tau": (SAMPLE_T, SAMPLE_U)}
+    runs = [ke.simulate(m, Y0, (T0, T1), p, t_eval=T_EVAL, inputs=given, rtol=1e-11, atol=1e-13)
+            for m in (closed, solved)]
+    assert np.max(np.abs(runs[0].y - piecewise_reference_of(T_EVAL))) < 2e-9
+    assert np.max(np.abs(runs[0].y - runs[1].y)) < 1e-12
+    for f in ("multipliers", "power_input"):
+        one, two = (getattr(m, f)(r.y, p, r.t, inputs=r.inputs) for m, r in zip((closed, solved), runs))
+        assert np.allclose(one, two, rtol=1e-12, atol=1e-15), f
+
+
+def piecewise_reference_of(t_eval):
+    return reference(triangle, t_eval, SAMPLE_T)
