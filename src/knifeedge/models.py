@@ -413,7 +413,7 @@ class Model:
         return float(power) if y.ndim == 1 else np.array(power)
 
     def power_input(self, y, p, t=None, inputs=None) -> float | np.ndarray:
-        """Rate at which the explicit time, the rheonomic constraints and the inputs add :meth:`energy`; 0 if they do not.
+        """Rate at which the explicit time, rheonomic constraints and inputs add :meth:`energy`; 0 if none.
 
         ``energy(t) = energy(0) + integral_0^t (power_input - power_dissipated) dt`` along a run.
         """
