@@ -221,8 +221,11 @@ def test_the_cli_takes_a_constant_and_a_samples_file(model, tmp_path, capsys):
         assert cli.main([*common, "--input", given, "--out", str(out)]) == 0
         table = np.loadtxt(out, delimiter=",", skiprows=1)
         assert np.max(np.abs(table[:, 1:].T - reference(torque, table[:, 0], breaks))) < 2e-9, given
+    assert "inputs: tau: 12 samples (piecewise linear)" in capsys.readouterr().out
     assert cli.main([*common]) == 2
     assert "missing ['tau']" in capsys.readouterr().err
+    assert cli.main([*common, "--set", "tau=0.3"]) == 2
+    assert "give the inputs ['tau'] with `--input NAME=VALUE`" in capsys.readouterr().err
     assert cli.main([*common, "--input", f"tau={tmp_path / 'none.csv'}"]) == 2
     assert "does not exist" in capsys.readouterr().err
 

@@ -327,7 +327,10 @@ def simulate_cmd(args) -> int:
     values = assignments(args.set)
     unknown = [k for k in values if k not in m.param_names and k not in m.state_names]
     if unknown:
-        raise ValueError(f"`--set`: unknown name(s) {unknown}; parameters {m.param_names}, states {m.state_names}")
+        given = [k for k in unknown if k in m.input_names]
+        hint = f"; give the inputs {given} with `--input NAME=VALUE` or `--input NAME=FILE.csv`" if given else ""
+        raise ValueError(f"`--set`: unknown name(s) {unknown}; parameters {m.param_names}, states {m.state_names}"
+                         + hint)
     p = {**m.default_params, **{k: v for k, v in values.items() if k in m.param_names}}
     y0 = {**default_state(m), **{k: v for k, v in values.items() if k in m.state_names}}
     lacking = [n for n in m.param_names if n not in p] + [n for n in m.state_names if n not in y0]
@@ -339,6 +342,10 @@ def simulate_cmd(args) -> int:
                  error_control=args.error_control, inputs=input_assignments(args.input, m))
     print(f"{m.name} ({m.fidelity}{', pose' if m.pose else ''}), " + ", ".join(f"{k}={v:g}" for k, v in p.items()))
     print("  y0: " + ", ".join(f"{k}={v:g}" for k, v in y0.items()))
+    if r.inputs is not None:
+        print("  inputs: " + ", ".join(
+            f"{n}={d:g}" if kind == "constant" else f"{n}: {d[0].size} samples (piecewise linear)"
+            for n, kind, d in zip(r.inputs.names, r.inputs.kinds, r.inputs.data)))
     rev = r.reversal_times
     if m.reversal_events:
         print(f"  reversals ({len(rev)}): {', '.join(f'{t:.6g}' for t in rev) or 'none'} "
