@@ -352,3 +352,23 @@ def test_numeric_elimination_reads_the_inputs_as_the_closed_form(tmp_path):
 
 def piecewise_reference_of(t_eval):
     return reference(triangle, t_eval, SAMPLE_T)
+
+
+def test_two_inputs_sampled_at_different_times_are_affine_on_every_interval():
+    """The intervals are cut at the samples of every input; on each, ``value + rate (t - t0)`` of each input is
+    its piecewise-linear interpolant (``np.interp``) at both ends and the middle."""
+    from knifeedge.inputs import Inputs
+
+    u = (np.array([0.0, 1.0, 3.0, 4.0]), np.array([1.0, -1.0, 2.0, 0.5]))
+    w = (np.array([-1.0, 0.5, 2.5, 5.0]), np.array([0.0, 3.0, 1.0, -2.0]))
+    inp = Inputs(("u", "c", "w"), ("samples", "constant", "samples"), (u, 0.7, w))
+    cuts = inp.breakpoints(0.2, 3.5)
+    assert np.array_equal(cuts, [0.2, 0.5, 1.0, 2.5, 3.0, 3.5])
+    slots = inp.slots(cuts[:-1])
+    for (ta, tb), row in zip(zip(cuts[:-1], cuts[1:]), slots):
+        assert row[0] == ta
+        for t in (ta, (ta + tb) / 2, tb):
+            got = row[1::2] + row[2::2] * (t - row[0])
+            assert np.allclose(got, [np.interp(t, *u), 0.7, np.interp(t, *w)], rtol=1e-14, atol=1e-15)
+    at = inp.at(1.7)
+    assert np.allclose(at, [1.7, np.interp(1.7, *u), 1.5, 0.7, 0.0, np.interp(1.7, *w), -1.0], rtol=1e-14)
