@@ -107,7 +107,7 @@ LAYERS = (
     ("knifeedge.modulecheck", "knifeedge.bodies", "knifeedge._validate", "knifeedge._process"),
     ("knifeedge.derive",),
     ("knifeedge.generated",),
-    ("knifeedge.models",),
+    ("knifeedge.models", "knifeedge.inputs"),
     ("knifeedge.integrators",),
     ("knifeedge.simulate", "knifeedge.runspec", "knifeedge.sections", "knifeedge.reversal", "knifeedge.stability",
      "knifeedge.lyapunov", "knifeedge.background", "knifeedge.store"),

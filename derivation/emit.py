@@ -19,8 +19,8 @@ import sympy as sp
 
 from knifeedge.modulecheck import seal
 
-from . import (averaging, codegen, drawing, engine, jacobian, kkt_emit, models, names, rigid, rigid_emit,
-               rigid_small, rigid_small_emit, steady, truncation)
+from . import (averaging, codegen, drawing, engine, input_slots, jacobian, kkt_emit, models, names, rigid,
+               rigid_emit, rigid_small, rigid_small_emit, steady, truncation)
 from .averaging import AmplitudeSystem
 from .codegen import (ModuleParts, const, cse_block, expression_function, finish, lines_function, provenance,
                       rhs_functions, unpack)
@@ -75,6 +75,7 @@ def input_hash(spec: engine.ModelSpec, fidelity: str) -> str:
         *((sp.srepr(spec.dissipation),) if spec.dissipation is not None else ()),
         *(sp.srepr(sp.sympify(f)) for f in spec.forces),
         *((drawing.source_text(),) if fidelity != "amplitude" else ()),
+        *((inspect.getsource(input_slots), *map(sp.srepr, spec.inputs)) if getattr(spec, "inputs", ()) else ()),
     ):
         h.update(part.encode())
         h.update(b"\0")
@@ -106,7 +107,7 @@ def _metadata(spec: engine.ModelSpec, fidelity: str, state: list, units: list, d
     """
     rename = rename if rename is not None else {n: n for n in map(str, spec.state)}
     rename = {**rename, **{str(e): str(e) for e in events}}
-    params = [str(q) for q in spec.params]
+    params = [str(q) for q in spec.params if not isinstance(q, input_slots.Slot)]  # not the inputs' slots
     pose = [str(q) for q in spec.pose] if fidelity != "amplitude" else []
     default_params = {n: _number(spec.lookup(spec.defaults, q)) for n, q in zip(params, spec.params)
                       if spec.lookup(spec.defaults, q) is not None}
@@ -124,7 +125,7 @@ def _metadata(spec: engine.ModelSpec, fidelity: str, state: list, units: list, d
         const("POSE_NAMES", tuple(pose)), const("POSE_UNITS", tuple(unit(spec, q) for q in pose)),
         const("POSE_DOC", spec.pose_description if pose else "", "what the pose coordinates mean"),
         const("PARAM_NAMES", tuple(params)), const("PARAM_UNITS", tuple(unit(spec, q) for q in params)),
-        const("PARAM_DOMAINS", tuple(engine._param_domain(spec, q) for q in spec.params),
+        const("PARAM_DOMAINS", tuple(engine._param_domain(spec, q) for q in spec.params[:len(params)]),
               "admissible values of each parameter: 'positive' (> 0) or 'real' (any finite value)"),
         const("DEFAULT_PARAMS", default_params,
               "default parameter set and initial state (the CLI's defaults); empty if the model declares none"),
@@ -141,6 +142,7 @@ def _metadata(spec: engine.ModelSpec, fidelity: str, state: list, units: list, d
         const("HAS_DISSIPATION", spec.dissipative and fidelity != "amplitude",
               "non-conservative forces: the module has ``power_dissipated(s, p)``"),
         const("EXPORTS", tuple(spec.exports), "model-specific helpers defined at the end of this module"),
+        *input_slots.metadata(spec),
     )
 
 
@@ -196,6 +198,8 @@ def module_parts(system, fidelity: str, frequencies=None) -> ModuleParts:
     if isinstance(system, rigid.RollingSystem):
         return rigid_emit.module_parts(system) if fidelity == "full" else \
             rigid_small_emit.module_parts(system, fidelity)
+    if getattr(system.spec, "inputs", ()):  # the inputs read from parameter slots, affine in the time (input_slots.py)
+        system = input_slots.lowered(system)
     return point_mass_parts(system, fidelity, frequencies)
 
 
@@ -292,7 +296,8 @@ def _optional_functions(system, frequencies, args) -> list:
     if system.power_input is not None:
         out.append(_state_function(
             "power_input", [system.power_input], system.state, spec.params,
-            "Rate at which the explicit time and the rheonomic constraints add energy, -dL/dt - lambda . b",
+            "Rate at which the explicit time, the rheonomic constraints and the inputs add energy, "
+            "-dL/dt - lambda . b + q_dot . Q_inputs",
             scalar=True, args=args))
     return out
 

@@ -37,7 +37,7 @@ import mpmath
 
 import sympy as sp
 
-from . import names
+from . import input_slots, names
 from .names import t
 
 
@@ -155,7 +155,17 @@ class ModelSpec:
         module of the model (model-specific helpers such as presets).
     17. ``drawing``: an optional :class:`~knifeedge.derive.drawing.Drawing`
         (how ``knifeedge animate`` draws the model).
-    18. ``elimination``: ``"symbolic"`` (the accelerations and multipliers in
+    18. ``inputs`` (tuple of symbols): quantities given at run time
+        (``simulate(..., inputs={"tau": value, samples or function})``), e.g.
+        a control torque.  They may appear in the ``forces``, the
+        ``dissipation`` and the ``constraints`` (not in the Lagrangian, the
+        holonomic constraints or the events); a constraint holding one also
+        reads its rate (:attr:`input_rates`).  The module is then
+        ``TIME_DEPENDENT`` and its functions read the inputs from slots
+        appended to ``p`` (``INPUT_NAMES``, :mod:`.inputs`).  The power of the
+        input-dependent part of the forces is part of ``power_input``, not of
+        ``power_dissipated``.
+    19. ``elimination``: ``"symbolic"`` (the accelerations and multipliers in
         closed form), ``"numeric"`` (the emitted right-hand side solves
         ``[[M, -A^T], [A, 0]] [q_ddot, lambda] = [f, -c]`` at every call) or
         ``"auto"`` (numeric past :data:`NUMERIC_FROM` independent accelerations,
@@ -196,6 +206,7 @@ class ModelSpec:
     #: families of steady motions (:class:`~knifeedge.derive.steady.Steady`), written into the modules
     steady: tuple = ()
     elimination: str = "auto"
+    inputs: tuple = ()
     #: ``file:line`` where the spec was constructed (set automatically; named in every error)
     defined_at: str = field(default="", init=False, compare=False)
 
@@ -205,7 +216,7 @@ class ModelSpec:
         kinds = []
         for k in ("coordinates", "velocities", "constraints", "dependent", "params", "accelerations",
                   "constraint_labels", "holonomic", "holonomic_labels", "small", "pose", "reversal_events", "forces", "quasi_velocities",
-                  "state_order", "exports"):
+                  "state_order", "exports", "inputs"):
             v = getattr(self, k)
             if isinstance(v, (list, sp.Matrix)):
                 set_(k, tuple(v))
@@ -242,6 +253,15 @@ class ModelSpec:
         return tuple(self.constraints) + tuple(
             sum((sp.diff(f, q) * v for q, v in zip(self.coordinates, self.velocities)), sp.diff(f, t))
             for f in self.holonomic)
+
+    @property
+    def input_rates(self) -> tuple:
+        """The rate ``d(u)/dt`` of each input, as the emitter's own symbol ``_rate_<u>`` (read by constraints)."""
+        return tuple(names.Own(f"_rate_{names.identifier(str(u))}", real=True) for u in self.inputs)
+
+    def time_derivative(self, e: sp.Expr) -> sp.Expr:
+        """The explicit time derivative of ``e``: ``de/dt + sum_u de/du du/dt`` over the :attr:`inputs`."""
+        return sp.diff(e, t) + sum((sp.diff(e, u) * r for u, r in zip(self.inputs, self.input_rates)), sp.S.Zero)
 
     @property
     def multiplier_labels(self) -> tuple:
@@ -324,6 +344,7 @@ def _contract_problems(spec: ModelSpec) -> list:
     ok &= _symbols_ok(spec.velocities, "velocities", problems)
     ok &= _symbols_ok(spec.params, "params", problems)
     ok &= _symbols_ok(spec.accelerations, "accelerations", problems)
+    ok &= _symbols_ok(spec.inputs, "inputs", problems)
     if not ok:
         return problems
     n = len(spec.coordinates)
@@ -331,11 +352,16 @@ def _contract_problems(spec: ModelSpec) -> list:
         problems.append(f"`velocities` and `accelerations` need one entry per coordinate ({n}); got "
                         f"{len(spec.velocities)} and {len(spec.accelerations)}")
         return problems
-    names_ = [str(s) for s in spec.coordinates + spec.velocities + spec.params + tuple(u for u, _, _ in spec.quasi_velocities)]
+    names_ = [str(s) for s in spec.coordinates + spec.velocities + spec.params + tuple(u for u, _, _ in spec.quasi_velocities)
+              + spec.inputs]
     clash = sorted({x for x in names_ if names_.count(x) > 1})
     if clash:
-        problems.append(f"the names {clash} are used by more than one coordinate, velocity or parameter")
+        problems.append(f"the names {clash} are used by more than one coordinate, velocity, parameter or input")
     problems += names.problems(names_)
+    taken = sorted(set(names_) & set(input_slots.slot_names(spec.inputs))) if spec.inputs else []
+    if taken:
+        problems.append(f"the names {taken} are those of the inputs' parameter slots in the generated code; "
+                        f"rename them")
     if spec.elimination not in ("auto", "symbolic", "numeric"):
         problems.append(f"`elimination` must be 'auto', 'symbolic' or 'numeric', got {spec.elimination!r}")
     elif spec.elimination == "numeric" and spec.quasi_velocities:
@@ -349,10 +375,16 @@ def _contract_problems(spec: ModelSpec) -> list:
         problems.append(f"the texts {bad} hold triple quotes or a backslash, which the generated module's "
                         f"documentation cannot show; remove them")
     declared = set(spec.coordinates) | set(spec.velocities) | set(spec.params) | {t}
+    driven = declared | set(spec.inputs)  # where the inputs may appear
 
     def undeclared(e, what, allowed=declared):
         if not isinstance(e, sp.Basic):
             problems.append(f"{what} must be a SymPy expression, got {type(e).__name__}")
+            return True
+        if allowed is declared and e.free_symbols & set(spec.inputs):
+            problems.append(f"{what} contains the inputs {sorted(map(str, e.free_symbols & set(spec.inputs)))}; "
+                            f"an input may appear in the `forces`, the `dissipation` and the `constraints` only "
+                            f"(write a potential that depends on it as a generalized force)")
             return True
         extra = e.free_symbols - allowed
         if extra:
@@ -375,7 +407,7 @@ def _contract_problems(spec: ModelSpec) -> list:
                             "(its mass matrix d2L/dq_dot2 may depend on the coordinates only)")
     for j, c in enumerate(spec.constraints):
         label = spec.constraint_labels[j] if j < len(spec.constraint_labels) else f"c{j + 1}"
-        if undeclared(c, f"constraint {label!r}"):
+        if undeclared(c, f"constraint {label!r}", allowed=driven):
             continue
         lin = sp.Matrix([c]).jacobian(qd)
         if sp.expand(c - (lin * qd)[0]).free_symbols & set(spec.velocities) or any(
@@ -417,6 +449,8 @@ def _contract_problems(spec: ModelSpec) -> list:
     timed = [what for what, e in (("lagrangian", spec.lagrangian), ("constraints", spec.velocity_constraints),
                                   ("forces", spec.forces), ("dissipation", spec.dissipation))
              if any(isinstance(x, sp.Basic) and x.has(t) for x in (e if isinstance(e, tuple) else (e,)))]
+    if spec.inputs:
+        timed.append("inputs")
     if timed and spec.small:
         problems.append(f"the small-angle fidelities (`small`) need equations that do not depend on the time; the "
                         f"{', '.join(timed)} do: leave `small` empty")
@@ -489,12 +523,12 @@ def _contract_problems(spec: ModelSpec) -> list:
             problems.append(f"`validity[{fid!r}]` bounds of {bad} must be finite positive numbers (leave a state "
                             f"out for no bound)")
     if spec.dissipation is not None:
-        undeclared(spec.dissipation, "the `dissipation` function")
+        undeclared(spec.dissipation, "the `dissipation` function", allowed=driven)
     if spec.forces:
         if len(spec.forces) != n:
             problems.append(f"`forces` needs one generalized force per coordinate ({n}), got {len(spec.forces)}")
         for q, f in zip(spec.coordinates, spec.forces):
-            undeclared(sp.sympify(f), f"the generalized force on {q}")
+            undeclared(sp.sympify(f), f"the generalized force on {q}", allowed=driven)
     if spec.exports and not spec.extra_source:
         problems.append("`exports` names helpers but `extra_source` is empty")
     for name in spec.exports:
@@ -587,8 +621,9 @@ def _lagrange_terms(spec: ModelSpec):
     A = cons.jacobian(qd)
     c = (A * qd).jacobian(q) * qd  # d/dt(A) q_dot
     b = affine_terms(spec)
-    if b.has(t) or A.has(t) or any(e != 0 for e in b):  # rheonomic: + d(b)/dq q_dot + d(A q_dot + b)/dt
-        c += b.jacobian(q) * qd + (A * qd + b).diff(t)
+    if b.has(t) or A.has(t) or any(e != 0 for e in b) or any(A.has(u) for u in spec.inputs):
+        # rheonomic: + d(b)/dq q_dot + d(A q_dot + b)/dt (the inputs' rates included)
+        c += b.jacobian(q) * qd + (A * qd + b).applyfunc(spec.time_derivative)
     return M, h, A, c
 
 
@@ -718,9 +753,9 @@ def derive(spec: ModelSpec) -> ReducedSystem:
         energy = energy + dropped
     power = None
     if spec.dissipative:
-        power = -(qd.T * generalized_forces(spec).subs(at))[0]
+        power = -(qd.T * _without_inputs(spec, generalized_forces(spec)).subs(at))[0]
         power = tidy(sp.expand(power.subs(dep_vel)), variables)
-    power_input = _power_input(spec, L, b, multipliers, dep_vel, variables)
+    power_input = _power_input(spec, L, b, multipliers, dep_vel, variables, at)
 
     # pose rates at a general pose
     general = dependent_velocities(spec)
@@ -805,7 +840,7 @@ def _numeric_system(spec: ModelSpec, at: dict, M, h, A, c, b, dep_vel: dict, A_d
     variables = list(spec.velocity_state)
     kkt = Kkt(mass=M.subs(dep_vel), forcing=(-h).subs(dep_vel), constraint=A.subs(dep_vel), bias=c.subs(dep_vel),
               independent=tuple(spec.coordinates.index(q) for q in spec.independent), dependent_inverse=A_dep_inv)
-    allowed = set(variables) | set(spec.params) | {t}
+    allowed = set(variables) | set(spec.params) | {t} | set(spec.inputs) | set(spec.input_rates)
     leftover = set().union(*(e.free_symbols for e in kkt.exprs())) - allowed
     if leftover:
         raise ModelSpecError(spec.error_message(
@@ -816,7 +851,8 @@ def _numeric_system(spec: ModelSpec, at: dict, M, h, A, c, b, dep_vel: dict, A_d
     energy = tidy((sum(v * sp.diff(L, v) for v in qd) - L).subs(dep_vel), variables) + _dropped_potential(spec, at)
     power = None
     if spec.dissipative:
-        power = tidy(sp.expand((-(qd.T * generalized_forces(spec).subs(at))[0]).subs(dep_vel)), variables)
+        power = tidy(sp.expand((-(qd.T * _without_inputs(spec, generalized_forces(spec)).subs(at))[0]).subs(dep_vel)),
+                     variables)
     general = dependent_velocities(spec)
     lam = sp.Matrix([names.Own(f"_lambda{i}", real=True) for i in range(A.rows)])
     return ReducedSystem(
@@ -826,7 +862,7 @@ def _numeric_system(spec: ModelSpec, at: dict, M, h, A, c, b, dep_vel: dict, A_d
         explicit=sp.Matrix([spec.accelerations[i] for i in kkt.independent]),
         multipliers=lam, multipliers_implicit=lam, energy=energy,
         pose_rates={q: general.get(spec.velocity_of(q), spec.velocity_of(q)) for q in spec.pose},
-        power=power, power_input=_power_input(spec, L, b, lam, dep_vel, variables),
+        power=power, power_input=_power_input(spec, L, b, lam, dep_vel, variables, at),
         dependent_rates={q: tidy(dep_vel[spec.velocity_of(q)], variables) for q in spec.kept}, kkt=kkt)
 
 
@@ -859,16 +895,27 @@ def _dropped_potential(spec: ModelSpec, at: dict) -> sp.Expr:
     return dropped
 
 
-def _power_input(spec: ModelSpec, L: sp.Expr, b: sp.Matrix, multipliers: sp.Matrix, dep_vel: dict, variables):
-    """Rate of gain of ``energy`` by the explicit time: ``-dL/dt - lambda . b`` (``None`` if scleronomic).
+def _without_inputs(spec: ModelSpec, e):
+    """``e`` with every input set to zero."""
+    return e.subs({u: 0 for u in spec.inputs}) if spec.inputs else e
+
+
+def _power_input(spec: ModelSpec, L: sp.Expr, b: sp.Matrix, multipliers: sp.Matrix, dep_vel: dict, variables,
+                 at: dict):
+    """Rate of gain of ``energy`` by the explicit time and the inputs (``None`` if neither).
 
     With ``M q_ddot + h = A^T lambda`` and ``A q_dot + b = 0``, the Jacobi integral
     ``E = q_dot . dL/dq_dot - L`` changes at the rate ``-dL/dt + q_dot . Q + lambda . A q_dot``,
-    that is ``power_input - power_dissipated`` (Goldstein, *Classical Mechanics*, section 8.2).
+    that is ``power_input - power_dissipated`` (Goldstein, *Classical Mechanics*, section 8.2), with
+    ``power_input = -dL/dt - lambda . b + q_dot . Q_u``, ``Q_u`` the part of the forces ``Q`` that the
+    inputs add (``Q - Q`` at zero inputs; the rest is ``power_dissipated``).
     """
-    if not (L.has(t) or any(e != 0 for e in b)):
+    if not (L.has(t) or any(e != 0 for e in b) or spec.inputs):
         return None
     power = -sp.diff(L, t) - sum((lam * e for lam, e in zip(multipliers, b)), sp.S.Zero)
+    if spec.inputs:
+        Q = generalized_forces(spec)
+        power += (sp.Matrix(spec.velocities).T * (Q - _without_inputs(spec, Q)).subs(at))[0]
     return tidy(sp.expand(sp.sympify(power).subs(dep_vel)), variables)
 
 
@@ -982,6 +1029,7 @@ def check_symmetry(system: ReducedSystem, seed: int = 0, tol: float = 1e-20) -> 
     pt = _random_point(spec.coordinates + tuple(spec.velocity_of(q) for q in spec.independent), rng)
     pt.update({s: sp.Rational(rng.randint(300, 1500), 1000) for s in spec.params})
     pt[t] = sp.Rational(37, 100)
+    pt.update(_random_point(spec.inputs + spec.input_rates, rng))
     if spec.quasi_velocities:
         acc, lam, pt = _quasi_point(spec, pt)
     else:

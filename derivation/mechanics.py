@@ -45,11 +45,15 @@ speeds are (``u_dep = q_dot``), else chosen among the cyclic coordinates;
 one per configuration constraint: the author's ``q_dependent``, else a
 non-cyclic coordinate (the last ones first) whose block is nonsingular.
 
+Specified quantities (dynamic symbols that are neither coordinates nor
+speeds, e.g. a torque ``tau(t)``) become the model's ``inputs``, plain symbols
+of the same name given at run time (``simulate(..., inputs={"tau": ...})``).
+
 What is refused (with the reason)
 ---------------------------------
-Specified quantities (dynamic symbols that are neither coordinates nor
-speeds): they need the engine's ``inputs``, not yet there.  Each refusal is a
-:class:`MechanicsConversionError` (a ``ValueError``) that says why.
+The rates of specified quantities, and what the engine refuses (an input in the
+Lagrangian).  Each refusal is a :class:`MechanicsConversionError` (a
+``ValueError``) that says why.
 """
 from __future__ import annotations
 
@@ -577,19 +581,23 @@ def _source(method_or_system) -> _Source:
                     f"got {type(method_or_system).__name__}")
 
 
-def _refuse_specified(e: sp.Expr) -> sp.Expr:
-    """``e`` (coordinates already plain) with SymPy's time as the engine's :data:`~.names.t`.
+def _specified_as_inputs(e: sp.Expr, inputs: dict) -> sp.Expr:
+    """``e`` (coordinates already plain) with SymPy's time as the engine's :data:`~.names.t` and each specified
+    quantity ``f(t)`` (a dynamic symbol that is neither a coordinate nor a speed) as the plain symbol ``f``,
+    recorded in ``inputs`` (``{f(t): f}``): the model's ``inputs``, given at run time.
 
-    Specified quantities (functions of time that are neither coordinates nor speeds) are refused.
+    A derivative of a specified quantity is refused (the run gives an input's values, not its rates there).
     """
-    specified = {f for f in e.atoms(AppliedUndef) if f.has(_t)} | {d.expr for d in e.atoms(sp.Derivative)}
-    if specified:
+    rates = sorted(map(str, {d.expr for d in e.atoms(sp.Derivative)}))
+    if rates:
         raise MechanicsConversionError(
-            f"the model has specified quantities {sorted(map(str, specified))} (dynamic symbols that are neither "
-            f"coordinates nor speeds); they need the engine's `inputs` (not yet there: a run would need their "
-            f"values as functions of time inside the compiled right-hand side). Replace them by constant "
-            f"parameters (plain symbols), or by explicit functions of time, to convert the model now")
-    return e.xreplace({_t: _engine_t})
+            f"the model holds the rates of the specified quantities {rates}; knifeedge's `inputs` are given at "
+            f"run time by their values only. Make the rate itself the specified quantity (a new dynamic "
+            f"symbol), or write it as an explicit function of time")
+    for f in e.atoms(AppliedUndef):
+        if f.has(_t):
+            inputs.setdefault(f, sp.Symbol(str(f.func), real=True))
+    return e.xreplace(inputs).xreplace({_t: _engine_t})
 
 
 def _exact(e: sp.Expr) -> sp.Expr:
@@ -671,8 +679,8 @@ def from_mechanics(method_or_system, *, name: str, cyclic: dict, units: dict | N
     Raises
     ------
     MechanicsConversionError
-        what cannot be converted, with the reason (specified quantities, kinematics that already
-        contain unstated constraints).
+        what cannot be converted, with the reason (rates of specified quantities, kinematics that
+        already contain unstated constraints).
     """
     if not isinstance(name, str) or not name.isidentifier():
         raise ValueError(f"`name` must be a Python identifier (it names the generated modules), got {name!r}")
@@ -685,13 +693,16 @@ def from_mechanics(method_or_system, *, name: str, cyclic: dict, units: dict | N
     else:
         T, V, forces, checks = _body_terms(src)
         lagrangian = T - V
-    plain = lambda e: _exact(_refuse_specified(names.plain(sp.sympify(e).xreplace(src.u_of_qdot))))  # noqa: E731
+    specified: dict = {}  # f(t) -> f: the inputs
+    plain = lambda e: _exact(_specified_as_inputs(names.plain(sp.sympify(e).xreplace(src.u_of_qdot)),  # noqa: E731
+                                                  specified))
     lagrangian = _tidy(plain(lagrangian), names.velocities)
     forces = [_tidy(plain(f), names.velocities) for f in forces]
     constraints = [_tidy(plain(c), names.velocities) for c in src.constraints]
     holonomic = [sp.factor(sp.trigsimp(plain(f))) for f in src.holonomic]
     cyclic = {names.key(k) if not isinstance(k, str) else sp.Symbol(k, real=True): v for k, v in cyclic.items()}
-    declared = set(names.coordinates) | set(names.velocities) | {_engine_t}
+    inputs = tuple(sorted(set(specified.values()), key=str))
+    declared = set(names.coordinates) | set(names.velocities) | {_engine_t} | set(inputs)
     found = set().union(*(e.free_symbols for e in [lagrangian, *forces, *constraints, *holonomic])) - declared
     params = tuple(params) if params is not None else tuple(sorted(found, key=str))
     all_constraints = list(constraints)
@@ -726,6 +737,7 @@ def from_mechanics(method_or_system, *, name: str, cyclic: dict, units: dict | N
         params=params,
         cyclic=cyclic,
         forces=tuple(forces) if any(f != 0 for f in forces) else (),
+        inputs=inputs,
         units=_spec_keys(dict(units or {}), names),
         defaults=_spec_keys(dict(defaults or {}), names),
         description=description or f"Converted by knifeedge.derive.from_mechanics from a sympy {src.kind}.",

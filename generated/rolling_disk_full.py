@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:d1aa8c4715f68424d6449893b8099573a0fa62e8ffc31eca1d4d30fbe8584b83
+SymPy 1.14.0; input hash sha256:10f6509105aa4c3b63f70606143f1cf8ff183e01455d46da3de680c70dd60068
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table: heading q1, lean q2 from the vertical, rotation q3 about the axle, contact point (x, y).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'd1aa8c4715f68424d6449893b8099573a0fa62e8ffc31eca1d4d30fbe8584b83'
+INPUT_HASH = '10f6509105aa4c3b63f70606143f1cf8ff183e01455d46da3de680c70dd60068'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -673,4 +673,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '3087222516ccdd33df10fd4e2b68a2f42eeaf1ccf6d8cb7c949cddff24f2d572'
+MODULE_SHA256 = '39d7c4c5f6944fd6b7d85958c29d39cbdb5c938d5008cf6e343bab003145e839'

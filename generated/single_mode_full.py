@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:ef536be91172861547d09a15a761257bdef2faeed9de35fe88419b60d41c4d1a
+SymPy 1.14.0; input hash sha256:ed98d45203fee3003a78aa5aa6fb38c3e5c68243e07acbc03759b80854eb6d18
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'ef536be91172861547d09a15a761257bdef2faeed9de35fe88419b60d41c4d1a'
+INPUT_HASH = 'ed98d45203fee3003a78aa5aa6fb38c3e5c68243e07acbc03759b80854eb6d18'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -427,4 +427,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'ab1037c5bd6dfb1b09e26e94f14757dc63083b374f918356180c70c3ce7358a1'
+MODULE_SHA256 = '26eec64457218bd78642e431b33d87bbec6afb2a6b228d3f26402fe445662c3b'

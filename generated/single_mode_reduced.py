@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py and derivation/truncation.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:e7b5bb5b4249116418ac36c1b16ffae69300fa244128f2a0d2696af3c01656c4
+SymPy 1.14.0; input hash sha256:fe0bfb633e46ab977a41de3873ec8863a355d5b96b15cde5e5e7ecfb67e94e99
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'e7b5bb5b4249116418ac36c1b16ffae69300fa244128f2a0d2696af3c01656c4'
+INPUT_HASH = 'fe0bfb633e46ab977a41de3873ec8863a355d5b96b15cde5e5e7ecfb67e94e99'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -409,4 +409,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'a0baf623035e70120bcb10a804ec899312c3eb61fddc1ad087ed403887bc51fe'
+MODULE_SHA256 = 'e53527d57ca4cd6cd3b81d4fa8e734852f5495819ac3f41fe0886021a89e2812'

@@ -89,10 +89,64 @@ def test_a_model_without_velocity_constraints_is_refused_with_the_reason():
         from_mechanics(lm, name="pendulum", cyclic={})
 
 
-def test_specified_quantities_are_refused_with_the_reason():
+def test_specified_quantities_become_inputs(tmp_path):
+    """A torque ``f(t)`` on the sleigh, a specified quantity, is the model's input ``f``: the compiled model
+    with a piecewise-linear ``f`` given at run time against the author's own equations (Kane's
+    ``mass_matrix_full``/``forcing_full`` through ``lambdify``, the dependent speed u2 solved with them),
+    integrated with the same input by SciPy interval by interval."""
+    import numpy as np
+    from scipy.integrate import solve_ivp
+
+    import knifeedge as ke
+    from knifeedge.derive import emit
+    from knifeedge.derive.cli import derive_specs
+
     f = dynamicsymbols("f")
-    km, (x, y, phi, *_) = _sleigh(torque=f)
-    with pytest.raises(MechanicsConversionError, match=r"specified quantities \['f\(t\)'\].*`inputs`"):
+    km, (x, y, phi, u3, m, a, I, g) = _sleigh(torque=f)
+    X, PHI, XD, YD, v = sp.symbols("x phi x_dot y_dot v", real=True)
+    spec = from_mechanics(km, name="steered", cyclic={x: 0, y: 0, phi: 0},
+                          quasi_velocities=((v, XD, XD * sp.cos(PHI) + YD * sp.sin(PHI)),))
+    assert spec.inputs == (sp.Symbol("f", real=True),) and set(spec.params) == {I, a, m}
+    emit.write_all(tmp_path, derive_specs([spec]), registry=False)
+    model = ke.load("steered", path=tmp_path, pose=True)
+    assert model.input_names == ("f",) and model.state_names == ("v", "phi_dot", "x", "y", "phi")
+    values = {I: 0.7, a: 0.4, m: 1.3, g: 9.81}
+    F = sp.Symbol("F")
+    states = list(km.q) + list(km.u)
+    swap = {**{s: sp.Symbol(f"s{i}") for i, s in enumerate(states)}, f: F}
+    M = sp.lambdify([*swap.values()], km.mass_matrix_full.subs(values).xreplace(swap))
+    rhs = sp.lambdify([*swap.values()], km.forcing_full.subs(values).xreplace(swap))
+    ts, us = np.array([0.0, 0.8, 2.1, 2.5, 4.0]), np.array([0.2, -0.5, 0.4, 0.0, 0.3])
+
+    def kane(t, z):
+        args = [*z, np.interp(t, ts, us)]
+        return np.linalg.solve(np.array(M(*args), dtype=float), np.array(rhs(*args), dtype=float).ravel())
+
+    t0, t1 = 0.3, 4.0
+    phi0, v0, w0 = 0.2, 0.5, 0.1  # heading, forward speed, turning rate; u2 from the constraint
+    z = np.array([0.0, 0.0, phi0, v0 * np.cos(phi0), w0, v0 * np.sin(phi0)])
+    t_eval = np.linspace(t0, t1, 9)
+    kept = []
+    for lo, hi in zip([t0, 0.8, 2.1, 2.5], [0.8, 2.1, 2.5, t1]):
+        sol = solve_ivp(kane, (lo, hi), z, method="DOP853", rtol=1e-13, atol=1e-15, dense_output=True)
+        inside = t_eval[(t_eval >= lo) & ((t_eval < hi) | (hi == t1))]
+        kept.append(sol.sol(inside))
+        z = sol.y[:, -1]
+    want = np.concatenate(kept, axis=1)
+    p = model.params({str(k): v for k, v in values.items() if k != g})
+    r = ke.simulate(model, [v0, w0, 0.0, 0.0, phi0], (t0, t1), p, method="scipy:DOP853", t_eval=t_eval,
+                    rtol=1e-12, atol=1e-14, inputs={"f": (ts, us)})
+    assert r.success, r.message
+    forward = want[3] * np.cos(want[2]) + want[5] * np.sin(want[2])
+    assert np.max(np.abs(r["v"] - forward)) < 1e-9 and np.max(np.abs(r["phi_dot"] - want[4])) < 1e-9
+    assert np.max(np.abs(r["x"] - want[0])) < 1e-9 and np.max(np.abs(r["phi"] - want[2])) < 1e-9
+    assert np.ptp(want[4]) > 0.1  # the torque turned the sleigh
+
+
+def test_rates_of_specified_quantities_are_refused_with_the_reason():
+    f = dynamicsymbols("f")
+    km, (x, y, phi, *_) = _sleigh(torque=f.diff(t))
+    with pytest.raises(MechanicsConversionError, match=r"rates of the specified quantities \['f\(t\)'\]"):
         from_mechanics(km, name="driven", cyclic={x: 0, y: 0, phi: 0})
 
 

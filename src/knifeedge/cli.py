@@ -176,6 +176,31 @@ def assignments(items, what: str = "--set") -> dict:
     return out
 
 
+def input_assignments(items, model) -> dict | None:
+    """``["tau=0.5", "f=samples.csv"]`` -> ``{"tau": 0.5, "f": (t, u)}`` (``None`` for a model without inputs
+    given none): a number, or a CSV file of samples read by :func:`knifeedge.inputs.read_samples`."""
+    from .inputs import read_samples
+
+    if not items and not model.input_names:
+        return None
+    out = {}
+    for item in items:
+        name, sep, text = item.partition("=")
+        name, text = name.strip(), text.strip()
+        if not sep or not name:
+            raise ValueError(f"`--input` expects NAME=VALUE or NAME=FILE.csv, got {item!r}")
+        if name in out:
+            raise ValueError(f"`--input` gives {name!r} twice; give each input once")
+        if text.lower().endswith(".csv"):
+            out[name] = read_samples(Path(text), name)
+        else:
+            try:
+                out[name] = number(text)
+            except ValueError as exc:
+                raise ValueError(f"`--input {name}`: {exc} (or give a samples file NAME=FILE.csv)") from None
+    return out
+
+
 def grid_assignments(items) -> dict:
     """``["phi_dot=0.05,0.1,0.2"]`` -> ``{"phi_dot": [0.05, 0.1, 0.2]}``; also ``NAME=START:STOP:N`` (geometric).
 
@@ -246,6 +271,9 @@ def _simulate_args(sub: argparse.ArgumentParser) -> None:
                      help="parameters and initial state by name, e.g. --set D=0.5 phi_dot=0.2 alpha=pi/4. Defaults: "
                           "the model's own (its module's DEFAULT_PARAMS and DEFAULT_STATE; for the knife edges the "
                           "paper's scenes: tilts 1e-3, rates 0, spin 0.1)")
+    sub.add_argument("--input", nargs="+", action="extend", default=[], metavar="NAME=VALUE|NAME=FILE.csv",
+                     help="a run-time input of the model (model.input_names): a number, or a CSV file of samples "
+                          "(columns t, value; interpolated piecewise linearly)")
     sub.add_argument("--t-end", type=number, default=300.0, help="end time in sqrt(ell/g) (default: %(default)s)")
     sub.add_argument("--t-start", type=number, default=0.0, help="start time (default: %(default)s)")
     sub.add_argument("--method", default="DOP853", help="integration method, see knifeedge.METHODS (default: %(default)s)")
@@ -299,7 +327,10 @@ def simulate_cmd(args) -> int:
     values = assignments(args.set)
     unknown = [k for k in values if k not in m.param_names and k not in m.state_names]
     if unknown:
-        raise ValueError(f"`--set`: unknown name(s) {unknown}; parameters {m.param_names}, states {m.state_names}")
+        given = [k for k in unknown if k in m.input_names]
+        hint = f"; give the inputs {given} with `--input NAME=VALUE` or `--input NAME=FILE.csv`" if given else ""
+        raise ValueError(f"`--set`: unknown name(s) {unknown}; parameters {m.param_names}, states {m.state_names}"
+                         + hint)
     p = {**m.default_params, **{k: v for k, v in values.items() if k in m.param_names}}
     y0 = {**default_state(m), **{k: v for k, v in values.items() if k in m.state_names}}
     lacking = [n for n in m.param_names if n not in p] + [n for n in m.state_names if n not in y0]
@@ -308,9 +339,13 @@ def simulate_cmd(args) -> int:
     t_eval = np.linspace(args.t_start, args.t_end, args.n_eval)
     r = simulate(m, y0, (args.t_start, args.t_end), p, method=args.method, rtol=args.rtol, atol=args.atol,
                  t_eval=t_eval, max_step=args.max_step, h=args.h, max_steps=args.max_steps,
-                 error_control=args.error_control)
+                 error_control=args.error_control, inputs=input_assignments(args.input, m))
     print(f"{m.name} ({m.fidelity}{', pose' if m.pose else ''}), " + ", ".join(f"{k}={v:g}" for k, v in p.items()))
     print("  y0: " + ", ".join(f"{k}={v:g}" for k, v in y0.items()))
+    if r.inputs is not None:
+        print("  inputs: " + ", ".join(
+            f"{n}={d:g}" if kind == "constant" else f"{n}: {d[0].size} samples (piecewise linear)"
+            for n, kind, d in zip(r.inputs.names, r.inputs.kinds, r.inputs.data)))
     rev = r.reversal_times
     if m.reversal_events:
         print(f"  reversals ({len(rev)}): {', '.join(f'{t:.6g}' for t in rev) or 'none'} "

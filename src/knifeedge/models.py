@@ -117,6 +117,8 @@ class Model:
         self.has_power_input: bool = bool(getattr(mod, "HAS_POWER_INPUT", False))
         #: holonomic constraints whose values :meth:`holonomic_residual` gives
         self.holonomic_names: tuple = tuple(getattr(mod, "HOLONOMIC_NAMES", ()))
+        #: quantities given at run time (``simulate(..., inputs=...)``, :mod:`knifeedge.inputs`)
+        self.input_names: tuple = tuple(getattr(mod, "INPUT_NAMES", ()))
         self.exports: tuple = mod.EXPORTS
         self._positive = tuple(d == "positive" for d in mod.PARAM_DOMAINS)
         self._nonnegative = tuple(d == "nonnegative" for d in mod.PARAM_DOMAINS)
@@ -268,8 +270,13 @@ class Model:
         return arr
 
     # -- compiled quantities ---------------------------------------------------
-    def _at(self, function, y, p, t, what: str):
-        """``function(y, p)`` (``(y, p, t)`` for a :attr:`time_dependent` model) of one state or of each column."""
+    def _at(self, function, y, p, t, what: str, inputs=None):
+        """``function(y, p)`` (``(y, p, t)`` for a :attr:`time_dependent` model) of one state or of each column.
+
+        ``inputs`` (a model with :attr:`input_names`): a mapping as ``simulate`` takes, or a run's
+        ``SimulationResult.inputs``; their values at each ``t`` are appended to ``p``."""
+        if self.input_names:
+            return self._at_inputs(function, y, p, t, what, inputs)
         if not self.time_dependent:
             if y.ndim == 1:
                 return function(y, p)
@@ -281,7 +288,20 @@ class Model:
             return function(y, p, float(t))
         return [function(np.ascontiguousarray(y[:, k]), p, float(t[k])) for k in range(y.shape[1])]
 
-    def energy(self, y, p, t=None) -> float | np.ndarray:
+    def _at_inputs(self, function, y, p, t, what: str, inputs):
+        from . import inputs as _inputs
+
+        if t is None:
+            raise ValueError(f"{what} of {self.name} depends on the time: pass `t` (one time per state)")
+        inp = inputs if isinstance(inputs, _inputs.Inputs) else _inputs.check(self, inputs)
+        t = np.broadcast_to(np.asarray(t, dtype=float), y.shape[1:])
+        inp.cover(float(np.min(t)), float(np.max(t)), what="`t`")
+        if y.ndim == 1:
+            return function(y, inp.parameters(p, float(t)), float(t))
+        return [function(np.ascontiguousarray(y[:, k]), inp.parameters(p, float(t[k])), float(t[k]))
+                for k in range(y.shape[1])]
+
+    def energy(self, y, p, t=None, inputs=None) -> float | np.ndarray:
         """Energy per unit mass; ``y`` of shape (n_state,) or (n_state, n_times).
 
         ``t`` (a time, or one per state): needed when the model is :attr:`time_dependent`, whose energy is
@@ -292,10 +312,10 @@ class Model:
             raise ValueError(f"the energy of {self.name} holds a potential of the pose coordinates "
                              f"{self.pose_names}: load the model with `pose=True` and pass the pose-extended state")
         y, p = self._states(y, pose=needs_pose), self.check_params(p)
-        e = self._at(self.module.energy, y, p, t, "the energy")
+        e = self._at(self.module.energy, y, p, t, "the energy", inputs)
         return float(e) if y.ndim == 1 else np.array(e)
 
-    def multipliers(self, y, p, t=None) -> np.ndarray:
+    def multipliers(self, y, p, t=None, inputs=None) -> np.ndarray:
         """Lagrange multipliers (contact forces per unit mass), in :attr:`multiplier_names` order.
 
         ``y`` of shape (n_state,) gives shape (n_constraints,); (n_state, n_times)
@@ -304,17 +324,17 @@ class Model:
         if not self.multiplier_names:
             raise ValueError(f"{self.name} at fidelity {self.fidelity!r} has no multipliers")
         y, p = self._states(y), self.check_params(p)
-        lam = self._at(self.module.multipliers, y, p, t, "the multipliers")
+        lam = self._at(self.module.multipliers, y, p, t, "the multipliers", inputs)
         return lam if y.ndim == 1 else np.stack(lam, 1)
 
-    def pose_rates(self, y, p, t=None) -> np.ndarray:
+    def pose_rates(self, y, p, t=None, inputs=None) -> np.ndarray:
         """Rates of the pose coordinates :attr:`pose_names` at a pose-extended state (needs ``pose=True``)."""
         if not self.pose:
             raise ValueError("pose_rates needs the pose: load the model with `pose=True`")
         y = self._states(y, pose=True)
         if y.ndim != 1:
             raise ValueError(f"`y` must be one state of shape ({self.n_state},), got shape {y.shape}")
-        return self._at(self.module.pose_rates, y, self.check_params(p), t, "the pose rates")
+        return self._at(self.module.pose_rates, y, self.check_params(p), t, "the pose rates", inputs)
 
     def _states(self, y, pose: bool = False) -> np.ndarray:
         """``y`` as finite float64 of shape (n, ) or (n, n_times): ``n`` the state's size, or the closed
@@ -331,18 +351,18 @@ class Model:
             raise ValueError("`y` must be finite")
         return np.ascontiguousarray(arr)
 
-    def jacobian(self, y, p, t=None) -> np.ndarray:
+    def jacobian(self, y, p, t=None, inputs=None) -> np.ndarray:
         """``d rhs / d y`` of the closed state at ``y`` (generated exactly, ``derivation/jacobian.py``).
 
         ``y``: the closed state, or the pose-extended state (its pose is ignored: the closed state's rates
         do not depend on it).  Returns shape (n_closed, n_closed), ``J[i, j] = d rate_i / d y_j``.
         ``t``: the time, needed when the rates depend on it explicitly (:attr:`jacobian_needs_time`).
         """
-        return self._jacobian("jacobian", y, p, t)
+        return self._jacobian("jacobian", y, p, t, inputs)
 
-    def jacobian_p(self, y, p, t=None) -> np.ndarray:
+    def jacobian_p(self, y, p, t=None, inputs=None) -> np.ndarray:
         """``d rhs / d p`` of the closed state at ``y``: shape (n_closed, n_params), ``J[i, j] = d rate_i / d p_j``."""
-        return self._jacobian("jacobian_p", y, p, t)
+        return self._jacobian("jacobian_p", y, p, t, inputs)[:, :len(self.param_names)]
 
     @property
     def jacobian_needs_time(self) -> bool:
@@ -350,10 +370,12 @@ class Model:
         jacobian = getattr(self.module, "jacobian", None)
         return jacobian is not None and jacobian.py_func.__code__.co_argcount == 3
 
-    def _jacobian(self, name: str, y, p, t):
+    def _jacobian(self, name: str, y, p, t, inputs=None):
         y = self._closed(y)  # refuses a module written without Jacobians
         p = self.check_params(p)
         function = getattr(self.module, name)
+        if self.input_names:
+            return self._at_inputs(function, y, p, t, "the Jacobian", inputs)
         if not self.jacobian_needs_time:
             return function(y, p)
         if t is None:
@@ -378,7 +400,7 @@ class Model:
             raise ValueError(f"{self.name} at fidelity {self.fidelity!r} has no oscillating modes (no `frequencies`)")
         return self.module.frequencies(self.check_params(p))
 
-    def power_dissipated(self, y, p, t=None) -> float | np.ndarray:
+    def power_dissipated(self, y, p, t=None, inputs=None) -> float | np.ndarray:
         """Rate at which the non-conservative forces remove :meth:`energy`; 0 for a conservative model.
 
         ``energy(t) + integral_0^t power_dissipated dt = energy(0)`` along a run.
@@ -387,21 +409,21 @@ class Model:
         y, p = self._states(y), self.check_params(p)
         if not self.has_dissipation:
             return 0.0 if y.ndim == 1 else np.zeros(y.shape[1])
-        power = self._at(self.module.power_dissipated, y, p, t, "the dissipated power")
+        power = self._at(self.module.power_dissipated, y, p, t, "the dissipated power", inputs)
         return float(power) if y.ndim == 1 else np.array(power)
 
-    def power_input(self, y, p, t=None) -> float | np.ndarray:
-        """Rate at which the explicit time and the rheonomic constraints add :meth:`energy`; 0 if they do not.
+    def power_input(self, y, p, t=None, inputs=None) -> float | np.ndarray:
+        """Rate at which the explicit time, rheonomic constraints and inputs add :meth:`energy`; 0 if none.
 
         ``energy(t) = energy(0) + integral_0^t (power_input - power_dissipated) dt`` along a run.
         """
         y, p = self._states(y), self.check_params(p)
         if not self.has_power_input:
             return 0.0 if y.ndim == 1 else np.zeros(y.shape[1])
-        power = self._at(self.module.power_input, y, p, t, "the input power")
+        power = self._at(self.module.power_input, y, p, t, "the input power", inputs)
         return float(power) if y.ndim == 1 else np.array(power)
 
-    def holonomic_residual(self, y, p, t=None) -> np.ndarray:
+    def holonomic_residual(self, y, p, t=None, inputs=None) -> np.ndarray:
         """Values of the holonomic constraints :attr:`holonomic_names` (zero on the constraint manifold).
 
         The run integrates their time derivative, so along a run they drift from zero by about the
@@ -411,7 +433,7 @@ class Model:
         if not self.holonomic_names:
             raise ValueError(f"{self.name} has no holonomic constraints")
         y, p = self._states(y), self.check_params(p)
-        f = self._at(self.module.holonomic_residual, y, p, t, "the holonomic residual")
+        f = self._at(self.module.holonomic_residual, y, p, t, "the holonomic residual", inputs)
         return f if y.ndim == 1 else np.stack(f, 1)
 
     def dissipated_work(self, t, y, p) -> np.ndarray:

@@ -134,6 +134,10 @@ def size_problems(text: str) -> list:
                               ("PARAM_UNITS", "PARAM_NAMES"), ("PARAM_DOMAINS", "PARAM_NAMES"))
                 if not isinstance(lit.get(k), tuple) or len(lit[k]) != len(names[of])]
     n, npose, n_par = len(names["STATE_NAMES"]), len(names["POSE_NAMES"]), len(names["PARAM_NAMES"])
+    inputs = lit.get("INPUT_NAMES", ())
+    if not isinstance(inputs, tuple):
+        return ["INPUT_NAMES must be a tuple written as a literal"]
+    n_par += 1 + 2 * len(inputs) if inputs else 0  # the inputs' slots after the parameters (input_slots.py)
     sizes = {"state": n, "state+pose": n + npose, **{k: len(v) for k, v in names.items()}}
     n_q = _new_array_size(fns["constants"][1]) if "constants" in fns else None
     for name, (at, pose) in _STATE_FUNCTIONS.items():

@@ -14,13 +14,16 @@ from __future__ import annotations
 import math
 import threading
 import warnings
+import dataclasses
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from . import _validate
+from . import inputs as _inputs
 from .integrators import (ALIASES, COMPILED_METHODS, EVENTS_PER_STEP, Status, call_repairing, compile_mode,
                           from_code, kernel, kernel_compiled)
+from .integrators.compiler import compile_mode_set
 from .models import Model, ValidityWarning
 
 #: the smallest relative tolerance accepted: below it the error estimate is round-off
@@ -73,6 +76,9 @@ class SimulationResult:
         (``model.validity``); a :class:`~knifeedge.models.ValidityWarning`
         is then issued and ``validity_message`` says which states left it.
     validity_message : str
+    inputs : knifeedge.inputs.Inputs or None
+        The run's validated inputs (a model with ``input_names``); ``energy`` and the model's functions
+        take them (``model.energy(r.y, r.p, r.t, inputs=r.inputs)``).
     """
 
     t: np.ndarray
@@ -92,6 +98,7 @@ class SimulationResult:
     events: dict = field(default_factory=dict)
     in_validity_domain: bool = True
     validity_message: str = ""
+    inputs: object = field(default=None, repr=False)
 
     def __getitem__(self, name: str) -> np.ndarray:
         """Time series of the named state, e.g. ``r["phi_dot"]``."""
@@ -100,12 +107,12 @@ class SimulationResult:
     @property
     def energy(self) -> np.ndarray:
         """Energy per unit mass along the trajectory."""
-        return self.model.energy(self.y, self.p, self.t)
+        return self.model.energy(self.y, self.p, self.t, inputs=self.inputs)
 
     @property
     def holonomic_residual(self) -> np.ndarray:
         """Values of the model's holonomic constraints along the trajectory, shape (n_holonomic, n_times)."""
-        return self.model.holonomic_residual(self.y, self.p, self.t)
+        return self.model.holonomic_residual(self.y, self.p, self.t, inputs=self.inputs)
 
 
 @dataclass(frozen=True)
@@ -125,6 +132,7 @@ class _Run:
     max_steps: int
     error_control: str
     events: tuple = ()
+    inputs: object = None  # knifeedge.inputs.Inputs of a model with inputs
 
 
 SCIPY_METHODS = ("RK45", "DOP853", "LSODA", "Radau", "BDF")
@@ -580,12 +588,14 @@ def _scipy_phase(r: _Run, scipy_method: str, fun, event_values, stop=None, jac=N
     return _Phase(ts, ys, found, outcome, solver.nfev, nsteps, solver, done)
 
 
-def _scipy_jacobian(model: Model, p: np.ndarray):
+def _scipy_jacobian(model: Model, p: np.ndarray, inputs=None):
     """``jac(t, y)`` for SciPy: the generated ``jacobian`` of the closed state; ``None`` with the pose (SciPy then
-    differentiates numerically)."""
+    differentiates numerically).  ``inputs``: a run's function inputs, their slots at every time."""
     if model.pose:
         return None
     jacobian = model.module.jacobian
+    if inputs is not None:
+        return lambda t, y: jacobian(y, inputs.parameters(p, t), t)
     if model.jacobian_needs_time:
         return lambda t, y: jacobian(y, p, t)
     return lambda t, y: jacobian(y, p)
@@ -606,8 +616,12 @@ def _run_scipy(scipy_method: str):
         model, p = r.model, r.p
         rhs = model.rhs
         module_events = getattr(model.module, "event_values", None)
-        ph = _scipy_phase(r, scipy_method, lambda t, y: rhs(t, y, p), lambda y: module_events(y, p),
-                          jac=_scipy_jacobian(model, p) if scipy_method in SCIPY_IMPLICIT else None)
+        jac = _scipy_jacobian(model, p) if scipy_method in SCIPY_IMPLICIT else None
+        fun = lambda t, y: rhs(t, y, p)  # noqa: E731
+        if r.inputs is not None:  # a function input (knifeedge/inputs.py): the slots at every time
+            fun = lambda t, y: rhs(t, y, r.inputs.parameters(p, t))  # noqa: E731
+            jac = _scipy_jacobian(model, p, r.inputs) if jac is not None else None
+        ph = _scipy_phase(r, scipy_method, fun, lambda y: module_events(y, p), jac=jac)
         ts, ys, n = ph.ts, ph.ys, model.n_state
         if r.t_eval is None:
             t_out, y_out = np.array(ts), np.array(ys).T
@@ -731,7 +745,7 @@ def _check_fixed_step(h, t0: float, t1: float) -> float:
 
 def check_inputs(model: Model, y0, t_span, p, method: str = "DOP853", rtol: float = 1e-10, atol=1e-12, t_eval=None,
                  max_step: float = math.inf, *, h: float | None = None, max_steps: int = 1_000_000,
-                 error_control: str = "component", events=()) -> _Run:
+                 error_control: str = "component", events=(), inputs=None) -> _Run:
     """Validate the arguments of :func:`simulate` (same signature) without integrating.
 
     Raises the ``ValueError``/``TypeError`` that :func:`simulate` would, naming
@@ -764,7 +778,12 @@ def check_inputs(model: Model, y0, t_span, p, method: str = "DOP853", rtol: floa
     if error_control != "component" and (spec is None or fixed):
         raise ValueError(f"`error_control={error_control!r}` needs a compiled adaptive method, not {method!r}")
     events = _check_events(events, model)
-    return _Run(model, y0, t0, t1, p, rtol, atol, t_eval, max_step, h, max_steps, error_control, events)
+    inp = _inputs.check(model, inputs)
+    if inp is not None:
+        inp.cover(t0, t1)
+        if spec is not None:
+            _inputs.refuse_function(inp, method)
+    return _Run(model, y0, t0, t1, p, rtol, atol, t_eval, max_step, h, max_steps, error_control, events, inp)
 
 
 def simulate(
@@ -782,6 +801,7 @@ def simulate(
     max_steps: int = 1_000_000,
     error_control: str = "component",
     events=(),
+    inputs=None,
 ) -> SimulationResult:
     """Integrate ``model`` from ``y0`` over ``t_span`` with parameters ``p``.
 
@@ -821,15 +841,22 @@ def simulate(
         is sampled when the cubic through the event's values and rates at
         its ends dips toward zero inside it (see
         ``knifeedge/integrators/templates/_blocks.py``).
+    inputs : ``{name: value}`` for each of ``model.input_names`` (a model that declares ``inputs``): a
+        number, samples ``(t_array, u_array)`` covering ``t_span`` (interpolated piecewise linearly: the run
+        restarts at each sample time, exact for that input), or a function of ``t`` (SciPy methods only).
+        See :mod:`knifeedge.inputs`.
 
     Returns
     -------
     SimulationResult
     """
     run = check_inputs(model, y0, t_span, p, method, rtol, atol, t_eval, max_step, h=h, max_steps=max_steps,
-                       error_control=error_control, events=events)
+                       error_control=error_control, events=events, inputs=inputs)
     model, t0, p = run.model, run.t0, run.p
-    t, y, found, outcome, nfev, nsteps, nrej = METHODS[method](run)
+    if run.inputs is not None and not run.inputs.has_function:  # numbers and samples: interval by interval
+        t, y, found, outcome, nfev, nsteps, nrej = _run_segments(METHODS[method], run)
+    else:
+        t, y, found, outcome, nfev, nsteps, nrej = METHODS[method](run)
     t, y = np.asarray(t), np.asarray(y)
     if not np.isfinite(y).all():  # SciPy methods accept non-finite states; cut them off and say so
         bad = int(np.argmin(np.isfinite(y).all(axis=0)))
@@ -851,7 +878,7 @@ def simulate(
         t=t, y=y, state_names=model.state_names, reversal_times=rev,
         success=outcome.success, status=outcome.code, message=message, nfev=int(nfev), method=method,
         model=model, p=p, outcome=outcome, nsteps=int(nsteps), nrejected=int(nrej), events=found,
-        in_validity_domain=not excess, validity_message=validity_message,
+        in_validity_domain=not excess, validity_message=validity_message, inputs=run.inputs,
     )
 
 
@@ -861,3 +888,57 @@ def _validity_message(model: Model, excess: dict) -> str:
     return (f"the run left the domain where {model.name} at fidelity {model.fidelity!r} holds ({parts}; "
             f"{model.validity_doc or 'see model.validity'}); its results there are not those of the full model: "
             f"use fidelity 'full'")
+
+
+def _run_segments(runner, r):
+    """Run ``r`` (a validated run whose ``inputs`` are numbers or samples) interval by interval.
+
+    Each interval between consecutive :meth:`Inputs.breakpoints` is one run of ``runner`` (a method of
+    ``simulate.METHODS``) with the slots of that interval appended to ``p``; its last state starts the next.
+    Returns what a runner returns, ``(t, y, events, outcome, nfev, nsteps, nrejected)``, joined: every
+    requested output time once (with ``t_eval``), or every step (without; the intervals' ends once).
+    """
+    inp = r.inputs
+    cuts = inp.breakpoints(r.t0, r.t1)
+    slots = np.concatenate([np.broadcast_to(r.p, (cuts.size - 1, r.p.size)), inp.slots(cuts[:-1])], axis=1)
+    every = r.t_eval is None
+    if not every:  # the requested times in (ta, tb] ([t0, tb] first)
+        bounds = np.searchsorted(r.t_eval, cuts, side="right")
+        bounds[0] = np.searchsorted(r.t_eval, r.t0, side="left")
+    ts, ys, found = [], [], {}
+    nfev = nsteps = nrej = 0
+    y, outcome = r.y0, Status.SUCCESS
+    for k in range(cuts.size - 1):
+        ta, tb = float(cuts[k]), float(cuts[k + 1])
+        if nsteps >= r.max_steps:
+            outcome = Status.MAX_STEPS
+            break
+        t_eval, extra = None, False
+        if not every:  # and tb, whose state starts the next interval
+            t_eval = r.t_eval[bounds[k]:bounds[k + 1]]
+            extra = not (t_eval.size and t_eval[-1] == tb)
+            t_eval = np.concatenate([t_eval, [tb]]) if extra else t_eval
+        seg = dataclasses.replace(r, y0=y, t0=ta, t1=tb, p=slots[k], t_eval=t_eval, max_steps=r.max_steps - nsteps,
+                                  inputs=None)
+        if k == 0:
+            t, yy, fnd, outcome, nf, ns, nr = runner(seg)
+        else:  # the kernel is compiled (or compiles) at the first interval; no second background phase
+            with compile_mode_set("wait"):
+                t, yy, fnd, outcome, nf, ns, nr = runner(seg)
+        t, yy = np.asarray(t), np.asarray(yy)
+        nfev, nsteps, nrej = nfev + nf, nsteps + ns, nrej + nr
+        for name, v in fnd.items():
+            found.setdefault(name, []).append(np.asarray(v))
+        done = outcome.success and t.size and t[-1] == tb
+        if done:
+            y = yy[:, -1].copy()
+        if done and extra:
+            t, yy = t[:-1], yy[:, :-1]
+        if every and k > 0 and t.size:
+            t, yy = t[1:], yy[:, 1:]  # the interval's start is the previous one's end
+        ts.append(t)
+        ys.append(yy)
+        if not done:
+            break
+    events = {name: np.concatenate(v) for name, v in found.items()}
+    return np.concatenate(ts), np.concatenate(ys, axis=1), events, outcome, nfev, nsteps, nrej

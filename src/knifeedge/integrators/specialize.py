@@ -501,7 +501,8 @@ def _n_constants(rhs_module: ModuleType) -> int:
     """The size of ``rhs_module.constants(p)`` (run as plain Python on parameters all one)."""
     import numpy as np
 
-    n_params = len(getattr(rhs_module, "PARAM_NAMES", ())) or 1
+    n_inputs = len(getattr(rhs_module, "INPUT_NAMES", ()))  # their slots follow the parameters (input_slots.py)
+    n_params = len(getattr(rhs_module, "PARAM_NAMES", ())) + (1 + 2 * n_inputs if n_inputs else 0) or 1
     with np.errstate(all="ignore"):
         return int(np.size(rhs_module.constants.py_func(np.ones(n_params))))
 

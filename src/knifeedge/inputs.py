@@ -1,0 +1,199 @@
+"""Run-time inputs: quantities a model declares as ``inputs`` (a control torque), given to ``simulate``.
+
+``simulate(model, y0, t_span, p, inputs={"tau": value})`` takes, per input:
+
+- a number: the input is constant;
+- samples ``(t_array, u_array)``: the input is the **piecewise-linear** interpolant of the samples (straight
+  lines between consecutive samples, which must cover the run's ``t_span``);
+- a function of the time ``u(t)`` (a ``numba.njit`` function, or any Python callable): on the SciPy methods
+  (``method="scipy:..."``) only, which call it at every time they evaluate the right-hand side.
+
+The generated functions read each input from parameter slots appended to ``p``, in which it is affine in
+the time (``derivation/input_slots.py``: ``input_t0``, then ``<u>_value`` and ``<u>_rate`` per input).  A
+run with samples is therefore made of one run per interval between consecutive sample times (over which
+every input is affine): exact for the piecewise-linear input, with a restart of the integrator where the
+input's slope jumps (:func:`segments`).  Constants need one interval.  The compiled methods take numbers and
+samples; a function is refused there with the way out (sample it, or use a SciPy method).
+"""
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+
+import numpy as np
+
+from . import _validate
+
+KINDS = ("constant", "samples", "function")
+
+
+class Inputs:
+    """The validated inputs of a run: one entry per name of ``model.input_names``, in that order.
+
+    ``kinds[i]`` is one of :data:`KINDS`; ``data[i]`` a float, a pair of arrays ``(t, u)`` (increasing
+    times) or a callable.
+    """
+
+    def __init__(self, names: tuple, kinds: tuple, data: tuple, rates_read: tuple = ()):
+        self.names, self.kinds, self.data, self.rates_read = names, kinds, data, tuple(rates_read)
+
+    def __repr__(self) -> str:
+        return f"Inputs({', '.join(f'{n}: {k}' for n, k in zip(self.names, self.kinds))})"
+
+    @property
+    def has_function(self) -> bool:
+        return "function" in self.kinds
+
+    def breakpoints(self, t0: float, t1: float) -> np.ndarray:
+        """``t0``, the sample times strictly inside ``(t0, t1)`` of every sampled input, and ``t1``."""
+        inside = [d[0][(d[0] > t0) & (d[0] < t1)] for k, d in zip(self.kinds, self.data) if k == "samples"]
+        return np.unique(np.concatenate([[t0, t1], *inside]))
+
+    def slots(self, starts: np.ndarray) -> np.ndarray:
+        """The slots of the intervals that start at ``starts`` (no sample time inside an interval), one row each:
+        ``[ta, u_1(ta), rate_1, u_2(ta), rate_2, ...]``."""
+        out = np.empty((starts.size, 1 + 2 * len(self.names)))
+        out[:, 0] = starts
+        for i, (kind, data) in enumerate(zip(self.kinds, self.data)):
+            if kind == "constant":
+                out[:, 1 + 2 * i], out[:, 2 + 2 * i] = data, 0.0
+            elif kind == "samples":
+                ts, us = data
+                j = np.clip(np.searchsorted(ts, starts, side="right") - 1, 0, ts.size - 2)
+                rate = (us[j + 1] - us[j]) / (ts[j + 1] - ts[j])
+                out[:, 1 + 2 * i], out[:, 2 + 2 * i] = us[j] + rate * (starts - ts[j]), rate
+            else:
+                raise ValueError("a function input has no slots over an interval")  # simulate never asks
+        return out
+
+    def at(self, t: float) -> np.ndarray:
+        """The slots at the time ``t``: ``[t, u_1(t), du_1/dt(t), ...]`` (the rate of samples: of the interval
+        that starts at ``t``; of a function: a central difference, when the model reads it)."""
+        out = [t]
+        for name, kind, data in zip(self.names, self.kinds, self.data):
+            if kind == "constant":
+                out += [data, 0.0]
+            elif kind == "samples":
+                ts, us = data
+                j = min(max(int(np.searchsorted(ts, t, side="right")) - 1, 0), ts.size - 2)
+                rate = (us[j + 1] - us[j]) / (ts[j + 1] - ts[j])
+                out += [us[j] + rate * (t - ts[j]), rate]
+            else:
+                out += [_call(data, t, name), _rate(data, t, name) if name in self.rates_read else 0.0]
+        return np.array(out)
+
+    def parameters(self, p: np.ndarray, t) -> np.ndarray:
+        """``p`` with the slots at ``t`` appended: shape (n_p + slots,) for one time, (n_times, ...) for several."""
+        t_arr = np.asarray(t, dtype=float)
+        if t_arr.ndim == 0:
+            return np.concatenate([p, self.at(float(t_arr))])
+        return np.array([np.concatenate([p, self.at(float(s))]) for s in t_arr.ravel()])
+
+    def cover(self, t0: float, t1: float, what: str = "the run's `t_span`") -> None:
+        """Refuse samples that do not cover ``[t0, t1]``."""
+        for name, kind, data in zip(self.names, self.kinds, self.data):
+            if kind == "samples" and (data[0][0] > t0 or data[0][-1] < t1):
+                raise ValueError(f"`inputs[{name!r}]`: its samples cover [{data[0][0]:g}, {data[0][-1]:g}], "
+                                 f"{what} needs [{t0:g}, {t1:g}]; give samples over the whole interval")
+
+
+def _call(f, t: float, name: str) -> float:
+    v = f(t)
+    try:
+        v = float(v)
+    except (TypeError, ValueError):
+        raise ValueError(f"`inputs[{name!r}]` is a function that returned {v!r} at t = {t:g}; it must return "
+                         f"one real number") from None
+    if not math.isfinite(v):
+        raise ValueError(f"`inputs[{name!r}]` returned the non-finite value {v!r} at t = {t:g}")
+    return v
+
+
+def _rate(f, t: float, name: str) -> float:
+    """``du/dt`` of a function input by a fourth-order central difference (step 1e-3 (1 + |t|))."""
+    h = 1e-3 * (1.0 + abs(t))
+    return (8 * (_call(f, t + h, name) - _call(f, t - h, name)) - (_call(f, t + 2 * h, name)
+                                                                     - _call(f, t - 2 * h, name))) / (12 * h)
+
+
+def _samples(value, name: str) -> tuple:
+    ts, us = value
+    ts = _validate.real_array(ts, f"the sample times of `inputs[{name!r}]`")
+    us = _validate.real_array(us, f"the sample values of `inputs[{name!r}]`")
+    if ts.ndim != 1 or us.shape != ts.shape or ts.size < 2:
+        raise ValueError(f"`inputs[{name!r}]` samples must be two 1-D arrays (t, u) of the same length, at least "
+                         f"2; got shapes {ts.shape} and {us.shape}")
+    if not (np.isfinite(ts).all() and np.isfinite(us).all()):
+        raise ValueError(f"`inputs[{name!r}]` samples must be finite")
+    if (np.diff(ts) <= 0).any():
+        raise ValueError(f"`inputs[{name!r}]` sample times must be strictly increasing")
+    return np.ascontiguousarray(ts), np.ascontiguousarray(us)
+
+
+def _one(value, name: str) -> tuple:
+    """``(kind, data)`` of one input's value."""
+    if callable(value):
+        return "function", value
+    if isinstance(value, (tuple, list)) and len(value) == 2 and not isinstance(value[0], (str, bytes)):
+        return "samples", _samples(value, name)
+    if isinstance(value, (str, bytes, bool, np.bool_)) or np.ndim(value) != 0:
+        raise ValueError(f"`inputs[{name!r}]` must be a number, samples (t_array, u_array) or a function of the "
+                         f"time; got {type(value).__name__} {value!r:.80}")
+    return "constant", _validate.finite(value, f"`inputs[{name!r}]`")
+
+
+def check(model, inputs) -> Inputs | None:
+    """The validated ``inputs`` of a run of ``model`` (``None`` for a model without inputs).
+
+    Raises ``ValueError`` naming ``inputs`` for a missing, unknown or mis-shaped entry.
+    """
+    names = tuple(getattr(model, "input_names", ()))
+    if not names:
+        if inputs:
+            raise ValueError(f"`inputs`: {model.name} declares no inputs; got {sorted(map(str, inputs))}")
+        return None
+    if inputs is None:
+        raise ValueError(f"{model.name} has inputs {names}: pass `inputs` = {{name: number, (t_array, u_array) "
+                         f"or a function of t}}")
+    if not isinstance(inputs, Mapping):
+        raise ValueError(f"`inputs` must be a mapping {{name: value}} for {names}, got {type(inputs).__name__}")
+    missing = [n for n in names if n not in inputs]
+    extra = [n for n in inputs if n not in names]
+    if missing or extra:
+        parts = ([f"missing {missing}"] if missing else []) + ([f"unknown {extra}"] if extra else [])
+        raise ValueError(f"`inputs` of {model.name}: {', '.join(parts)}; expected exactly {names}")
+    kinds, data = zip(*(_one(inputs[n], n) for n in names))
+    return Inputs(names, kinds, data, getattr(model.module, "INPUT_RATES_READ", ()))
+
+
+def refuse_function(inp: Inputs, method: str) -> None:
+    """A compiled ``method`` cannot call a function input: say what to do instead."""
+    if inp is not None and inp.has_function:
+        name = inp.names[inp.kinds.index("function")]
+        raise ValueError(f"`inputs[{name!r}]` is a function of the time: the compiled method {method!r} takes "
+                         f"numbers and samples (t_array, u_array), interpolated piecewise linearly. Sample it "
+                         f"(inputs={{{name!r}: (ts, f(ts))}}) or use a SciPy method (method='scipy:DOP853'), "
+                         f"which calls it at every time")
+
+
+def read_samples(path, name: str) -> tuple:
+    """Samples ``(t, u)`` of input ``name`` from a CSV file: two columns, time and value, one sample a row; a
+    first row that is not numbers (a header such as ``t,tau``) is skipped."""
+    from pathlib import Path
+
+    path = Path(path)
+    if not path.is_file():
+        raise ValueError(f"`inputs[{name!r}]`: the samples file {str(path)!r} does not exist")
+    rows = [line.strip() for line in path.read_text().splitlines() if line.strip()]
+    try:
+        float(rows[0].split(",")[0])
+    except (ValueError, IndexError):
+        rows = rows[1:]  # a header
+    try:
+        table = np.array([[float(x) for x in row.split(",")] for row in rows])
+    except ValueError as exc:
+        raise ValueError(f"`inputs[{name!r}]`: {path} must hold two columns of numbers (t, {name}): {exc}") from None
+    if table.ndim != 2 or table.shape[1] != 2:
+        raise ValueError(f"`inputs[{name!r}]`: {path} must hold two columns (t, {name}), one sample a row; got "
+                         f"shape {table.shape}")
+    return _samples((table[:, 0], table[:, 1]), name)
