@@ -254,14 +254,15 @@ def _state_defaults(spec: engine.ModelSpec, state) -> dict:
 
 
 def _state_function(name: str, exprs, state, params, doc: str, scalar: bool = False,
-                    args: str = "s, p") -> tuple[str, int]:
+                    args: str = "s, p", block=None) -> tuple[str, int]:
     """A jitted ``name(s, p)`` of state and parameters (an array, or a scalar when ``scalar``).
 
-    ``args="s, p, t"``: also of the time (a model whose equations depend on it).
+    ``args="s, p, t"``: also of the time (a model whose equations depend on it).  ``block``: what writes the
+    body lines (default :func:`_cse_block`; a numeric-elimination model's solves its dependent velocities first).
     """
     allowed = set(state) | set(params) | ({names.t} if args.endswith(", t") else set())
     targets = [name] if scalar else [f"out[{i}]" for i in range(len(exprs))]
-    lines, ops = _cse_block(list(exprs), targets, allowed)
+    lines, ops = (block or _cse_block)(list(exprs), targets, allowed)
     nl = "\n"
     head = "" if scalar else f"\n    out = np.empty({len(exprs)})"
     tail = name if scalar else "out"
@@ -284,7 +285,7 @@ def _extra_source(spec: engine.ModelSpec) -> str:
 
 
 def _rhs_source(syms_state, syms_par, rates, syms_pose=(), pose_rates=(), solve=((), 0),
-                known=frozenset()) -> tuple[str, dict]:
+                known=frozenset(), pose_solve=((), 0)) -> tuple[str, dict]:
     """Source of the right-hand-side functions shared by every generated module.
 
     ``rhs_into(t, s, p, ds)`` and ``rhs(t, s, p)`` take the parameters;
@@ -295,7 +296,8 @@ def _rhs_source(syms_state, syms_par, rates, syms_pose=(), pose_rates=(), solve=
     pose, ``rhs_pose_into``/``rhs_pose``/``rhs_pose_q_into`` likewise.
     Returns the source and the operation count of each function body.
     ``solve``: lines (and their op count) that open every ``*_into`` body after its unpacking, binding the
-    symbols ``known`` that ``rates`` may hold (the numeric elimination, :mod:`.kkt_emit`).
+    symbols ``known`` that ``rates`` may hold (the numeric elimination, :mod:`.kkt_emit`); ``pose_solve``, lines
+    that follow them in the pose functions (binding the symbols of ``pose_rates``).
     """
     nl = "\n"
     pre, pre_ops = "".join(line + "\n" for line in solve[0]), solve[1]
@@ -351,6 +353,8 @@ def rhs_q_into(t, s, q, ds):
                                       allowed_pose)
     qp_lines, qp_ops = _cse_block(hoisted, [f"ds[{i}]" for i in range(n + npose)], allowed_q | set(syms_pose))
     unpack_pose = _unpack(pose, "s", start=n)
+    pre += "".join(line + "\n" for line in pose_solve[0])
+    pre_ops += pose_solve[1]
     ops.update(rhs_pose=rhsp_ops + pre_ops, rhs_pose_q=qp_ops + pre_ops)
     return out + f'''
 
@@ -411,14 +415,17 @@ def module_source(system, fidelity: str, frequencies=None) -> str:
     args = "s, p, t" if timed else "s, p"  # the functions besides the right-hand side
     allowed = set(system.state) | set(spec.params) | ({names.t} if timed else set())
     pose_exprs = [system.pose_rates[q] for q in spec.pose]
-    pose_lines, pose_ops = _cse_block(pose_exprs, [f"out[{i}]" for i in range(npose)], allowed | set(spec.pose))
+    block = _cse_block
     if system.kkt is not None:  # multipliers eliminated numerically (derivation/kkt_emit.py)
         from . import kkt_emit
         rhs_src, rhs_ops = kkt_emit.rhs_source(system)
+        block = lambda e, targets, al, general=False: kkt_emit.function_lines(system, e, targets, al, general)  # noqa: E731
+        pose_lines, pose_ops = block(pose_exprs, [f"out[{i}]" for i in range(npose)], allowed | set(spec.pose), True)
     else:
         rhs_src, rhs_ops = _rhs_source(system.state, spec.params, rates, spec.pose, pose_exprs)
+        pose_lines, pose_ops = _cse_block(pose_exprs, [f"out[{i}]" for i in range(npose)], allowed | set(spec.pose))
     energy_pose = bool(system.energy.free_symbols & set(spec.pose))  # a potential of a cyclic coordinate
-    energy_lines, energy_ops = _cse_block([system.energy], ["energy"], allowed | set(spec.pose))
+    energy_lines, energy_ops = block([system.energy], ["energy"], allowed | set(spec.pose))
     lam = list(system.multipliers)
     lam_lines, lam_ops = (kkt_emit.multiplier_lines(system, allowed) if system.kkt is not None else
                           _cse_block(lam, [f"out[{i}]" for i in range(len(lam))], allowed))
@@ -447,7 +454,7 @@ def module_source(system, fidelity: str, frequencies=None) -> str:
         src_, extra_ops["power_dissipated"] = _state_function(
             "power_dissipated", [system.power], system.state, spec.params,
             "Rate at which the non-conservative forces remove energy, -q_dot . Q (>= 0 for pure dissipation)",
-            scalar=True, args=args)
+            scalar=True, args=args, block=block)
         extra_src += src_
     if spec.holonomic:
         src_, extra_ops["holonomic_residual"] = _state_function(
@@ -459,7 +466,7 @@ def module_source(system, fidelity: str, frequencies=None) -> str:
         src_, extra_ops["power_input"] = _state_function(
             "power_input", [system.power_input], system.state, spec.params,
             "Rate at which the explicit time and the rheonomic constraints add energy, -dL/dt - lambda . b",
-            scalar=True, args=args)
+            scalar=True, args=args, block=block)
         extra_src += src_
     extra_src += _extra_source(spec)
     unpack_s = _unpack(state, "s")
@@ -530,7 +537,7 @@ def multipliers({args}):
 {nl.join(lam_lines)}
     return out
 ''' + drawing.module_source(system) + extra_src + jacobians \
-        + steady.block_source(spec.steady, system.state, spec.params)
+        + steady.block_source(spec.steady, system.state, spec.params, steady.holonomic_invariants(spec))
 
 
 def _model_metadata(system) -> str:

@@ -27,6 +27,42 @@ def _gradients(exprs, variables):
     ``_dK_J`` (``d _cK / d variables[J]``), which come first in ``subs`` order as pairs ``(symbol, expression)``.
     """
     subs, reduced = sp.cse(list(exprs), symbols=sp.numbered_symbols("_c", cls=names.Own), order="canonical")
+    return program_gradients(subs, reduced, variables)
+
+
+def partial(e: sp.Expr, x: sp.Symbol) -> sp.Expr:
+    """``d e / d x`` by the chain rule on the node types of a program's line (sums, products, powers, ``sin``,
+    ``cos``, ``sqrt``, selects), ``sp.diff`` for anything else: equal to ``sp.diff``, without its dispatch (which
+    took two thirds of the Whipple bicycle's Jacobians)."""
+    if e.is_Symbol:
+        return sp.S.One if e == x else sp.S.Zero
+    if e.is_Atom or x not in e.free_symbols:
+        return sp.S.Zero
+    if e.is_Add:
+        return sp.Add(*[partial(a, x) for a in e.args])
+    if e.is_Mul:
+        args = e.args
+        terms = []
+        for i, a in enumerate(args):
+            da = partial(a, x)
+            if da != 0:
+                terms.append(sp.Mul(*args[:i], da, *args[i + 1:]))
+        return sp.Add(*terms)
+    if e.is_Pow and x not in e.exp.free_symbols:
+        return e.exp * e.base ** (e.exp - 1) * partial(e.base, x)
+    if isinstance(e, sp.sin):
+        return sp.cos(e.args[0]) * partial(e.args[0], x)
+    if isinstance(e, sp.cos):
+        return -sp.sin(e.args[0]) * partial(e.args[0], x)
+    if isinstance(e, sp.Piecewise):
+        return sp.Piecewise(*[(partial(v, x), c) for v, c in e.args])
+    return sp.diff(e, x)
+
+
+def program_gradients(subs, reduced, variables, diff=sp.diff):
+    """:func:`_gradients` of a given straight-line program: ``subs`` its ``(symbol, expression)`` assignments
+    (symbols ``_c<k>``, each expression of the variables and earlier symbols), ``reduced`` its outputs;
+    ``diff(e, x)`` the partial derivative of a line."""
     index = {v: j for j, v in enumerate(variables)}
     grad: dict = {}  # symbol -> {j: expression of d symbol / d variables[j]}
     deriv_subs = []
@@ -42,7 +78,7 @@ def _gradients(exprs, variables):
                 continue
             if not parts:
                 continue
-            dx = sp.diff(e, x)
+            dx = diff(e, x)
             if dx == 0:
                 continue
             for j, g in parts.items():
@@ -63,12 +99,20 @@ def _gradients(exprs, variables):
     return subs, deriv_subs, [gradient(e) for e in reduced]
 
 
-def _function(name, exprs, wrt, state, params, shape, doc):
-    """Source and op count of ``name(s, p)`` returning ``d exprs / d wrt`` as an array of ``shape``."""
+def _function(name, exprs, wrt, state, params, shape, doc, program=None):
+    """Source and op count of ``name(s, p)`` returning ``d exprs / d wrt`` as an array of ``shape``.
+
+    ``program``: the ``(symbol, expression)`` lines that bind the symbols ``exprs`` hold (else ``exprs`` are
+    expressions of the state and the parameters, shared by CSE here).
+    """
     from .emit import _code, _unpack  # emit imports this module
 
-    subs, deriv_subs, rows = _gradients(exprs, list(wrt))
-    allowed = set(state) | set(params) | {names.t}
+    if program is None:
+        subs, deriv_subs, rows = _gradients(exprs, list(wrt))
+    else:
+        subs, deriv_subs, rows = program_gradients(program, exprs, list(wrt), diff=partial)
+        exprs = [e for _, e in program]
+    allowed = set(state) | set(params) | {names.t} | {s for s, _ in subs}
     bad = set().union(*(e.free_symbols for e in exprs)) - allowed
     if bad:
         raise ValueError(f"refusing to emit: undeclared symbols {sorted(map(str, bad))}")
@@ -103,6 +147,19 @@ def {name}({args}):
 {nl.join(lines)}
     return out
 ''', int(ops)
+
+
+def program_block_source(program, rates, state, params) -> str:
+    """:func:`block_source` of the rates ``rates`` bound by the straight-line ``program`` (the numeric
+    elimination's, :mod:`.kkt_emit`): the program differentiated in forward mode, line by line."""
+    rates, state, params = list(rates), list(state), list(params)
+    n, k = len(state), len(params)
+    src_s, ops_s = _function("jacobian", rates, state, state, params, f"({n}, {n})",
+                             f"d(state rate)/d(state): J[i, j] = d rhs_i / d s_j, shape ({n}, {n})", program)
+    src_p, ops_p = _function("jacobian_p", rates, params, state, params, f"({n}, {k})",
+                             f"d(state rate)/d(parameters): J[i, j] = d rhs_i / d p_j, shape ({n}, {k})", program)
+    return (f"\n\n#: operation counts of the Jacobians (derivation/jacobian.py, forward mode through the program of "
+            f"derivation/kkt_emit.py)\nOP_COUNTS.update(jacobian={ops_s}, jacobian_p={ops_p})" + src_s + src_p)
 
 
 def block_source(rates, state, params) -> str:

@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/sleigh.py (model 'chaplygin_sleigh',
 constraints knife_edge) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:e5b9d0d78dfc4d49d0a1d1ad7ca1123308ed5c8f275dc59f088c1053d75a843f
+SymPy 1.14.0; input hash sha256:f2881a59a211899821e19e2fd565eb943f7ef18088739c111898d33f4e27a13e
 
 Chaplygin sleigh: a rigid body on the plane with a knife edge at its rear contact point (x, y) that forbids sideways motion; heading phi, centre of mass at distance a ahead of the contact, radius of gyration k about the centre of mass; v is the speed along the axis.
 
@@ -60,7 +60,7 @@ MULTIPLIER_NAMES = ('knife_edge',)
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'e5b9d0d78dfc4d49d0a1d1ad7ca1123308ed5c8f275dc59f088c1053d75a843f'
+INPUT_HASH = 'f2881a59a211899821e19e2fd565eb943f7ef18088739c111898d33f4e27a13e'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -332,4 +332,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'a1db01fc892a5c91e5f8e1c88e0b03c3d035fa97b00ab5244071f87f7a5bccb0'
+MODULE_SHA256 = '13fdf0cecc3be223715b2a4e0340a28a61ba7ab48b8a27bc35478fe54916885a'
