@@ -27,7 +27,40 @@ def _gradients(exprs, variables):
     ``_dK_J`` (``d _cK / d variables[J]``), which come first in ``subs`` order as pairs ``(symbol, expression)``.
     """
     subs, reduced = sp.cse(list(exprs), symbols=sp.numbered_symbols("_c", cls=names.Own), order="canonical")
-    return program_gradients(subs, reduced, variables)
+    index = {v: j for j, v in enumerate(variables)}
+    grad: dict = {}  # symbol -> {j: expression of d symbol / d variables[j]}
+    deriv_subs = []
+
+    def gradient(e):
+        out: dict = {}
+        for x in sorted(e.free_symbols, key=str):
+            if x in index:
+                parts = {index[x]: sp.Integer(1)}
+            elif x in grad:
+                parts = grad[x]
+            else:
+                continue
+            if not parts:
+                continue
+            dx = sp.diff(e, x)
+            if dx == 0:
+                continue
+            for j, g in parts.items():
+                out[j] = out.get(j, sp.Integer(0)) + dx * g
+        return {j: g for j, g in out.items() if g != 0}
+
+    for c, e in subs:
+        g = gradient(e)
+        named = {}
+        for j, expr in sorted(g.items()):
+            if expr.is_Atom:
+                named[j] = expr
+            else:
+                d = names.Own(f"_d{str(c)[2:]}_{j}")
+                deriv_subs.append((c, d, expr))
+                named[j] = d
+        grad[c] = named
+    return subs, deriv_subs, [gradient(e) for e in reduced]
 
 
 def partial(e: sp.Expr, x: sp.Symbol) -> sp.Expr:
@@ -59,60 +92,12 @@ def partial(e: sp.Expr, x: sp.Symbol) -> sp.Expr:
     return sp.diff(e, x)
 
 
-def program_gradients(subs, reduced, variables, diff=sp.diff):
-    """:func:`_gradients` of a given straight-line program: ``subs`` its ``(symbol, expression)`` assignments
-    (symbols ``_c<k>``, each expression of the variables and earlier symbols), ``reduced`` its outputs;
-    ``diff(e, x)`` the partial derivative of a line."""
-    index = {v: j for j, v in enumerate(variables)}
-    grad: dict = {}  # symbol -> {j: expression of d symbol / d variables[j]}
-    deriv_subs = []
-
-    def gradient(e):
-        out: dict = {}
-        for x in sorted(e.free_symbols, key=str):
-            if x in index:
-                parts = {index[x]: sp.Integer(1)}
-            elif x in grad:
-                parts = grad[x]
-            else:
-                continue
-            if not parts:
-                continue
-            dx = diff(e, x)
-            if dx == 0:
-                continue
-            for j, g in parts.items():
-                out[j] = out.get(j, sp.Integer(0)) + dx * g
-        return {j: g for j, g in out.items() if g != 0}
-
-    for c, e in subs:
-        g = gradient(e)
-        named = {}
-        for j, expr in sorted(g.items()):
-            if expr.is_Atom:
-                named[j] = expr
-            else:
-                d = names.Own(f"_d{str(c)[2:]}_{j}")
-                deriv_subs.append((c, d, expr))
-                named[j] = d
-        grad[c] = named
-    return subs, deriv_subs, [gradient(e) for e in reduced]
-
-
-def _function(name, exprs, wrt, state, params, shape, doc, program=None):
-    """Source and op count of ``name(s, p)`` returning ``d exprs / d wrt`` as an array of ``shape``.
-
-    ``program``: the ``(symbol, expression)`` lines that bind the symbols ``exprs`` hold (else ``exprs`` are
-    expressions of the state and the parameters, shared by CSE here).
-    """
+def _function(name, exprs, wrt, state, params, shape, doc):
+    """Source and op count of ``name(s, p)`` returning ``d exprs / d wrt`` as an array of ``shape``."""
     from .emit import _code, _unpack  # emit imports this module
 
-    if program is None:
-        subs, deriv_subs, rows = _gradients(exprs, list(wrt))
-    else:
-        subs, deriv_subs, rows = program_gradients(program, exprs, list(wrt), diff=partial)
-        exprs = [e for _, e in program]
-    allowed = set(state) | set(params) | {names.t} | {s for s, _ in subs}
+    subs, deriv_subs, rows = _gradients(exprs, list(wrt))
+    allowed = set(state) | set(params) | {names.t}
     bad = set().union(*(e.free_symbols for e in exprs)) - allowed
     if bad:
         raise ValueError(f"refusing to emit: undeclared symbols {sorted(map(str, bad))}")
@@ -149,15 +134,94 @@ def {name}({args}):
 ''', int(ops)
 
 
+def program_tangent(subs, outputs, seeds: dict) -> tuple:
+    """Forward mode along one direction: ``(lines, tangents)``, the program's lines each followed by its
+    derivative ``_t<k>`` along ``seeds`` ({variable: symbol of its tangent component}), and the derivative of
+    each output; only the lines the tangents need are kept."""
+    tangent: dict = {}
+    assigns = []
+
+    def dot(e):
+        terms = []
+        for x in sorted(e.free_symbols, key=str):
+            tx = seeds.get(x, tangent.get(x))
+            if tx is None:
+                continue
+            dx = partial(e, x)
+            if dx != 0:
+                terms.append(dx * tx)
+        return sp.Add(*terms)
+
+    for c, e in subs:
+        assigns.append((c, e))
+        d = dot(e)
+        if d != 0:
+            tangent[c] = d if d.is_Atom else names.Own(f"_t{str(c)[2:]}")
+            if not d.is_Atom:
+                assigns.append((tangent[c], d))
+    tangents = [dot(sp.sympify(o)) for o in outputs]
+    used = set().union(set(), *(e.free_symbols for e in tangents))
+    kept = []
+    for sym, e in reversed(assigns):
+        if sym in used:
+            kept.append((sym, e))
+            used |= e.free_symbols
+    return kept[::-1], tangents
+
+
+def _tangent_function(name, program, rates, wrt, state, params, doc) -> tuple[str, int]:
+    """``name(s, p)`` returning ``d rates / d wrt`` column by column: a private ``_<name>_along(s, p, v)`` (the
+    derivative along ``v``, one forward pass) called once per column, so that the compiled code is about three
+    right-hand sides long whatever the number of columns (the Whipple bicycle's full Jacobian, 32,600
+    operations, did not compile in 14 minutes on the loaded machine)."""
+    from .emit import _code, _unpack  # emit imports this module
+
+    seeds = {x: names.Own(f"_v{j}") for j, x in enumerate(wrt)}
+    lines, tangents = program_tangent(program, rates, seeds)
+    body = [f"    {t} = {_code(e)}" for t, e in lines]
+    body += [f"    out[{i}] = {_code(e)}" for i, e in enumerate(tangents)]
+    ops = int(sum(sp.count_ops(e) for _, e in lines) + sum(sp.count_ops(e) for e in tangents))
+    used = set().union(set(), *(e.free_symbols for _, e in lines), *(e.free_symbols for e in tangents))
+    timed = names.t in set().union(*(e.free_symbols for _, e in program))
+    args = "s, p, t" if timed else "s, p"
+    unpack = [ln for ln, x in zip(_unpack([str(x) for x in state], "s"), state) if x in used]
+    unpack += [ln for ln, x in zip(_unpack([str(x) for x in params], "p"), params) if x in used]
+    seed_lines = [f"    {v} = _v[{j}]" for j, v in enumerate(seeds.values()) if v in used]
+    n, k = len(rates), len(wrt)
+    nl = "\n"
+    return f'''
+
+@njit(cache=True)
+def _{name}_along({args}, _v):
+    """d(state rate) along the direction ``_v`` of the {'state' if name == 'jacobian' else 'parameters'} ({ops} operations)."""
+    out = np.zeros({n})
+{nl.join(unpack + seed_lines)}
+{nl.join(body)}
+    return out
+
+
+@njit(cache=True)
+def {name}({args}):
+    """{doc}, one forward pass per column ({k} x {ops} operations)."""
+    out = np.zeros(({n}, {k}))
+    _v = np.zeros({k})
+    for _j in range({k}):
+        _v[:] = 0.0
+        _v[_j] = 1.0
+        out[:, _j] = _{name}_along({args}, _v)
+    return out
+''', ops * k
+
+
 def program_block_source(program, rates, state, params) -> str:
     """:func:`block_source` of the rates ``rates`` bound by the straight-line ``program`` (the numeric
     elimination's, :mod:`.kkt_emit`): the program differentiated in forward mode, line by line."""
     rates, state, params = list(rates), list(state), list(params)
     n, k = len(state), len(params)
-    src_s, ops_s = _function("jacobian", rates, state, state, params, f"({n}, {n})",
-                             f"d(state rate)/d(state): J[i, j] = d rhs_i / d s_j, shape ({n}, {n})", program)
-    src_p, ops_p = _function("jacobian_p", rates, params, state, params, f"({n}, {k})",
-                             f"d(state rate)/d(parameters): J[i, j] = d rhs_i / d p_j, shape ({n}, {k})", program)
+    src_s, ops_s = _tangent_function("jacobian", program, rates, state, state, params,
+                                     f"d(state rate)/d(state): J[i, j] = d rhs_i / d s_j, shape ({n}, {n})")
+    src_p, ops_p = _tangent_function("jacobian_p", program, rates, params, state, params,
+                                     f"d(state rate)/d(parameters): J[i, j] = d rhs_i / d p_j, shape ({n}, {k})")
     return (f"\n\n#: operation counts of the Jacobians (derivation/jacobian.py, forward mode through the program of "
             f"derivation/kkt_emit.py)\nOP_COUNTS.update(jacobian={ops_s}, jacobian_p={ops_p})" + src_s + src_p)
 
