@@ -12,7 +12,8 @@ with shared subexpressions and solves at every call, in straight-line code writt
 3. the multipliers from the dependent rows, ``A_dep^T lambda = (M q_ddot - f)_dep`` (LU of ``A_dep^T``).
 
 Every step is an assignment ``symbol = expression`` of earlier symbols, so the Jacobians are the same program
-differentiated in forward mode (:func:`.jacobian.program_gradients`): exact, and as large as the program.
+differentiated in forward mode along one direction (:func:`.jacobian.program_tangent`), called once per column:
+exact, and about three right-hand sides long.
 The pivoting is written as selects (``b if abs(b) > abs(a) else a``); a structural zero needs none.  No array
 is allocated and no LAPACK is bound.
 """

@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/sleigh.py (model 'chaplygin_sleigh',
 constraints knife_edge) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:f2881a59a211899821e19e2fd565eb943f7ef18088739c111898d33f4e27a13e
+SymPy 1.14.0; input hash sha256:8049cad0163d8fae1d6fb44f69677f8c0feb13fd11877b526860082f59ce0f8d
 
 Chaplygin sleigh: a rigid body on the plane with a knife edge at its rear contact point (x, y) that forbids sideways motion; heading phi, centre of mass at distance a ahead of the contact, radius of gyration k about the centre of mass; v is the speed along the axis.
 
@@ -60,7 +60,7 @@ MULTIPLIER_NAMES = ('knife_edge',)
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'f2881a59a211899821e19e2fd565eb943f7ef18088739c111898d33f4e27a13e'
+INPUT_HASH = '8049cad0163d8fae1d6fb44f69677f8c0feb13fd11877b526860082f59ce0f8d'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -332,4 +332,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '13fdf0cecc3be223715b2a4e0340a28a61ba7ab48b8a27bc35478fe54916885a'
+MODULE_SHA256 = 'e26ab59ec85847926b28ac3465e89f9578a0e0060dd5c4cd6b0a2f5581edfe7a'

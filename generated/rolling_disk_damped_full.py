@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk_damped',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:f8fa7fc19b3d836f21daeb77a9f7d29850d620c26271ce8593a0e203a5dcccfa
+SymPy 1.14.0; input hash sha256:0c9e19a64f8b4de949c325fd30bd3c955e204edcc96d420766636a9db7be72b4
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table, its rotation resisted by a viscous torque -c r^2 omega per unit mass (Rayleigh function c r^2 |omega|^2/2).
 
@@ -64,7 +64,7 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = True
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'f8fa7fc19b3d836f21daeb77a9f7d29850d620c26271ce8593a0e203a5dcccfa'
+INPUT_HASH = '0c9e19a64f8b4de949c325fd30bd3c955e204edcc96d420766636a9db7be72b4'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -890,4 +890,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '8c630f431fd5ca789458cb50064c3bad3be0672cf58d919452e89469f034cc21'
+MODULE_SHA256 = 'd85d4b06b08ebff3520e4615ac4482c78a8e66dffad24e3da42920154a713874'

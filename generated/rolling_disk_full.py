@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:63ca92a65ee69fc043e7fb7657645c64b972d7ab018e7cd627aaabc645d715fd
+SymPy 1.14.0; input hash sha256:89205c6817f91d079a9509470d2511ba7de707279ce47e926cd1fc5afb6c1ef6
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table: heading q1, lean q2 from the vertical, rotation q3 about the axle, contact point (x, y).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '63ca92a65ee69fc043e7fb7657645c64b972d7ab018e7cd627aaabc645d715fd'
+INPUT_HASH = '89205c6817f91d079a9509470d2511ba7de707279ce47e926cd1fc5afb6c1ef6'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -673,4 +673,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '0cc39c1803ca4b3ea311f3e6656858c6876c69a6d863bbb6ac460b97fde0d99c'
+MODULE_SHA256 = '9df477c052be37db1f7396f7eb6e05531fbd21bbdbff5096a91ac3a64e08231a'

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:6e13a1b525716c08e916308943481ccf110c6bf7a47331b8dc39687174bdae2a
+SymPy 1.14.0; input hash sha256:d3fc55b1d438b03db711338e43045ed349140901ceeaec156b7b4e49ec478d04
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -67,7 +67,7 @@ HAS_DISSIPATION = False
 EXPORTS = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy',)
-INPUT_HASH = '6e13a1b525716c08e916308943481ccf110c6bf7a47331b8dc39687174bdae2a'
+INPUT_HASH = 'd3fc55b1d438b03db711338e43045ed349140901ceeaec156b7b4e49ec478d04'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 10, 'constants': 6, 'rhs_q': 4, 'energy': 9, 'invariants': 9, 'frequencies': 5, 'growth_rates': 2, 'drive_rates': 5}
@@ -270,4 +270,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '774f8fa396c12cb78ef4008fbbb0920aeeccf7238493e3414013d9e00c7f30a6'
+MODULE_SHA256 = '862bea16b6813bc66d5637c3bb81d2056e7c7ef634e2f2b39d3daa4ddfea4eee'

@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:388a45dbcf26f8011128f99a160cfdcf46a192dfec9bf8293603f5665ff7fe46
+SymPy 1.14.0; input hash sha256:f3245372d6f92c49e9a5b89c3b53eb826e68b5f63a48a3ff3bac1396a4278748
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '388a45dbcf26f8011128f99a160cfdcf46a192dfec9bf8293603f5665ff7fe46'
+INPUT_HASH = 'f3245372d6f92c49e9a5b89c3b53eb826e68b5f63a48a3ff3bac1396a4278748'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -427,4 +427,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '6bd76e591515fe4642557dd2814f3b6f88a98592d3feba62dc7f55f27ced9026'
+MODULE_SHA256 = '613209f418f838e47418d70fb4d4d639b9acd5df0f92b9c8f53274ed9d480e27'

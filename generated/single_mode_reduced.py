@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py and derivation/truncation.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:1890af556068033f8a43c3362cc3e8b431194b0028cf68a7738c728702affdd2
+SymPy 1.14.0; input hash sha256:baf5b298cca2b31db2f2227aa858abbbf9c61ee3b04e3e73943098450d36168d
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '1890af556068033f8a43c3362cc3e8b431194b0028cf68a7738c728702affdd2'
+INPUT_HASH = 'baf5b298cca2b31db2f2227aa858abbbf9c61ee3b04e3e73943098450d36168d'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -409,4 +409,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '2dfa5ccc813df356049e714d8ddaf7ba9482b06dcb047523227c300b9fb4562a'
+MODULE_SHA256 = '672ab997b86a4b335c1ced4baa025dda387728b75e33915cfc1d7966d05d02d4'

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:3b947e62807d112715c519791a1005686a6aca666b15a2b7abb16c3099884192
+SymPy 1.14.0; input hash sha256:e93858b049595e02de5b9ac18f06ec782251121715060f612681192de49d9f60
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -71,7 +71,7 @@ HAS_DISSIPATION = False
 EXPORTS = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy', 'log_A1_A2')
-INPUT_HASH = '3b947e62807d112715c519791a1005686a6aca666b15a2b7abb16c3099884192'
+INPUT_HASH = 'e93858b049595e02de5b9ac18f06ec782251121715060f612681192de49d9f60'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 24, 'constants': 14, 'rhs_q': 10, 'energy': 12, 'invariants': 19, 'frequencies': 12, 'growth_rates': 11, 'drive_rates': 12}
@@ -353,4 +353,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'b8c4141d7c71c01295d7dec3425f66060fb16079a8f3c7686283ad6d6de7a9aa'
+MODULE_SHA256 = '14e6d29efa06214662e30ed521634fd65c135566b71d033f00ecec58f02f9801'

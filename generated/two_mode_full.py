@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:619a20ce0e1632c6a7109962bfc994edea7dea788ea82bb4aa8195fbb3462e71
+SymPy 1.14.0; input hash sha256:2077510020bb5727bc79f61417a278d4d384d4da7e1a14177aa83069cf0ebfcb
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -66,7 +66,7 @@ MULTIPLIER_NAMES = ('Const22', 'Const23')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '619a20ce0e1632c6a7109962bfc994edea7dea788ea82bb4aa8195fbb3462e71'
+INPUT_HASH = '2077510020bb5727bc79f61417a278d4d384d4da7e1a14177aa83069cf0ebfcb'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -920,4 +920,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'efed07f563df770eb1ea09a02e8b3ce22174cb674c57d9981c4202ab9792f1e3'
+MODULE_SHA256 = '8026bee7ed90e0735fe3ae53b928540ec3c25be335a442a523aebd5a41472f2e'

@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py and derivation/truncation.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:1db7fdffa9b753736187394aa19b6c3a3833a0d9ee76be238f23db877caa1f83
+SymPy 1.14.0; input hash sha256:108cdd2e1abc59dbfe1d36469b05637d03919c0addb3114d0d59c0cc2014d5e9
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -66,7 +66,7 @@ MULTIPLIER_NAMES = ('Const22', 'Const23')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '1db7fdffa9b753736187394aa19b6c3a3833a0d9ee76be238f23db877caa1f83'
+INPUT_HASH = '108cdd2e1abc59dbfe1d36469b05637d03919c0addb3114d0d59c0cc2014d5e9'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -705,4 +705,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'acdff5d2e8c13c6ae334d6214d751d3866dcd59ee43830143a37b5e6586ff453'
+MODULE_SHA256 = '50cf04370a02c73b7610ac116ed59de563f53b1ce907a816127461397ff877be'
