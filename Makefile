@@ -28,6 +28,7 @@ demo:
 bench:
 	$(PYTHON) -m benchmarks
 	$(PYTHON) -m benchmarks.recording
+	$(PYTHON) -m benchmarks.mechanics_peers
 	$(PYTHON) -m benchmarks.rigid_pydy
 
 ## figures: every figure of the paper

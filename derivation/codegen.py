@@ -110,13 +110,14 @@ class Function:
 
 
 def expression_function(name: str, args: str, doc: str, exprs, targets, allowed, unpacked, ret: str,
-                        head: tuple = ()) -> Function:
+                        head: tuple = (), block=None) -> Function:
     """The :class:`Function` ``name(args)`` that assigns ``exprs`` (CSE'd) to ``targets`` and returns ``ret``.
 
     ``unpacked``: groups of lines binding the names the expressions read (:func:`unpack`), one body entry
-    each; ``head``: lines before them (``out = np.empty(n)``); ``doc`` gets the operation count appended.
+    each; ``head``: lines before them (``out = np.empty(n)``); ``doc`` gets the operation count appended;
+    ``block``: what writes the lines (default :func:`cse_block`; see :func:`.kkt_emit.function_lines`).
     """
-    lines, ops = cse_block(list(exprs), list(targets), allowed)
+    lines, ops = (block or cse_block)(list(exprs), list(targets), allowed)
     return lines_function(name, args, doc, lines, ops, unpacked, ret, head)
 
 
@@ -269,7 +270,7 @@ def _wrapper(name: str, into: str, n: int, what: str) -> Function:
 
 
 def rhs_functions(syms_state, syms_par, rates, syms_pose=(), pose_rates=(), solve=((), 0),
-                  known=frozenset()) -> tuple:
+                  known=frozenset(), pose_solve=((), 0)) -> tuple:
     """The right-hand-side functions every generated module has, as :class:`Function` s.
 
     ``rhs_into(t, s, p, ds)`` and ``rhs(t, s, p)`` take the parameters;
@@ -279,7 +280,8 @@ def rhs_functions(syms_state, syms_par, rates, syms_pose=(), pose_rates=(), solv
     from ``q``, which the compiled integrators call at every stage.  With a
     pose, ``rhs_pose_into``/``rhs_pose``/``rhs_pose_q_into`` likewise.
     ``solve``: lines (and their op count) that open every ``*_into`` body after its unpacking, binding the
-    symbols ``known`` that ``rates`` may hold (the numeric elimination, :mod:`.kkt_emit`).
+    symbols ``known`` that ``rates`` may hold (the numeric elimination, :mod:`.kkt_emit`); ``pose_solve``, lines
+    that follow them in the pose functions (binding the symbols of ``pose_rates``).
     """
     pre, pre_ops = list(solve[0]), solve[1]
     state, pose, params = [str(x) for x in syms_state], [str(x) for x in syms_pose], [str(x) for x in syms_par]
@@ -292,10 +294,11 @@ def rhs_functions(syms_state, syms_par, rates, syms_pose=(), pose_rates=(), solv
     allowed_q = set(syms_state) | set(syms_par) | {k for k, _ in constants} | {names.t} | set(known)
     nl = "\n"
 
-    def into(name, key, what, exprs, ok, reads, arg):
+    def into(name, key, what, exprs, ok, reads, arg, solved=((), 0)):
         lines, ops = cse_block(list(exprs), [f"ds[{i}]" for i in range(len(exprs))], ok)
-        body = tuple(nl.join(group) for group in reads) + (nl.join(pre + lines),)
-        return Function(name, f"t, s, {arg}, ds", f"{what} ({ops + pre_ops} operations).", body, ops + pre_ops, key)
+        body = tuple(nl.join(group) for group in reads) + (nl.join(pre + list(solved[0]) + lines),)
+        ops += pre_ops + solved[1]
+        return Function(name, f"t, s, {arg}, ds", f"{what} ({ops} operations).", body, ops, key)
 
     s_lines, p_lines, q_lines = unpack(state, "s"), unpack(params, "p"), unpack(q_names, "q")
     out = [
@@ -314,7 +317,7 @@ def rhs_functions(syms_state, syms_par, rates, syms_pose=(), pose_rates=(), solv
     pose_lines = unpack(pose, "s", start=n)
     return (*out,
             into("rhs_pose_into", "rhs_pose", "Write d(state, pose)/dt into ``ds``", list(rates) + list(pose_rates),
-                 allowed | set(syms_pose), (s_lines, pose_lines, p_lines), "p"),
+                 allowed | set(syms_pose), (s_lines, pose_lines, p_lines), "p", pose_solve),
             _wrapper("rhs_pose", "rhs_pose_into", n + npose, "d(state, pose)/dt"),
             into("rhs_pose_q_into", "rhs_pose_q", "``rhs_pose_into`` with ``q = constants(p)`` in place of ``p``",
-                 hoisted, allowed_q | set(syms_pose), (s_lines, pose_lines, q_lines), "q"))
+                 hoisted, allowed_q | set(syms_pose), (s_lines, pose_lines, q_lines), "q", pose_solve))

@@ -153,16 +153,19 @@ def _state_defaults(spec: engine.ModelSpec, state) -> dict:
 
 
 def _state_function(name: str, exprs, state, params, doc: str, scalar: bool = False,
-                    args: str = "s, p") -> Function:
+                    args: str = "s, p", block=cse_block) -> Function:
     """A jitted ``name(s, p)`` of state and parameters (an array, or a scalar when ``scalar``).
 
-    ``args="s, p, t"``: also of the time (a model whose equations depend on it).
+    ``args="s, p, t"``: also of the time (a model whose equations depend on it).  ``block``: what writes the
+    body lines (default :func:`.codegen.cse_block`; a numeric-elimination model's solves its dependent velocities
+    first).
     """
     allowed = set(state) | set(params) | ({names.t} if args.endswith(", t") else set())
     targets = [name] if scalar else [f"out[{i}]" for i in range(len(exprs))]
     return expression_function(name, args, doc, exprs, targets, allowed,
                                (unpack([str(x) for x in state], "s"), unpack([str(q) for q in params], "p")),
-                               name if scalar else "out", () if scalar else (f"    out = np.empty({len(exprs)})",))
+                               name if scalar else "out", () if scalar else (f"    out = np.empty({len(exprs)})",),
+                               block=block)
 
 
 def _coefficient_function(name: str, exprs, params, doc: str) -> Function:
@@ -241,10 +244,13 @@ def _point_mass_body(system, frequencies) -> tuple:
     unpack_s, unpack_p = unpack([str(s) for s in system.state], "s"), unpack([str(p) for p in spec.params], "p")
     unpack_pose = unpack([str(q) for q in spec.pose], "s", start=len(system.state))
     pose_exprs = [system.pose_rates[q] for q in spec.pose]
+    block = pose_block = cse_block
     if system.kkt is not None:  # multipliers eliminated numerically (derivation/kkt_emit.py)
         rhs = kkt_emit.rhs_source(system)
         lam_lines, lam_ops = kkt_emit.multiplier_lines(system, allowed)
         jacobians = kkt_emit.jacobian_source(system, allowed)
+        block = lambda e, targets, al: kkt_emit.function_lines(system, e, targets, al)  # noqa: E731
+        pose_block = lambda e, targets, al: kkt_emit.function_lines(system, e, targets, al, True)  # noqa: E731
     else:
         rhs = rhs_functions(system.state, spec.params, system.state_rhs(), spec.pose, pose_exprs)
         lam_lines, lam_ops = cse_block(list(system.multipliers), [f"out[{i}]" for i in range(len(system.multipliers))],
@@ -257,20 +263,21 @@ def _point_mass_body(system, frequencies) -> tuple:
             "pose_rates", args, f"Return the rates ({', '.join(str(spec.velocity_of(q)) for q in spec.pose)}) of "
             f"the pose at the pose-extended state ``s``", pose_exprs, [f"out[{i}]" for i in range(len(pose_exprs))],
             allowed | set(spec.pose), (unpack_s, unpack_pose, unpack_p), "out",
-            (f"    out = np.empty({len(pose_exprs)})",)),
+            (f"    out = np.empty({len(pose_exprs)})",), block=pose_block),
         expression_function(
             "energy", args, f"Energy per unit mass{' at the pose-extended state' if energy_pose else ''}",
             [system.energy], ["energy"], allowed | set(spec.pose),
-            (unpack_s + (unpack_pose if energy_pose else []), unpack_p), "energy"),
+            (unpack_s + (unpack_pose if energy_pose else []), unpack_p), "energy", block=block),
         lines_function("multipliers", args, "Lagrange multipliers (contact forces per unit mass) "
                        f"{', '.join(spec.multiplier_labels)}", lam_lines, lam_ops, (unpack_s, unpack_p), "out",
                        (f"    out = np.empty({len(system.multipliers)})",)),
         drawing.module_source(system),
-        *_optional_functions(system, frequencies, args),
-        _extra_source(spec), jacobians, steady.block_source(spec.steady, system.state, spec.params))
+        *_optional_functions(system, frequencies, args, block),
+        _extra_source(spec), jacobians,
+        steady.block_source(spec.steady, system.state, spec.params, steady.holonomic_invariants(spec)))
 
 
-def _optional_functions(system, frequencies, args) -> list:
+def _optional_functions(system, frequencies, args, block=cse_block) -> list:
     """``frequencies``, ``event_values``, ``power_dissipated``, ``holonomic_residual``, ``power_input``: those that
     apply to the model."""
     spec, out = system.spec, []
@@ -287,7 +294,7 @@ def _optional_functions(system, frequencies, args) -> list:
         out.append(_state_function(
             "power_dissipated", [system.power], system.state, spec.params,
             "Rate at which the non-conservative forces remove energy, -q_dot . Q (>= 0 for pure dissipation)",
-            scalar=True, args=args))
+            scalar=True, args=args, block=block))
     if spec.holonomic:
         out.append(_state_function(
             "holonomic_residual", list(spec.holonomic), system.state, spec.params,
@@ -298,7 +305,7 @@ def _optional_functions(system, frequencies, args) -> list:
             "power_input", [system.power_input], system.state, spec.params,
             "Rate at which the explicit time, the rheonomic constraints and the inputs add energy, "
             "-dL/dt - lambda . b + q_dot . Q_inputs",
-            scalar=True, args=args))
+            scalar=True, args=args, block=block))
     return out
 
 

@@ -400,7 +400,8 @@ def _contract_problems(spec: ModelSpec) -> list:
         return False
 
     qd = sp.Matrix(spec.velocities)
-    if not undeclared(spec.lagrangian, "the `lagrangian`"):
+    if not undeclared(spec.lagrangian, "the `lagrangian`") and _velocity_degree(spec.lagrangian,
+                                                                              set(spec.velocities)) > 2:
         hess = [sp.diff(spec.lagrangian, v, w) for v in spec.velocities for w in spec.velocities]
         if any(sp.diff(e, v) != 0 for e in hess for v in spec.velocities):
             problems.append("the `lagrangian` must be at most quadratic in the velocities "
@@ -535,6 +536,36 @@ def _contract_problems(spec: ModelSpec) -> list:
         if spec.extra_source and not re.search(rf"^(def |class )?{re.escape(name)}\b", spec.extra_source, re.M):
             problems.append(f"`exports` entry {name!r} is not defined at the top level of `extra_source`")
     return problems
+
+
+def _velocity_degree(e: sp.Expr, velocities: set) -> float:
+    """An upper bound of the degree of ``e`` as a polynomial in ``velocities`` (``inf`` where they enter otherwise).
+
+    One pass over the expression tree: sums take the largest degree, products the sum, integer powers the
+    multiple.  A bound of 2 proves a Lagrangian quadratic without differentiating it (the Whipple bicycle's 512
+    third derivatives took about a minute); above 2 the caller checks exactly (terms may cancel).
+    """
+    memo: dict = {}
+
+    def degree(x):
+        if x in memo:
+            return memo[x]
+        if x.is_Symbol:
+            out = 1 if x in velocities else 0
+        elif x.is_Atom:
+            out = 0
+        elif x.is_Add:
+            out = max(degree(a) for a in x.args)
+        elif x.is_Mul:
+            out = sum(degree(a) for a in x.args)
+        elif x.is_Pow and x.exp.is_Integer and x.exp >= 0:
+            out = degree(x.base) * int(x.exp)
+        else:
+            out = math.inf if any(degree(a) for a in x.args) else 0
+        memo[x] = out
+        return out
+
+    return degree(sp.sympify(e))
 
 
 def _finite_positive(v) -> bool:
@@ -697,6 +728,8 @@ def derive(spec: ModelSpec) -> ReducedSystem:
     """Run the pipeline of the module docstring on ``spec``."""
     M, h, A, c = _lagrange_terms(spec)
     at = dict(spec.cyclic)
+    if choose_elimination(spec, len(spec.independent), affine_terms(spec).subs(at)) == "numeric":
+        return _numeric_system(spec, at, M, h, A, c)
     M, h, A, c = (X.subs(at) for X in (M, h, A, c))
     dep, ind, A_dep, A_ind = _split(spec, A)
     if A_dep.det() == 0:
@@ -715,8 +748,6 @@ def derive(spec: ModelSpec) -> ReducedSystem:
         zip((spec.accelerations[i] for i in dep), sp.expand(-A_dep_inv * (A_ind * qdd_ind + c)))
     )
 
-    if choose_elimination(spec, len(ind), b) == "numeric":
-        return _numeric_system(spec, at, M, h, A, c, b, dep_vel, A_dep_inv)
     qdd = sp.Matrix(spec.accelerations)
     residual = (M * qdd + h).subs(dep_acc).subs(dep_vel)
     residual = residual.applyfunc(sp.expand)
@@ -812,9 +843,11 @@ class Kkt:
     """The linear system ``[[M, -A^T], [A, 0]] [q_ddot, lambda] = [f, -c]`` in the closed state.
 
     ``mass`` ``M`` (n x n), ``forcing`` ``f = Q - h`` (n), ``constraint`` ``A`` (m x n) and ``bias``
-    ``c = d(A q_dot + b)/dt - A q_ddot`` (m), the cyclic coordinates at their representative values and the
-    dependent velocities substituted; ``independent``: the indices of the independent accelerations among the n;
-    ``dependent_inverse``: the inverse of the constraint matrix's block of the dependent coordinates.
+    ``c = d(A q_dot)/dt - A q_ddot`` (m), the cyclic coordinates at their representative values; ``f`` and ``c``
+    hold the dependent velocities (``velocities[i]`` for ``i`` in ``dependent``), which the emitted code solves
+    from ``A_dep v_dep = -A_ind v_ind`` first (:mod:`.kkt_emit`); ``independent``, ``dependent``: indices among the
+    n coordinates.  ``constraint_general`` is ``A`` at a general pose, whose dependent velocities (the symbols
+    ``general_velocities``) the pose rates are.
     """
 
     mass: sp.Matrix
@@ -822,7 +855,12 @@ class Kkt:
     constraint: sp.Matrix
     bias: sp.Matrix
     independent: tuple
-    dependent_inverse: sp.Matrix
+    dependent: tuple
+    velocities: tuple
+    constraint_general: sp.Matrix
+    general_velocities: tuple
+    #: the unreduced ``(M, h, A, c)`` at a general pose (what :func:`check_symmetry` compares with)
+    unreduced: tuple = ()
 
     def exprs(self) -> list:
         return [*self.mass, *self.forcing, *self.constraint, *self.bias]
@@ -835,46 +873,100 @@ class Kkt:
         return K, sp.Matrix.vstack(self.forcing, -self.bias)
 
 
-def _numeric_system(spec: ModelSpec, at: dict, M, h, A, c, b, dep_vel: dict, A_dep_inv) -> ReducedSystem:
-    """The :class:`ReducedSystem` of ``spec`` with its accelerations and multipliers left to a numeric solve."""
+def _numeric_system(spec: ModelSpec, at: dict, M, h, A, c) -> ReducedSystem:
+    """The :class:`ReducedSystem` of ``spec`` with its dependent velocities, accelerations and multipliers left to
+    a numeric solve: nothing here inverts or expands the constraint block (the Whipple bicycle's is 5 x 5 of entries
+    up to 771 operations, and its symbolic inverse did not finish in 12 minutes)."""
+    at = {k: sp.sympify(v) for k, v in at.items()}
     variables = list(spec.velocity_state)
-    kkt = Kkt(mass=M.subs(dep_vel), forcing=(-h).subs(dep_vel), constraint=A.subs(dep_vel), bias=c.subs(dep_vel),
-              independent=tuple(spec.coordinates.index(q) for q in spec.independent), dependent_inverse=A_dep_inv)
+    dep = tuple(spec.coordinates.index(q) for q in spec.dependent)
+    general = tuple(names.Own(f"_vg{i}", real=True) for i in range(len(dep)))
+    kkt = Kkt(mass=M.xreplace(at), forcing=(-h).xreplace(at), constraint=A.xreplace(at), bias=c.xreplace(at),
+              independent=tuple(spec.coordinates.index(q) for q in spec.independent), dependent=dep,
+              velocities=tuple(spec.velocities), constraint_general=A, general_velocities=general,
+              unreduced=(M, h, A, c))
+    dep_v = {spec.velocities[i] for i in dep}
     allowed = set(variables) | set(spec.params) | {t} | set(spec.inputs) | set(spec.input_rates)
-    leftover = set().union(*(e.free_symbols for e in kkt.exprs())) - allowed
+    leftover = set().union(*(e.free_symbols for e in kkt.exprs())) - allowed - dep_v
     if leftover:
         raise ModelSpecError(spec.error_message(
             f"the equations do not close: they still contain {sorted(map(str, leftover))}; the coordinates "
             f"declared `cyclic` are not all symmetries of the Lagrangian and constraints"))
+    _check_dependent_block(spec, kkt)
     qd = sp.Matrix(spec.velocities)
-    L = spec.lagrangian.subs(at)
-    energy = tidy((sum(v * sp.diff(L, v) for v in qd) - L).subs(dep_vel), variables) + _dropped_potential(spec, at)
+    L = spec.lagrangian.xreplace(at)
+    energy = sum((v * sp.diff(L, v) for v in qd), -L) + _dropped_potential(spec, at)
     power = None
     if spec.dissipative:
-        power = tidy(sp.expand((-(qd.T * _without_inputs(spec, generalized_forces(spec)).subs(at))[0]).subs(dep_vel)),
-                     variables)
-    general = dependent_velocities(spec)
+        power = -(qd.T * _without_inputs(spec, generalized_forces(spec)).xreplace(at))[0]
     lam = sp.Matrix([names.Own(f"_lambda{i}", real=True) for i in range(A.rows)])
+    accelerations = tuple(spec.accelerations[i] for i in kkt.independent)
+    by_rate = dict(zip((spec.velocities[i] for i in dep), general))
     return ReducedSystem(
-        spec=spec, state=spec.state, accelerations=tuple(spec.accelerations[i] for i in kkt.independent),
-        mass_matrix=sp.eye(len(kkt.independent)),
-        forcing=sp.Matrix([spec.accelerations[i] for i in kkt.independent]),
-        explicit=sp.Matrix([spec.accelerations[i] for i in kkt.independent]),
-        multipliers=lam, multipliers_implicit=lam, energy=energy,
-        pose_rates={q: general.get(spec.velocity_of(q), spec.velocity_of(q)) for q in spec.pose},
-        power=power, power_input=_power_input(spec, L, b, lam, dep_vel, variables, at),
-        dependent_rates={q: tidy(dep_vel[spec.velocity_of(q)], variables) for q in spec.kept}, kkt=kkt)
+        spec=spec, state=spec.state, accelerations=accelerations, mass_matrix=sp.eye(len(accelerations)),
+        forcing=sp.Matrix(accelerations), explicit=sp.Matrix(accelerations), multipliers=lam,
+        multipliers_implicit=lam, energy=energy,
+        pose_rates={q: by_rate.get(spec.velocity_of(q), spec.velocity_of(q)) for q in spec.pose},
+        power=power, power_input=_numeric_power_input(spec, L, at),
+        dependent_rates={q: spec.velocity_of(q) for q in spec.kept}, kkt=kkt)
+
+
+def _check_dependent_block(spec: ModelSpec, kkt: Kkt) -> None:
+    """Refuse a constraint block of the dependent velocities that is singular at a random state (numerically)."""
+    rng = random.Random(5)
+    A = kkt.constraint.extract(list(range(kkt.constraint.rows)), list(kkt.dependent))
+    pt = {s: sp.Float(rng.uniform(-0.9, 0.9), 30) for s in A.free_symbols}
+    with mpmath.workdps(30):
+        value = mpmath.det(mpmath.matrix(A.xreplace(pt).evalf(30).tolist()))
+    if abs(value) < 1e-20:
+        raise ModelSpecError(spec.error_message(
+            f"the constraints do not determine the velocities of `dependent` {spec.dependent} (their block of the "
+            f"constraint matrix is singular at a random state); choose other dependent coordinates"))
+
+
+def _floats(values: dict) -> dict:
+    """``values`` as 30-digit floats: substituted into a large expression, they evaluate it node by node as it is
+    rebuilt (``evalf`` of the exact values took most of the Whipple bicycle's ``check_symmetry``)."""
+    return {k: sp.Float(sp.sympify(v), 30) for k, v in values.items()}
+
+
+def _numeric_velocities(A, b, dep: list, ind: list, values: dict) -> dict:
+    """``{index: value}`` of the dependent velocities from ``A q_dot + b = 0`` at ``values`` (30 digits)."""
+    An = A.xreplace(values).evalf(30)
+    bn = b.xreplace(values).evalf(30)
+    rhs = [-(bn[r] + sum(An[r, i] * values[k] for i, k in ind)) for r in range(A.rows)]
+    with mpmath.workdps(30):
+        sol = mpmath.lu_solve(mpmath.matrix([[An[r, i] for i in dep] for r in range(A.rows)]), mpmath.matrix(rhs))
+    return {i: sp.Float(sol[j], 30) for j, i in enumerate(dep)}
+
+
+def _numeric_power_input(spec: ModelSpec, L: sp.Expr, at: dict):
+    """:func:`_power_input` of a numeric-elimination model (its velocity constraints are homogeneous, ``b = 0``),
+    left in the dependent velocities, which its functions solve for first."""
+    if not (L.has(t) or spec.inputs):
+        return None
+    power = -sp.diff(L, t)
+    if spec.inputs:
+        Q = generalized_forces(spec)
+        power += (sp.Matrix(spec.velocities).T * (Q - _without_inputs(spec, Q)).xreplace(at))[0]
+    return power
 
 
 def kkt_solution(system: ReducedSystem, values: dict) -> tuple:
     """Independent accelerations and multipliers of a numeric-elimination ``system`` at a point (30 digits)."""
-    K, r = system.kkt.matrix()
+    kkt = system.kkt
+    spec = system.spec
+    values = _floats(values)
+    ind = [(i, spec.velocities[i]) for i in kkt.independent]
+    vel = _numeric_velocities(kkt.constraint, sp.zeros(kkt.constraint.rows, 1), list(kkt.dependent), ind, values)
+    values = {**values, **{spec.velocities[i]: v for i, v in vel.items()}}
+    K, r = kkt.matrix()
     with mpmath.workdps(30):
-        sol = mpmath.lu_solve(mpmath.matrix(K.subs(values).evalf(30).tolist()),
-                              mpmath.matrix(r.subs(values).evalf(30).tolist()))
+        sol = mpmath.lu_solve(mpmath.matrix(K.xreplace(values).evalf(30).tolist()),
+                              mpmath.matrix(r.xreplace(values).evalf(30).tolist()))
         sol = [sp.Float(v, 30) for v in sol]
-    n = system.kkt.mass.rows
-    return [sol[i] for i in system.kkt.independent], sol[n:]
+    n = kkt.mass.rows
+    return [sol[i] for i in kkt.independent], sol[n:]
 
 
 def _dropped_potential(spec: ModelSpec, at: dict) -> sp.Expr:
@@ -986,34 +1078,39 @@ def _random_point(symbols, rng: random.Random) -> dict:
     return {s: sp.Rational(rng.randint(-900, 900), 1000) for s in symbols}
 
 
-def unreduced_accelerations(spec: ModelSpec, values: dict, everything: bool = False) -> tuple:
+def unreduced_accelerations(spec: ModelSpec, values: dict, everything: bool = False, terms: tuple = ()) -> tuple:
     """Independent accelerations and multipliers from the full DAE at a numeric point.
 
     Solves ``[[M, -A^T], [A, 0]] [q_ddot, lambda] = [-h, -c]`` at the
     configuration ``values`` (which must fix every coordinate, including the
     cyclic ones, every parameter, and the independent velocities; the
-    dependent velocities are taken from the constraints).  Used to test the
-    elimination and the symmetry assumption at arbitrary poses.  With
-    ``everything`` the first item holds every acceleration (in the order of
-    ``spec.accelerations``) and a third item the dependent velocities.
+    dependent velocities are taken from the constraints, solved in 30 digits).
+    Used to test the elimination and the symmetry assumption at arbitrary
+    poses.  With ``everything`` the first item holds every acceleration (in
+    the order of ``spec.accelerations``) and a third item the dependent
+    velocities.  ``terms``: ``(M, h, A, c)`` of :func:`_lagrange_terms` if
+    already formed.
     """
-    M, h, A, c = _lagrange_terms(spec)
-    dep_vel = dependent_velocities(spec, at={k: v for k, v in values.items() if k in spec.coordinates})
-    dep_vel = {k: v.subs(values) for k, v in dep_vel.items()}
+    M, h, A, c = terms or _lagrange_terms(spec)
+    values = _floats(values)
+    ind = [(i, spec.velocities[i]) for i in (spec.coordinates.index(q) for q in spec.independent)]
+    dep = [spec.coordinates.index(q) for q in spec.dependent]
+    vel = _numeric_velocities(A, affine_terms(spec), dep, ind, values)
+    dep_vel = {spec.velocities[i]: v for i, v in vel.items()}
     pt = {**values, **dep_vel}
     n, m = len(spec.coordinates), len(spec.velocity_constraints)
     K = sp.zeros(n + m, n + m)
-    K[:n, :n] = M.subs(pt)
-    K[:n, n:] = -A.T.subs(pt)
-    K[n:, :n] = A.subs(pt)
-    rhs = sp.Matrix.vstack(-h.subs(pt), -c.subs(pt))
+    K[:n, :n] = M
+    K[:n, n:] = -A.T
+    K[n:, :n] = A
+    rhs = sp.Matrix.vstack(-h, -c)
     with mpmath.workdps(30):
-        sol = mpmath.lu_solve(mpmath.matrix(K.evalf(30).tolist()), mpmath.matrix(rhs.evalf(30).tolist()))
+        sol = mpmath.lu_solve(mpmath.matrix(K.xreplace(pt).evalf(30).tolist()),
+                              mpmath.matrix(rhs.xreplace(pt).evalf(30).tolist()))
         sol = [sp.Float(v, 30) for v in sol]
     if everything:
         return sol[:n], list(sol[n:]), dep_vel
-    ind = [spec.coordinates.index(q) for q in spec.independent]
-    return [sol[i] for i in ind], list(sol[n:])
+    return [sol[i] for i, _ in ind], list(sol[n:])
 
 
 def check_symmetry(system: ReducedSystem, seed: int = 0, tol: float = 1e-20) -> float:
@@ -1033,7 +1130,7 @@ def check_symmetry(system: ReducedSystem, seed: int = 0, tol: float = 1e-20) -> 
     if spec.quasi_velocities:
         acc, lam, pt = _quasi_point(spec, pt)
     else:
-        acc, lam = unreduced_accelerations(spec, pt)
+        acc, lam = unreduced_accelerations(spec, pt, terms=system.kkt.unreduced if system.kkt else ())
     if system.kkt is not None:  # the reduced state at the general pose: the cyclic coordinates at their values
         red_acc, red_lam = kkt_solution(system, {k: v for k, v in pt.items() if k not in spec.cyclic})
     else:

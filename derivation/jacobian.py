@@ -64,6 +64,35 @@ def _gradients(exprs, variables):
     return subs, deriv_subs, [gradient(e) for e in reduced]
 
 
+def partial(e: sp.Expr, x: sp.Symbol) -> sp.Expr:
+    """``d e / d x`` by the chain rule on the node types of a program's line (sums, products, powers, ``sin``,
+    ``cos``, ``sqrt``, selects), ``sp.diff`` for anything else: equal to ``sp.diff``, without its dispatch (which
+    took two thirds of the Whipple bicycle's Jacobians)."""
+    if e.is_Symbol:
+        return sp.S.One if e == x else sp.S.Zero
+    if e.is_Atom or x not in e.free_symbols:
+        return sp.S.Zero
+    if e.is_Add:
+        return sp.Add(*[partial(a, x) for a in e.args])
+    if e.is_Mul:
+        args = e.args
+        terms = []
+        for i, a in enumerate(args):
+            da = partial(a, x)
+            if da != 0:
+                terms.append(sp.Mul(*args[:i], da, *args[i + 1:]))
+        return sp.Add(*terms)
+    if e.is_Pow and x not in e.exp.free_symbols:
+        return e.exp * e.base ** (e.exp - 1) * partial(e.base, x)
+    if isinstance(e, sp.sin):
+        return sp.cos(e.args[0]) * partial(e.args[0], x)
+    if isinstance(e, sp.cos):
+        return -sp.sin(e.args[0]) * partial(e.args[0], x)
+    if isinstance(e, sp.Piecewise):
+        return sp.Piecewise(*[(partial(v, x), c) for v, c in e.args])
+    return sp.diff(e, x)
+
+
 def _function(name, exprs, wrt, state, params, shape, doc):
     """Source and op count of ``name(s, p)`` returning ``d exprs / d wrt`` as an array of ``shape``."""
     subs, deriv_subs, rows = _gradients(exprs, list(wrt))
@@ -102,6 +131,97 @@ def {name}({args}):
 {nl.join(lines)}
     return out
 ''', int(ops)
+
+
+def program_tangent(subs, outputs, seeds: dict) -> tuple:
+    """Forward mode along one direction: ``(lines, tangents)``, the program's lines each followed by its
+    derivative ``_t<k>`` along ``seeds`` ({variable: symbol of its tangent component}), and the derivative of
+    each output; only the lines the tangents need are kept."""
+    tangent: dict = {}
+    assigns = []
+
+    def dot(e):
+        terms = []
+        for x in sorted(e.free_symbols, key=str):
+            tx = seeds.get(x, tangent.get(x))
+            if tx is None:
+                continue
+            dx = partial(e, x)
+            if dx != 0:
+                terms.append(dx * tx)
+        return sp.Add(*terms)
+
+    for c, e in subs:
+        assigns.append((c, e))
+        d = dot(e)
+        if d != 0:
+            tangent[c] = d if d.is_Atom else names.Own(f"_t{str(c)[2:]}")
+            if not d.is_Atom:
+                assigns.append((tangent[c], d))
+    tangents = [dot(sp.sympify(o)) for o in outputs]
+    used = set().union(set(), *(e.free_symbols for e in tangents))
+    kept = []
+    for sym, e in reversed(assigns):
+        if sym in used:
+            kept.append((sym, e))
+            used |= e.free_symbols
+    return kept[::-1], tangents
+
+
+def _tangent_function(name, program, rates, wrt, state, params, doc) -> tuple[str, int]:
+    """``name(s, p)`` returning ``d rates / d wrt`` column by column: a private ``_<name>_along(s, p, v)`` (the
+    derivative along ``v``, one forward pass) called once per column, so that the compiled code is about three
+    right-hand sides long whatever the number of columns (the Whipple bicycle's full Jacobian, 32,600
+    operations, did not compile in 14 minutes on the loaded machine)."""
+
+    seeds = {x: names.Own(f"_v{j}") for j, x in enumerate(wrt)}
+    lines, tangents = program_tangent(program, rates, seeds)
+    body = [f"    {t} = {_code(e)}" for t, e in lines]
+    body += [f"    out[{i}] = {_code(e)}" for i, e in enumerate(tangents)]
+    ops = int(sum(sp.count_ops(e) for _, e in lines) + sum(sp.count_ops(e) for e in tangents))
+    used = set().union(set(), *(e.free_symbols for _, e in lines), *(e.free_symbols for e in tangents))
+    timed = names.t in set().union(*(e.free_symbols for _, e in program))
+    args = "s, p, t" if timed else "s, p"
+    unpack = [ln for ln, x in zip(_unpack([str(x) for x in state], "s"), state) if x in used]
+    unpack += [ln for ln, x in zip(_unpack([str(x) for x in params], "p"), params) if x in used]
+    seed_lines = [f"    {v} = _v[{j}]" for j, v in enumerate(seeds.values()) if v in used]
+    n, k = len(rates), len(wrt)
+    nl = "\n"
+    return f'''
+
+@njit(cache=True)
+def _{name}_along({args}, _v):
+    """d(state rate) along the direction ``_v`` of the {'state' if name == 'jacobian' else 'parameters'} ({ops} operations)."""
+    out = np.zeros({n})
+{nl.join(unpack + seed_lines)}
+{nl.join(body)}
+    return out
+
+
+@njit(cache=True)
+def {name}({args}):
+    """{doc}, one forward pass per column ({k} x {ops} operations)."""
+    out = np.zeros(({n}, {k}))
+    _v = np.zeros({k})
+    for _j in range({k}):
+        _v[:] = 0.0
+        _v[_j] = 1.0
+        out[:, _j] = _{name}_along({args}, _v)
+    return out
+''', ops * k
+
+
+def program_block_source(program, rates, state, params) -> str:
+    """:func:`block_source` of the rates ``rates`` bound by the straight-line ``program`` (the numeric
+    elimination's, :mod:`.kkt_emit`): the program differentiated in forward mode, line by line."""
+    rates, state, params = list(rates), list(state), list(params)
+    n, k = len(state), len(params)
+    src_s, ops_s = _tangent_function("jacobian", program, rates, state, state, params,
+                                     f"d(state rate)/d(state): J[i, j] = d rhs_i / d s_j, shape ({n}, {n})")
+    src_p, ops_p = _tangent_function("jacobian_p", program, rates, params, state, params,
+                                     f"d(state rate)/d(parameters): J[i, j] = d rhs_i / d p_j, shape ({n}, {k})")
+    return (f"\n\n#: operation counts of the Jacobians (derivation/jacobian.py, forward mode through the program of "
+            f"derivation/kkt_emit.py)\nOP_COUNTS.update(jacobian={ops_s}, jacobian_p={ops_p})" + src_s + src_p)
 
 
 def block_source(rates, state, params) -> str:

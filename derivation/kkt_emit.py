@@ -1,146 +1,252 @@
-"""Right-hand side of a model whose multipliers are eliminated numerically (``ReducedSystem.kkt``).
+"""Functions of a model whose multipliers are eliminated numerically (``ReducedSystem.kkt``).
 
-Past a size where the closed form stops paying (:data:`.engine.NUMERIC_FROM`), the generated module solves
-``[[M, -A^T], [A, 0]] [q_ddot, lambda] = [f, -c]`` at the state instead of evaluating the closed form.  The
-constraints give the dependent accelerations, ``q_ddot = T a + d`` with ``T = [-A_dep^-1 A_ind; I]`` and
-``d = [-A_dep^-1 c; 0]`` (``a`` the independent accelerations), so ``a`` solves ``(T^T M T) a = T^T (f - M d)``:
-a k x k symmetric positive-definite system (the kinetic energy on the constraint manifold), factored as
-``L D L^T`` without pivoting, unrolled for its fixed size; the multipliers follow from the dependent rows,
-``lambda = A_dep^-T (M q_ddot - f)_dep``.  Every entry is written once with common subexpressions shared (the
-products are never expanded).  The code stays straight-line arithmetic on scalars: no array is allocated, no
-LAPACK is bound, and ``integrators/irexpr.py`` writes it as IR like any closed form.
+Past a size where the closed form stops paying (:data:`.engine.NUMERIC_FROM`), nothing symbolic inverts or
+expands the constraint block: the generated module evaluates ``M``, ``f``, ``A`` and ``c`` (:class:`.engine.Kkt`)
+with shared subexpressions and solves at every call, in straight-line code written as a :class:`Program`:
+
+1. the dependent velocities from ``A_dep v_dep = -A_ind v_ind`` (an unrolled LU with partial pivoting);
+2. the dependent accelerations ``q_ddot = T a + d`` with ``T = [-A_dep^-1 A_ind; I]`` and ``d = [-A_dep^-1 c; 0]``
+   (the same LU, ``k + 1`` right-hand sides), so that the independent accelerations ``a`` solve the reduced
+   system ``(T^T M T) a = T^T (f - M d)``: k x k, symmetric positive definite (the kinetic energy on the
+   constraint manifold), factored as ``L D L^T`` without pivoting;
+3. the multipliers from the dependent rows, ``A_dep^T lambda = (M q_ddot - f)_dep`` (LU of ``A_dep^T``).
+
+Every step is an assignment ``symbol = expression`` of earlier symbols, so the Jacobians are the same program
+differentiated in forward mode along one direction (:func:`.jacobian.program_tangent`), called once per column:
+exact, and about three right-hand sides long.
+The pivoting is written as selects (``b if abs(b) > abs(a) else a``); a structural zero needs none.  No array
+is allocated and no LAPACK is bound.
 """
 from __future__ import annotations
 
+import itertools
+
 import sympy as sp
 
-from . import names
-from .codegen import cse_block as _cse_block, rhs_functions as _rhs_source, unpack as _unpack
+from . import jacobian, names
+from .codegen import code as _code, rhs_functions as _rhs_source
 
 
-def _reduced(system):
-    """``(Mr, fr, qdd, lam)``: the reduced matrix and forcing, and ``q_ddot`` and ``lambda`` in the symbols ``_a*``."""
+class Program:
+    """Straight-line code: ``(symbol, expression)`` assignments in order, every symbol ``_c<k>`` (one counter)."""
+
+    def __init__(self, prefix: str = "_c"):
+        self.lines: list = []
+        self.prefix = prefix
+        self._count = itertools.count()
+
+    def _fresh(self):
+        while True:
+            yield names.Own(f"{self.prefix}{next(self._count)}")
+
+    def let(self, e):
+        """A symbol bound to ``e`` (``e`` itself when it is a number or a symbol)."""
+        e = sp.sympify(e)
+        if e.is_Atom:
+            return e
+        s = next(self._fresh())
+        self.lines.append((s, e))
+        return s
+
+    def cse(self, exprs) -> list:
+        """Bind ``exprs`` with their common subexpressions shared; returns a symbol (or atom) per expression."""
+        subs, reduced = sp.cse(list(exprs), symbols=self._fresh(), order="canonical")
+        self.lines += subs
+        return [self.let(e) for e in reduced]
+
+
+def lu_solve(prog: Program, A: list, columns: list) -> list:
+    """``X`` with ``A X = B``: LU with partial pivoting, unrolled (``A`` m x m rows of atoms, ``B`` as columns).
+
+    Row ``j`` takes the largest ``|a_ij|`` of the rows below by a select for each candidate row (none where
+    an entry is a structural zero); the right-hand sides ride along.  Returns the solution columns.
+    """
+    m = len(A)
+    rows = [list(A[i]) + [col[i] for col in columns] for i in range(m)]
+    width = len(rows[0]) if rows else 0
+    for j in range(m):
+        for i in range(j + 1, m):
+            if rows[i][j] == 0:
+                continue
+            if rows[j][j] == 0:
+                rows[i], rows[j] = rows[j], rows[i]
+                continue
+            larger = sp.Abs(rows[i][j]) > sp.Abs(rows[j][j])
+            for k in range(j, width):
+                a, b = rows[j][k], rows[i][k]
+                if a != b:
+                    rows[j][k] = prog.let(sp.Piecewise((b, larger), (a, True)))
+                    rows[i][k] = prog.let(sp.Piecewise((a, larger), (b, True)))
+        if rows[j][j] == 0:
+            raise ValueError("the constraint block of the dependent velocities is structurally singular")
+        for i in range(j + 1, m):
+            if rows[i][j] == 0:
+                continue
+            factor = prog.let(rows[i][j] / rows[j][j])
+            for k in range(j + 1, width):
+                if rows[j][k] != 0:
+                    rows[i][k] = prog.let(rows[i][k] - factor * rows[j][k])
+            rows[i][j] = sp.S.Zero
+    out = []
+    for c in range(len(columns)):
+        x = [sp.S.Zero] * m
+        for i in reversed(range(m)):
+            e = rows[i][m + c] - sum((rows[i][k] * x[k] for k in range(i + 1, m)), sp.S.Zero)
+            x[i] = prog.let(e / rows[i][i])
+        out.append(x)
+    return out
+
+
+def ldl_solve(prog: Program, Mr: dict, fr: list) -> list:
+    """``a`` with ``Mr a = fr``, ``Mr`` symmetric positive definite (``Mr[i, j]`` for ``i <= j``): ``L D L^T``."""
+    k = len(fr)
+    m = lambda i, j: Mr[min(i, j), max(i, j)]  # noqa: E731
+    d, low = [], {}
+    for j in range(k):
+        d.append(prog.let(m(j, j) - sum((low[j, p] ** 2 * d[p] for p in range(j)), sp.S.Zero)))
+        for i in range(j + 1, k):
+            low[i, j] = prog.let((m(i, j) - sum((low[i, p] * low[j, p] * d[p] for p in range(j)), sp.S.Zero)) / d[j])
+    y = []
+    for i in range(k):
+        y.append(prog.let(fr[i] - sum((low[i, p] * y[p] for p in range(i)), sp.S.Zero)))
+    a = [sp.S.Zero] * k
+    for i in reversed(range(k)):
+        a[i] = prog.let(y[i] / d[i] - sum((low[p, i] * a[p] for p in range(i + 1, k)), sp.S.Zero))
+    return a
+
+
+def _columns(X: sp.Matrix, cols) -> list:
+    return [[X[r, c] for r in range(X.rows)] for c in cols]
+
+
+def _velocities(prog: Program, kkt, general: bool) -> tuple:
+    """Bind the dependent velocities (at the representative pose, or the general one): ``({symbol: atom}, A_dep,
+    A_ind)``, the blocks of the constraint matrix as rows of atoms."""
+    A = kkt.constraint_general if general else kkt.constraint
+    dep = kkt.dependent
+    ind = list(kkt.independent)
+    v_ind = [kkt.velocities[i] for i in ind]
+    rhs = [-sum((A[r, i] * v for i, v in zip(ind, v_ind)), sp.S.Zero) for r in range(A.rows)]
+    m, k = len(dep), len(ind)
+    entries = prog.cse([A[r, c] for r in range(m) for c in dep] + [A[r, c] for r in range(m) for c in ind] + rhs)
+    block = [entries[r * m:(r + 1) * m] for r in range(m)]
+    rest = [entries[m * m + r * k: m * m + (r + 1) * k] for r in range(m)]
+    (x,) = lu_solve(prog, block, [entries[m * m + m * k:]])
+    keys = kkt.general_velocities if general else tuple(kkt.velocities[i] for i in dep)
+    return dict(zip(keys, x)), block, rest
+
+
+def program(system, exprs, *, general: bool = False, prefix: str = "_c") -> tuple:
+    """A :class:`Program` binding ``exprs`` (of the state, the parameters and the dependent velocities at the
+    representative pose, or ``kkt.general_velocities`` with ``general``), and the atom of each."""
+    kkt = system.kkt
+    prog = Program(prefix)
+    exprs = [sp.sympify(e) for e in exprs]
+    wanted = set(kkt.general_velocities if general else (kkt.velocities[i] for i in kkt.dependent))
+    if set().union(*(e.free_symbols for e in exprs)) & wanted:
+        solved = _velocities(prog, kkt, general)[0]
+        exprs = [e.xreplace(solved) for e in exprs]
+    return prog, prog.cse(exprs)
+
+
+def _dynamics(system) -> tuple:
+    """The right-hand side's program: ``(prog, a, v_dep, lam)`` (independent accelerations, dependent velocities,
+    multipliers as atoms; the multipliers' lines come last, so a caller that needs only ``a`` drops them)."""
     kkt = system.kkt
     n, k = kkt.mass.rows, len(kkt.independent)
-    dep = [i for i in range(n) if i not in kkt.independent]
-    A_ind = kkt.constraint.extract(list(range(kkt.constraint.rows)), list(kkt.independent))
-    T, d = sp.zeros(n, k), sp.zeros(n, 1)
-    T_dep, d_dep = -kkt.dependent_inverse * A_ind, -kkt.dependent_inverse * kkt.bias
+    dep, ind = list(kkt.dependent), list(kkt.independent)
+    prog = Program()
+    solved, Ad, Ai = _velocities(prog, kkt, general=False)
+    m = len(dep)
+    M, f, c = (X.xreplace(solved) for X in (kkt.mass, kkt.forcing, kkt.bias))
+    pairs = [(i, j) for i in range(n) for j in range(i, n)]
+    entries = prog.cse([M[i, j] for i, j in pairs] + list(f) + list(c))
+    Ms = dict(zip(pairs, entries[:len(pairs)]))
+    Mf = lambda i, j: Ms[min(i, j), max(i, j)]  # noqa: E731
+    fs, cs = entries[len(pairs):len(pairs) + n], entries[len(pairs) + n:]
+    X = lu_solve(prog, Ad, [[Ai[r][j] for r in range(m)] for j in range(k)] + [cs])
+    T = [[sp.S.Zero] * k for _ in range(n)]
+    d = [sp.S.Zero] * n
     for r, i in enumerate(dep):
-        T[i, :], d[i] = T_dep[r, :], d_dep[r]
-    for r, i in enumerate(kkt.independent):
-        T[i, r] = 1
-    MT = kkt.mass * T
-    Mr = T.T * MT
-    fr = T.T * (kkt.forcing - kkt.mass * d)
-    a = sp.Matrix([names.Own(f"_a{i}", real=True) for i in range(k)])
-    qdd = T * a + d
-    residual = kkt.mass * qdd - kkt.forcing
-    lam = kkt.dependent_inverse.T * sp.Matrix([residual[i] for i in dep])
-    return Mr, fr, a, lam
+        T[i] = [-X[j][r] for j in range(k)]
+        d[i] = -X[k][r]
+    for j, i in enumerate(ind):
+        T[i][j] = sp.S.One
+    MT = [[prog.let(sum((Mf(i, q) * T[q][j] for q in range(n)), sp.S.Zero)) for j in range(k)] for i in range(n)]
+    Mr = {(i, j): prog.let(sum((T[q][i] * MT[q][j] for q in range(n)), sp.S.Zero)) for i in range(k)
+          for j in range(i, k)}
+    g = [prog.let(fs[i] - sum((Mf(i, q) * d[q] for q in range(n)), sp.S.Zero)) for i in range(n)]
+    fr = [prog.let(sum((T[q][i] * g[q] for q in range(n)), sp.S.Zero)) for i in range(k)]
+    a = ldl_solve(prog, Mr, fr)
+    end = len(prog.lines)
+    qdd = [prog.let(sum((T[i][j] * a[j] for j in range(k)), d[i])) for i in range(n)]
+    residual = [prog.let(sum((Mf(i, q) * qdd[q] for q in range(n)), -fs[i])) for i in dep]
+    (lam,) = lu_solve(prog, [[Ad[r][col] for r in range(m)] for col in range(m)], [residual])
+    return prog, a, solved, lam, end
 
 
-def _ldl_lines(k: int) -> list:
-    """Straight-line ``L D L^T`` solve of ``_m{i}_{j} a = _f{i}`` (i <= j stored) into ``_a{i}``."""
-    m = lambda i, j: f"_m{min(i, j)}_{max(i, j)}"  # noqa: E731
-    lines = []
-    for j in range(k):
-        lines.append(f"    _d{j} = {m(j, j)}" + "".join(f" - _l{j}_{p}*_l{j}_{p}*_d{p}" for p in range(j)))
-        for i in range(j + 1, k):
-            lines.append(f"    _l{i}_{j} = ({m(i, j)}" + "".join(f" - _l{i}_{p}*_l{j}_{p}*_d{p}" for p in range(j))
-                         + f")/_d{j}")
-    for i in range(k):
-        lines.append(f"    _y{i} = _f{i}" + "".join(f" - _l{i}_{p}*_y{p}" for p in range(i)))
-    for i in reversed(range(k)):
-        lines.append(f"    _a{i} = _y{i}/_d{i}" + "".join(f" - _l{p}_{i}*_a{p}" for p in range(i + 1, k)))
-    return lines
+def _lines(prog: Program, targets: dict, indent: str = "    ") -> tuple[list, int]:
+    """Code lines of a program and of ``target = atom`` assignments, and the operation count."""
+    lines = [f"{indent}{s} = {_code(e)}" for s, e in prog.lines]
+    lines += [f"{indent}{t} = {_code(e)}" for t, e in targets.items()]
+    return lines, int(sum(sp.count_ops(e) for _, e in prog.lines))
 
 
-def _solve_block(system, allowed):
-    """Lines binding ``_a*`` (the independent accelerations) and their op count."""
-    Mr, fr, _, _ = _reduced(system)
-    k = Mr.rows
-    pairs = [(i, j) for i in range(k) for j in range(i, k)]
-    lines, ops = _cse_block([Mr[i, j] for i, j in pairs] + list(fr), [f"_m{i}_{j}" for i, j in pairs]
-                            + [f"_f{i}" for i in range(k)], allowed, prefix="_e")
-    return lines + _ldl_lines(k), ops + k * (k + 1) * (2 * k + 1) // 3 + 2 * k * k
+def _check(prog: Program, allowed) -> None:
+    bound = {s for s, _ in prog.lines}
+    bad = set().union(set(), *(e.free_symbols for _, e in prog.lines)) - bound - set(allowed)
+    if bad:
+        raise ValueError(f"refusing to emit: undeclared symbols {sorted(map(str, bad))}")
+
+
+def _rates(system, a, solved) -> list:
+    a_of = dict(zip(system.accelerations, a))
+    return [sp.sympify(e).xreplace({**a_of, **solved}) for e in system.state_rhs()]
 
 
 def rhs_source(system) -> tuple:
     """The right-hand-side functions (:func:`.codegen.rhs_functions`: their signatures and op counts).
 
-    The closed-form emitter writes the functions; the accelerations enter as the symbols ``_a*`` that the solve
-    lines (placed first in each body) bind.
+    The closed-form emitter writes the functions; the program's lines (placed first in each body) bind the
+    rates, and those of the general pose's dependent velocities the pose rates.
     """
     spec = system.spec
-    _, _, a, _ = _reduced(system)
-    a_of = {acc: a[r] for r, acc in enumerate(system.accelerations)}
-    rates = [a_of.get(e, e) for e in system.state_rhs()]
-    solve = _solve_block(system, set(system.state) | set(spec.params) | {names.t})
-    return _rhs_source(system.state, spec.params, rates, spec.pose, [system.pose_rates[q] for q in spec.pose],
-                       solve=solve, known=set(a))
+    prog, a, solved, _, end = _dynamics(system)
+    prog.lines = prog.lines[:end]
+    rates = _rates(system, a, solved)
+    allowed = set(system.state) | set(spec.params) | {names.t}
+    _check(prog, allowed)
+    lines, ops = _lines(prog, {})
+    pose_exprs = [system.pose_rates[q] for q in spec.pose]
+    pose_prog, pose_atoms = program(system, pose_exprs, general=True, prefix="_g")
+    _check(pose_prog, allowed | set(spec.pose))
+    pose_lines, pose_ops = _lines(pose_prog, {})
+    return _rhs_source(system.state, spec.params, rates, spec.pose, pose_atoms, solve=(lines, ops),
+                       known={s for s, _ in prog.lines} | {s for s, _ in pose_prog.lines},
+                       pose_solve=(pose_lines, pose_ops))
+
+
+def function_lines(system, exprs, targets, allowed, general: bool = False) -> tuple[list, int]:
+    """Body lines binding ``targets`` to ``exprs`` (functions of the state and the dependent velocities) and their
+    op count: what :func:`.codegen.cse_block` writes for a closed form (energy, powers, pose rates)."""
+    prog, atoms = program(system, exprs, general=general)
+    _check(prog, allowed)
+    return _lines(prog, dict(zip(targets, atoms)))
 
 
 def multiplier_lines(system, allowed) -> tuple[list, int]:
     """Body lines of ``multipliers`` (writing ``out``) and their op count."""
-    _, _, a, lam = _reduced(system)
-    solve, ops = _solve_block(system, allowed)
-    lam_lines, lam_ops = _cse_block(list(lam), [f"out[{i}]" for i in range(len(lam))], set(allowed) | set(a))
-    return solve + lam_lines, ops + lam_ops
-
-
-def _jacobian_function(system, name: str, wrt: list, allowed) -> tuple[str, int]:
-    """``name(s, p)``: ``d rates / d wrt`` exactly, by implicit differentiation of ``Mr a = fr``.
-
-    ``d a / d x = Mr^-1 (d fr / d x - (d Mr / d x) a)``: the factor of ``Mr`` the right-hand side computes is
-    reused for every column (one forward and one back substitution each).
-    """
-    spec = system.spec
-    Mr, fr, a, _ = _reduced(system)
-    k = Mr.rows
-    a_of = {acc: a[r] for r, acc in enumerate(system.accelerations)}
-    rates = [a_of.get(e, e) for e in system.state_rhs()]
-    solve, ops = _solve_block(system, allowed)
-    g_exprs = [sp.diff(fr[i], x) - sum((sp.diff(Mr[i, c], x) * a[c] for c in range(k)), sp.S.Zero)
-               for x in wrt for i in range(k)]
-    g_lines, g_ops = _cse_block(g_exprs, [f"_g{i}_{j}" for j in range(len(wrt)) for i in range(k)],
-                                set(allowed) | set(a), prefix="_h")
-    z_lines = []
-    for j in range(len(wrt)):  # L y = g, D w = y, L^T z = w (the factors of the solve block)
-        z_lines += [f"    _w{i}_{j} = _g{i}_{j}" + "".join(f" - _l{i}_{c}*_w{c}_{j}" for c in range(i)) for i in range(k)]
-        z_lines += [f"    _z{i}_{j} = _w{i}_{j}/_d{i}" + "".join(f" - _l{c}_{i}*_z{c}_{j}" for c in range(i + 1, k))
-                    for i in reversed(range(k))]
-    Z = {(c, j): names.Own(f"_z{c}_{j}", real=True) for c in range(k) for j in range(len(wrt))}
-    outputs, targets = [], []
-    for r, e in enumerate(rates):
-        for j, x in enumerate(wrt):
-            d = sp.diff(e, x) + sum((sp.diff(e, a[c]) * Z[c, j] for c in range(k)), sp.S.Zero)
-            if d != 0:
-                outputs.append(d)
-                targets.append(f"out[{r}, {j}]")
-    out_lines, out_ops = _cse_block(outputs, targets, set(allowed) | set(a) | set(Z.values()), prefix="_o")
-    args = "s, p, t" if names.t in set(allowed) else "s, p"
-    n = len(rates)
-    total = int(ops + g_ops + out_ops + 2 * k * k * len(wrt))
-    nl = "\n"
-    unpack = _unpack([str(x) for x in system.state], "s") + _unpack([str(q) for q in spec.params], "p")
-    return f'''
-
-@njit(cache=True)
-def {name}({args}):
-    """d(state rate)/d({'state' if name == 'jacobian' else 'parameters'}), exact: the multipliers' system
-    differentiated implicitly, shape ({n}, {len(wrt)}) ({total} operations)."""
-    out = np.zeros(({n}, {len(wrt)}))
-{nl.join(unpack)}
-{nl.join(solve + g_lines + z_lines + out_lines)}
-    return out
-''', total
+    prog, _, _, lam, _ = _dynamics(system)
+    _check(prog, allowed)
+    return _lines(prog, {f"out[{i}]": x for i, x in enumerate(lam)})
 
 
 def jacobian_source(system, allowed) -> str:
-    """``jacobian(s, p)`` and ``jacobian_p(s, p)`` of a numeric-elimination model (what :mod:`.jacobian` writes
-    for a closed form), with their operation counts added to ``OP_COUNTS``."""
-    src_s, ops_s = _jacobian_function(system, "jacobian", list(system.state), allowed)
-    src_p, ops_p = _jacobian_function(system, "jacobian_p", list(system.spec.params), allowed)
-    return (f"\n\n#: operation counts of the Jacobians (derivation/kkt_emit.py: implicit differentiation)\n"
-            f"OP_COUNTS.update(jacobian={ops_s}, jacobian_p={ops_p})" + src_s + src_p)
+    """``jacobian(s, p)`` and ``jacobian_p(s, p)`` of a numeric-elimination model: the right-hand side's program
+    differentiated in forward mode (what :mod:`.jacobian` writes for a closed form), with their operation counts
+    added to ``OP_COUNTS``."""
+    prog, a, solved, _, end = _dynamics(system)
+    prog.lines = prog.lines[:end]
+    rates = _rates(system, a, solved)
+    _check(prog, allowed)
+    return jacobian.program_block_source(prog.lines, rates, system.state, system.spec.params)

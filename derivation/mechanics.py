@@ -622,6 +622,17 @@ def _tidy(e: sp.Expr, velocities) -> sp.Expr:
 #: coefficients larger than this (``count_ops``) are left expanded: factoring the Whipple bicycle's
 #: (14,843 operations in its Lagrangian) ran for more than 3 CPU minutes without finishing one term
 TIDY_OPS = 400
+#: a model whose Lagrangian has more nodes than this is kept as its bodies compose it (nothing expanded or
+#: simplified): the Whipple bicycle's has 2,419 nodes (1,654 operations) as composed and 14,843 operations
+#: expanded, whose derivatives (the mass matrix, the velocity terms, the constraints' rates: 97,000 operations)
+#: the numeric elimination would only share again by CSE; simplifying its coefficients took minutes.  The
+#: sympy rolling disc has 113 nodes, the differential-drive robot 168
+TIDY_NODES = 1000
+
+
+def _nodes(e: sp.Expr) -> int:
+    """Number of nodes of the expression tree of ``e`` (a shared subtree counts once per occurrence)."""
+    return sum(1 for _ in sp.preorder_traversal(e))
 
 
 def _tidy_coefficient(c: sp.Expr) -> sp.Expr:
@@ -696,10 +707,15 @@ def from_mechanics(method_or_system, *, name: str, cyclic: dict, units: dict | N
     specified: dict = {}  # f(t) -> f: the inputs
     plain = lambda e: _exact(_specified_as_inputs(names.plain(sp.sympify(e).xreplace(src.u_of_qdot)),  # noqa: E731
                                                   specified))
-    lagrangian = _tidy(plain(lagrangian), names.velocities)
-    forces = [_tidy(plain(f), names.velocities) for f in forces]
-    constraints = [_tidy(plain(c), names.velocities) for c in src.constraints]
-    holonomic = [sp.factor(sp.trigsimp(plain(f))) for f in src.holonomic]
+    lagrangian = plain(lagrangian)
+    if _nodes(lagrangian) > TIDY_NODES:  # a large model is kept as its bodies compose it
+        tidy, simplify = (lambda e: e), (lambda e: e)
+    else:
+        tidy, simplify = (lambda e: _tidy(e, names.velocities)), (lambda e: sp.factor(sp.trigsimp(e)))
+    lagrangian = tidy(lagrangian)
+    forces = [tidy(plain(f)) for f in forces]
+    constraints = [tidy(plain(c)) for c in src.constraints]
+    holonomic = [simplify(plain(f)) for f in src.holonomic]
     cyclic = {names.key(k) if not isinstance(k, str) else sp.Symbol(k, real=True): v for k, v in cyclic.items()}
     inputs = tuple(sorted(set(specified.values()), key=str))
     declared = set(names.coordinates) | set(names.velocities) | {_engine_t} | set(inputs)

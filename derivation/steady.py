@@ -126,6 +126,15 @@ UPRIGHT_SPIN = Steady(
     {"n_x": "pitch", "A_pitch": "pitch", "n_y": "roll", "A_roll": "roll"})
 
 
+def holonomic_invariants(spec) -> dict:
+    """The holonomic constraints ``f(q) = 0`` of a model (functions of its closed state): invariants of the flow
+    (those holding the time are left out: their level sets move)."""
+    from .names import t
+
+    return {f"{label} = 0 (holonomic constraint)": f for label, f in zip(spec.holonomic_labels, spec.holonomic)
+            if not f.has(t)}
+
+
 def rigid_invariants(state) -> dict:
     """The invariants of a rigid body's closed state ``(n_x, n_y, n_z, omega_x, omega_y, omega_z, omega_n)``."""
     n, w, wn = state[0:3], state[3:6], state[6]

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/rigid_emit.py (make derive) from the rigid body 'celt'
 through derivation/rigid.py (Lagrange-d'Alembert in body quasi-velocities).
-SymPy 1.14.0; input hash sha256:19fb919deaf43ae860f91cb524d2fa18ec45e6d0755c3ab05d69d00654bf7a82
+SymPy 1.14.0; input hash sha256:d5ee1ebb0d90ebe1e05635e91dd2b817e49eda6d52b18935333db3c3d508edfe
 
 Classical rattleback (celt): a rigid body with an ellipsoidal bottom (semi-axes a, b, c along the body axes x, y, z; centre of mass a distance h below the ellipsoid's centre), inertia tensor about the centre of mass with entries I_xx..I_yz in body axes, rolling without slipping on a horizontal table under gravity g, dissipation torque -sigma*omega.  State: upward vertical n and angular velocity omega in body axes, vertical spin omega_n = omega.n; pose: heading psi of the body x axis, centre of mass (x, y).
 
@@ -81,7 +81,7 @@ PRESETS = {'kane_levinson_1982': {'a': 0.2, 'b': 0.03, 'c': 0.02, 'h': 0.01, 'm'
 PRESET_SOURCES = {'kane_levinson_1982': 'Kane & Levinson, Int. J. Non-Linear Mech. 17 (1982) 175-186', 'schoemer': "E. Schoemer's rattleback (golden-ratio ellipsoid)"}
 #: the model file the body comes from
 SOURCE = 'knifeedge.derive.celt'
-INPUT_HASH = '19fb919deaf43ae860f91cb524d2fa18ec45e6d0755c3ab05d69d00654bf7a82'
+INPUT_HASH = 'd5ee1ebb0d90ebe1e05635e91dd2b817e49eda6d52b18935333db3c3d508edfe'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 247, 'constants': 23, 'rhs_q': 250, 'rhs_pose': 285, 'rhs_pose_q': 286, 'pose_rates': 71, 'energy': 72, 'power_dissipated': 6, 'multipliers': 265}
@@ -1956,4 +1956,4 @@ def invariant_gradients(s, p):
     out[1, 6] = 1
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '63b1f6b3d411a8d0bd520bc8ce27e54d5eacfe959f406895660b7f73f449f95f'
+MODULE_SHA256 = '39af1a196697e608a605f72c6de2304df80850f9342c437ce16df885023ef494'

@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/sleigh.py (model 'chaplygin_sleigh',
 constraints knife_edge) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:e8bcdb8b522eecf3d08a30d8fe5a04f0153ba94c38667cd9dbff86f01aa89414
+SymPy 1.14.0; input hash sha256:fb4291193ef419aa538bdcf4b7644e5a81ed00416bb33b308a39b21137ca6457
 
 Chaplygin sleigh: a rigid body on the plane with a knife edge at its rear contact point (x, y) that forbids sideways motion; heading phi, centre of mass at distance a ahead of the contact, radius of gyration k about the centre of mass; v is the speed along the axis.
 
@@ -60,7 +60,7 @@ MULTIPLIER_NAMES = ('knife_edge',)
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'e8bcdb8b522eecf3d08a30d8fe5a04f0153ba94c38667cd9dbff86f01aa89414'
+INPUT_HASH = 'fb4291193ef419aa538bdcf4b7644e5a81ed00416bb33b308a39b21137ca6457'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -332,4 +332,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '97f2eee52e66dbfe0df8d2114a6fa8281d5138d94bd98148a30115540c1a04af'
+MODULE_SHA256 = '50f66736357f4e4c80a49f5f816633a1eeb67657c489d4dad6aee6d5cb39af3e'

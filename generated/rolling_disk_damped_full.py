@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk_damped',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:9f0a3e99a87eb9cb891bcd002d0a2455d081b9d72c6a122ea0677050ac1fbbc1
+SymPy 1.14.0; input hash sha256:971d31623eb2960981d9175b59128fb368515580ceae2d5aac114cb488b2f212
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table, its rotation resisted by a viscous torque -c r^2 omega per unit mass (Rayleigh function c r^2 |omega|^2/2).
 
@@ -64,7 +64,7 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = True
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '9f0a3e99a87eb9cb891bcd002d0a2455d081b9d72c6a122ea0677050ac1fbbc1'
+INPUT_HASH = '971d31623eb2960981d9175b59128fb368515580ceae2d5aac114cb488b2f212'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -890,4 +890,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '749126bde63f4b1a25a564b9970f069602bde4358041d9af6ba4b936f693e43f'
+MODULE_SHA256 = '4eaf40d0783bd3a0ce14d9614e9db5ca00c63a4482a396cb29a2fa919f14636e'

@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:10f6509105aa4c3b63f70606143f1cf8ff183e01455d46da3de680c70dd60068
+SymPy 1.14.0; input hash sha256:495bdc53b501c84439ee4f2a1d517f8b5ab58fd6c0c7e65e2e30b11206cf796f
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table: heading q1, lean q2 from the vertical, rotation q3 about the axle, contact point (x, y).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '10f6509105aa4c3b63f70606143f1cf8ff183e01455d46da3de680c70dd60068'
+INPUT_HASH = '495bdc53b501c84439ee4f2a1d517f8b5ab58fd6c0c7e65e2e30b11206cf796f'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -673,4 +673,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '39d7c4c5f6944fd6b7d85958c29d39cbdb5c938d5008cf6e343bab003145e839'
+MODULE_SHA256 = '2cbb547054003cce0dff544fdf231f3c4292e93505355ce2c4dc7399764e5d43'

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:26a165fbfb9caa7d1660b7deae05e6f25883bf93fb1ba17bd41c6836a41bfad0
+SymPy 1.14.0; input hash sha256:6df86e8f6a2f8503ca8bf9097b453ea9ba550e4fea0ee263d1880f69c7233170
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -67,7 +67,7 @@ HAS_DISSIPATION = False
 EXPORTS = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy',)
-INPUT_HASH = '26a165fbfb9caa7d1660b7deae05e6f25883bf93fb1ba17bd41c6836a41bfad0'
+INPUT_HASH = '6df86e8f6a2f8503ca8bf9097b453ea9ba550e4fea0ee263d1880f69c7233170'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 10, 'constants': 6, 'rhs_q': 4, 'energy': 9, 'invariants': 9, 'frequencies': 5, 'growth_rates': 2, 'drive_rates': 5}
@@ -270,4 +270,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'ba5aac7c43ea69dc1aad2a9ed4b18b9583fe868a91ea6dea2c2cdaf3ca4598dc'
+MODULE_SHA256 = '1682a149cbc5e139767c9b263e7c7b20a7dbc712cb9e343150ef1d151086dc15'

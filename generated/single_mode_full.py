@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:ed98d45203fee3003a78aa5aa6fb38c3e5c68243e07acbc03759b80854eb6d18
+SymPy 1.14.0; input hash sha256:954605a706da718942cd7efc9cd461c624243824019e94ff2a963016759ddf3d
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'ed98d45203fee3003a78aa5aa6fb38c3e5c68243e07acbc03759b80854eb6d18'
+INPUT_HASH = '954605a706da718942cd7efc9cd461c624243824019e94ff2a963016759ddf3d'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -427,4 +427,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '26eec64457218bd78642e431b33d87bbec6afb2a6b228d3f26402fe445662c3b'
+MODULE_SHA256 = '334930adbd69eda5999c2231d221270a5b6012bc17d107e7096dd52e8ba4c788'

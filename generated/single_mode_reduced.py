@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py and derivation/truncation.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:fe0bfb633e46ab977a41de3873ec8863a355d5b96b15cde5e5e7ecfb67e94e99
+SymPy 1.14.0; input hash sha256:22e75c9a74fa26932865ff24d3de7bc5790a67b0b06e5ffa67ad1d9c952e14c3
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'fe0bfb633e46ab977a41de3873ec8863a355d5b96b15cde5e5e7ecfb67e94e99'
+INPUT_HASH = '22e75c9a74fa26932865ff24d3de7bc5790a67b0b06e5ffa67ad1d9c952e14c3'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -409,4 +409,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'e53527d57ca4cd6cd3b81d4fa8e734852f5495819ac3f41fe0886021a89e2812'
+MODULE_SHA256 = 'a9a2b1f8c27380f4d7560ceb81fc85a10128d50c72dabf5ed50ac5143d5f64ce'

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:2d7049202699164af02fe8915ca2e92868b91d5b78eeea2dba7bcdc6e95b416f
+SymPy 1.14.0; input hash sha256:159d89a3bc5ccd1aee023567bd9e33029895b849b29f5430b5a4d28bf3e2e6bb
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -71,7 +71,7 @@ HAS_DISSIPATION = False
 EXPORTS = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy', 'log_A1_A2')
-INPUT_HASH = '2d7049202699164af02fe8915ca2e92868b91d5b78eeea2dba7bcdc6e95b416f'
+INPUT_HASH = '159d89a3bc5ccd1aee023567bd9e33029895b849b29f5430b5a4d28bf3e2e6bb'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 24, 'constants': 14, 'rhs_q': 10, 'energy': 12, 'invariants': 19, 'frequencies': 12, 'growth_rates': 11, 'drive_rates': 12}
@@ -353,4 +353,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '3ba9713e8e07ef142f940bef4eddc45874d4f1f456bdf247f9bd94527ca4f15b'
+MODULE_SHA256 = 'f3e8bdea5ba14a679cbfa9524513515dd868b34300a34b8cb9f6665908d88b14'

@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:8f3a725ead78071f0160ee6ac3d53d2d717f9c7e02c83e859bd28b6b475cd63a
+SymPy 1.14.0; input hash sha256:4f2333cae8e61fbb0a2741a1383a9eb7ba62e7eb99917d40d420ce7f186d6e87
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -66,7 +66,7 @@ MULTIPLIER_NAMES = ('Const22', 'Const23')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '8f3a725ead78071f0160ee6ac3d53d2d717f9c7e02c83e859bd28b6b475cd63a'
+INPUT_HASH = '4f2333cae8e61fbb0a2741a1383a9eb7ba62e7eb99917d40d420ce7f186d6e87'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -920,4 +920,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '8ad8e2bdc1fbc9feb4e3efa6f29a7aeca035b471e41c552ecda582c41102caab'
+MODULE_SHA256 = 'd2fe36684a86a9856ed86b76730bf7e62a80258691024b9652388638dd44cce3'

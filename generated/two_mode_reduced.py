@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py and derivation/truncation.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:8804119588306f2d7b65a9911e98aa108a92314d4bce62fce5ba0452a15afe4c
+SymPy 1.14.0; input hash sha256:1522e3428ddcc1abb53e9ce0f1b767b230dda1e38fb0769c8519237c48818b4c
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -66,7 +66,7 @@ MULTIPLIER_NAMES = ('Const22', 'Const23')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '8804119588306f2d7b65a9911e98aa108a92314d4bce62fce5ba0452a15afe4c'
+INPUT_HASH = '1522e3428ddcc1abb53e9ce0f1b767b230dda1e38fb0769c8519237c48818b4c'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -705,4 +705,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'c5b17da920dd006c161ded617724c54fd38310d5f4283225d88a517925cf1d56'
+MODULE_SHA256 = 'fa6aa92cf0d97cffa22954ec071944ab783e861e2ce2c997ace03c19ed2db469'

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/rigid_emit.py (make derive) from the rigid body 'two_mode_rigid'
 through derivation/rigid.py (Lagrange-d'Alembert in body quasi-velocities).
-SymPy 1.14.0; input hash sha256:59c51add99dcba025c1d8774794a3c208d9e07ca8b5b08ce1e48ad8477db9027
+SymPy 1.14.0; input hash sha256:dd84e9ee1cd1a3f213f4cde0d23640439a81c6bd99f9e04bec76480100e93d46
 
 Chiral knife edge of the paper's section III as the real rigid body: massless inverted-U bar of half-length L, masses M/2 a distance ell below its ends, contact at the lowest point of a circle of radius D in a vertical plane at the chiral angle alpha to the bar; per unit mass, exact in the tilts.
 
@@ -72,7 +72,7 @@ PRESETS = {}
 PRESET_SOURCES = {}
 #: the model file the body comes from
 SOURCE = 'knifeedge.derive.rigid_knife_edge'
-INPUT_HASH = '59c51add99dcba025c1d8774794a3c208d9e07ca8b5b08ce1e48ad8477db9027'
+INPUT_HASH = 'dd84e9ee1cd1a3f213f4cde0d23640439a81c6bd99f9e04bec76480100e93d46'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 253, 'constants': 25, 'rhs_q': 221, 'rhs_pose': 293, 'rhs_pose_q': 261, 'pose_rates': 73, 'energy': 56, 'multipliers': 267}
@@ -1606,4 +1606,4 @@ def invariant_gradients(s, p):
     out[1, 6] = 1
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '8d6e8ba4d01533a689c727a4dae22c8bf8741ca49475a7d2b0e5803efc823760'
+MODULE_SHA256 = '0663439825520bb7830fb2ddde2d80a96c7971e1814136a452e0609eea9b756a'

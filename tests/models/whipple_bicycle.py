@@ -12,10 +12,13 @@ each wheel's material point at its contact, in the yaw frame's x and y; and its 
 front, the rate of the configuration constraint that keeps the front contact on the ground, which
 is test_kane3's ``conlist_coord``).
 """
+import math
+
 from sympy import symbols
 from sympy.physics.mechanics import KanesMethod, Point, ReferenceFrame, RigidBody, dot, dynamicsymbols, inertia
 
 from knifeedge.derive import from_mechanics
+from knifeedge.derive.steady import Steady
 
 q1, q2, q3, q4, q5, q6, x, y = dynamicsymbols('q1 q2 q3 q4 q5 q6 x y')
 u1, u2, u3, u4, u5, u6, ux, uy = dynamicsymbols('u1 u2 u3 u4 u5 u6 ux uy')
@@ -86,7 +89,34 @@ KANE = KanesMethod(N, q_ind=[q1, q2, q3, q5, q6, x, y], q_dependent=[q4], config
                    kd_eqs=kd, bodies=BL, forcelist=FL)
 
 # ---- knifeedge's lines
+# The benchmark's parameters in this model's geometry, converted exactly as test_kane3.py converts them (Meijaard et
+# al. 2007, Table 1: wheelbase 1.02 m, trail 0.08 m, head angle pi/2 - pi/10, ...); at these values the front
+# contact is on the ground upright at zero pitch, q4 = 0.
+HTA = math.pi / 2 - math.pi / 10
+_rake = -(0.08 * math.sin(HTA) - 0.35 * math.cos(HTA))
+_tempa, _tempb = 0.7 - 0.35, 1.02 - 0.9
+_tempc = math.sqrt(_tempa**2 + _tempb**2)
+_fork_length = 1.02 * math.cos(HTA) - (0.35 - 0.3) * math.sin(HTA)
+BENCHMARK = {
+    "WFrad": 0.35, "WRrad": 0.3, "htangle": HTA, "forkoffset": _rake, "forklength": _fork_length,
+    "framelength": 1.02 * math.sin(HTA) - (_rake - (0.35 - 0.3) * math.cos(HTA)),
+    "forkcg1": _tempc * math.cos((math.pi / 2 - HTA) - math.acos(_tempa / _tempc)) - _fork_length,
+    "forkcg3": _rake + _tempc * math.sin(math.pi / 2 - HTA - math.acos(_tempa / _tempc)),
+    "framecg1": (0.9 - 0.3 - (0.3 / math.sin(HTA)) * math.cos(HTA)) * math.sin(HTA),
+    "framecg3": 0.3 / math.sin(HTA) + (0.9 - 0.3 - 0.3 / math.sin(HTA) * math.cos(HTA)) * math.cos(HTA),
+    "Iwr11": 0.0603, "Iwr22": 0.12, "Iwf11": 0.1405, "Iwf22": 0.28, "Ifork11": 0.05892, "Ifork22": 0.06,
+    "Ifork33": 0.00708, "Ifork31": 0.00756, "Iframe11": 9.2, "Iframe22": 11.0, "Iframe33": 2.8,
+    "Iframe31": -2.4, "mfork": 4.0, "mframe": 85.0, "mwf": 3.0, "mwr": 2.0, "g": 9.81}
+
+v = symbols('v', real=True)
+STRAIGHT = Steady(
+    "straight_running", v, {"q3_dot": v / WRrad},
+    "upright straight running at the forward speed v (rear wheel rate v/WRrad; lean, steer and pitch zero: the "
+    "pitch is zero where the parameters put the front contact on the ground upright at q4 = 0, as the benchmark's do)",
+    {"q2": "lean", "q2_dot": "lean", "q5": "steer", "q5_dot": "steer"})
+
 MODEL = from_mechanics(
-    KANE, name="whipple_bicycle", cyclic={x: 0, y: 0, q1: 0, q3: 0, q6: 0},
+    KANE, name="whipple_bicycle", cyclic={x: 0, y: 0, q1: 0, q3: 0, q6: 0}, elimination="numeric",
+    defaults=BENCHMARK, steady=(STRAIGHT,), units={"x": "m", "y": "m"}, time_unit="s",
     description="The Whipple bicycle of SymPy's test_kane3.py (Meijaard et al. 2007), with the rear contact "
                 "point and the wheels' angles as coordinates.")
