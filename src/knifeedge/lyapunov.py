@@ -13,12 +13,9 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from numba import njit
+from numba import njit, types
 
 from .models import Model
-
-_KERNELS: dict = {}
-
 
 @njit(cache=True)
 def _times(J, Q, out):
@@ -76,50 +73,77 @@ def _project_out(G, Q):
                 Q[c, j] -= r * G[i, c]
 
 
-def _kernel(module):
-    """The compiled Benettin loop of one generated module (compiled once per module and process)."""
-    key = module.__name__
-    if key in _KERNELS:
-        return _KERNELS[key]
-    rhs_into, jacobian, gradients = module.rhs_into, module.jacobian, module.invariant_gradients
+@njit(cache=True)
+def _shifted(out, x, c, dx):
+    """``out = x + c dx`` (vectors)."""
+    for i in range(x.size):
+        out[i] = x[i] + c * dx[i]
 
-    @njit
-    def stage(y, Q, p, dy, dQ):
-        rhs_into(0.0, y, p, dy)
-        _times(jacobian(y, p), Q, dQ)
 
-    @njit
-    def run(y, Q, p, h, n_blocks, steps_per_block, t0):
-        n, k = Q.shape
-        sums = np.zeros(k)
-        hist = np.empty((n_blocks, k))
-        hist_t = np.empty(n_blocks)
-        k1, k2, k3, k4, yt = np.empty(n), np.empty(n), np.empty(n), np.empty(n), np.empty(n)
-        K1, K2, K3, K4, Qt = (np.empty((n, k)), np.empty((n, k)), np.empty((n, k)), np.empty((n, k)),
-                              np.empty((n, k)))
-        for b in range(n_blocks):
-            for _ in range(steps_per_block):
-                stage(y, Q, p, k1, K1)
-                yt[:] = y + 0.5 * h * k1
-                Qt[:, :] = Q + 0.5 * h * K1
-                stage(yt, Qt, p, k2, K2)
-                yt[:] = y + 0.5 * h * k2
-                Qt[:, :] = Q + 0.5 * h * K2
-                stage(yt, Qt, p, k3, K3)
-                yt[:] = y + h * k3
-                Qt[:, :] = Q + h * K3
-                stage(yt, Qt, p, k4, K4)
-                y += h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4)
-                Q += h / 6.0 * (K1 + 2.0 * K2 + 2.0 * K3 + K4)
-            # round-off leaks into the invariants' directions (rate 0), which would outgrow decaying directions
-            _project_out(gradients(y, p), Q)
-            _orthonormalize(Q, sums)
-            hist_t[b] = (b + 1) * steps_per_block * h
-            hist[b] = sums / hist_t[b]
-        return y, Q, sums, hist_t + t0, hist
+@njit(cache=True)
+def _rk4_update(x, h, d1, d2, d3, d4):
+    """The classical Runge-Kutta step ``x += h/6 (d1 + 2 d2 + 2 d3 + d4)`` in place (vectors)."""
+    for i in range(x.size):
+        x[i] += h / 6.0 * (d1[i] + 2.0 * d2[i] + 2.0 * d3[i] + d4[i])
 
-    _KERNELS[key] = run
-    return run
+
+#: the first-class function types of a generated module's ``rhs_into(t, s, p, ds)``, ``jacobian(s, p)`` and
+#: ``invariant_gradients(s, p)``: the loop below is compiled for these types, not for one module's functions, so
+#: one compiled loop (in numba's cache, once per machine) serves every model and calls them through their addresses
+_VECTOR = types.float64[::1]
+_MATRIX = types.float64[:, ::1]
+_RHS = types.FunctionType(types.none(types.float64, _VECTOR, _VECTOR, _VECTOR))
+_MATRIX_OF_STATE = types.FunctionType(_MATRIX(_VECTOR, _VECTOR))
+_SIGNATURE = (_RHS, _MATRIX_OF_STATE, _MATRIX_OF_STATE, _VECTOR, _MATRIX, _VECTOR, types.float64, types.int64,
+              types.int64)
+
+
+@njit(cache=True)
+def _benettin(rhs_into, jacobian, gradients, y, Q, p, h, n_blocks, steps_per_block):
+    """RK4 on the state ``y`` and the tangent vectors ``Q`` (n x k) for ``n_blocks`` blocks of ``steps_per_block``
+    steps of ``h``, re-orthonormalized after each block; returns the final y, Q, the sums of log |R_jj|, and the
+    times and running estimates of the re-orthonormalizations (from time 0)."""
+    n, k = Q.shape
+    sums = np.zeros(k)
+    hist = np.empty((n_blocks, k))
+    hist_t = np.empty(n_blocks)
+    k1, k2, k3, k4, yt = np.empty(n), np.empty(n), np.empty(n), np.empty(n), np.empty(n)
+    K1, K2, K3, K4, Qt = (np.empty((n, k)), np.empty((n, k)), np.empty((n, k)), np.empty((n, k)),
+                          np.empty((n, k)))
+    # the tangent vectors as flat views, so that one loop over a vector serves the state and the tangents
+    q, q1, q2, q3, q4, qt = Q.ravel(), K1.ravel(), K2.ravel(), K3.ravel(), K4.ravel(), Qt.ravel()
+    for b in range(n_blocks):
+        for _ in range(steps_per_block):
+            rhs_into(0.0, y, p, k1)
+            _times(jacobian(y, p), Q, K1)
+            _shifted(yt, y, 0.5 * h, k1)
+            _shifted(qt, q, 0.5 * h, q1)
+            rhs_into(0.0, yt, p, k2)
+            _times(jacobian(yt, p), Qt, K2)
+            _shifted(yt, y, 0.5 * h, k2)
+            _shifted(qt, q, 0.5 * h, q2)
+            rhs_into(0.0, yt, p, k3)
+            _times(jacobian(yt, p), Qt, K3)
+            _shifted(yt, y, h, k3)
+            _shifted(qt, q, h, q3)
+            rhs_into(0.0, yt, p, k4)
+            _times(jacobian(yt, p), Qt, K4)
+            _rk4_update(y, h, k1, k2, k3, k4)
+            _rk4_update(q, h, q1, q2, q3, q4)
+        # round-off leaks into the invariants' directions (rate 0), which would outgrow decaying directions
+        _project_out(gradients(y, p), Q)
+        _orthonormalize(Q, sums)
+        hist_t[b] = (b + 1) * steps_per_block * h
+        hist[b] = sums / hist_t[b]
+    return y, Q, sums, hist_t, hist
+
+
+def _kernel():
+    """The compiled Benettin loop for the first-class function types (compiled, or loaded from numba's cache,
+    once per process; its entry point takes a module's numba functions and passes their addresses)."""
+    if _SIGNATURE not in _benettin.overloads:
+        _benettin.compile(_SIGNATURE)
+    return _benettin.overloads[_SIGNATURE].entry_point
 
 
 @dataclass(frozen=True)
@@ -183,8 +207,10 @@ def lyapunov(m: Model, y0, p, t_end: float, k: int | None = None, h: float | Non
     n_blocks = max(1, int(round(span / (steps_per_block * h))))
     h = span / (n_blocks * steps_per_block)
     Q = _physical_basis(m, y, p, k)
-    run = _kernel(m.module)
-    y, Q, sums, hist_t, hist = run(y, Q, p, h, n_blocks, steps_per_block, float(t0))
+    mod = m.module
+    y, Q, sums, hist_t, hist = _kernel()(mod.rhs_into, mod.jacobian, mod.invariant_gradients, y, Q,
+                                         np.ascontiguousarray(p, dtype=float), h, n_blocks, steps_per_block)
+    hist_t = hist_t + float(t0)
     order = np.argsort(-hist[-1], kind="stable")
     hist = hist[:, order]
     tail = hist[-max(1, n_blocks // 4):]
