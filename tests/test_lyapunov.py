@@ -45,6 +45,26 @@ def test_exponents_do_not_depend_on_the_renormalization_interval():
     assert a.history.shape == (400, 5) and b.history.shape == (80, 5)
 
 
+def test_step_control_gives_the_fixed_steps_exponents():
+    """Dormand-Prince 5(4) with the state's error controlled (``rtol``) and RK4 with a fine fixed step are two
+    discretizations of the same variational equations: their exponents agree to the integration error, and the
+    sum is the time-averaged divergence (Liouville's formula, as above)."""
+    m = ke.load("two_mode")
+    p = m.params(m.default_params)
+    y0 = m.state(theta1=0.02, theta2=0.01, theta1_dot=0.0, theta2_dot=0.0, phi_dot=0.3)
+    fixed = ke.lyapunov(m, y0, p, 40.0, h=0.005, tau=0.5)
+    adaptive = ke.lyapunov(m, y0, p, 40.0, tau=0.5, rtol=1e-11)
+    assert adaptive.method.startswith("DP54") and 0 < adaptive.steps < fixed.steps and adaptive.tau == 0.5
+    np.testing.assert_allclose(adaptive.exponents, fixed.exponents, rtol=0, atol=1e-8)
+    np.testing.assert_allclose(adaptive.y, fixed.y, rtol=0, atol=1e-9)
+    with pytest.raises(ValueError, match="`atol`"):
+        ke.lyapunov(m, y0, p, 1.0, h=0.01, atol=1e-9)
+    with pytest.raises(ValueError, match="`rtol`"):
+        ke.lyapunov(m, y0, p, 1.0, rtol=-1.0)
+    with pytest.raises(RuntimeError, match="`max_steps`"):
+        ke.lyapunov(m, y0, p, 40.0, tau=0.5, rtol=1e-11, max_steps=10)
+
+
 def test_one_compiled_loop_serves_every_model():
     """The Benettin loop is compiled for the first-class function types of ``rhs_into``/``jacobian``, not for one
     module's functions: a second model adds no compilation, and numba can keep the loop in its disk cache (a
