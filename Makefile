@@ -29,6 +29,7 @@ bench:
 	$(PYTHON) -m benchmarks
 	$(PYTHON) -m benchmarks.recording
 	$(PYTHON) -m benchmarks.rigid_pydy
+	$(PYTHON) -m benchmarks.lyapunov_speed
 
 ## figures: every figure of the paper
 figures:

@@ -168,23 +168,23 @@ def _stage_point(out, x, h, K, s):
 
 
 @njit(cache=True)
-def _error_norm(y, y_new, K, h, rtol, atol):
-    """SciPy's RMS norm of the embedded error estimate of the state (the tangent vectors are not controlled: they
-    follow the state's steps, as the variational equations of the same trajectory)."""
+def _error_squares(x, x_new, K, h, rtol, atol):
+    """Sum over the components of the squared embedded error estimates, each scaled by ``atol + rtol |x|`` (the
+    terms of SciPy's RMS norm)."""
     acc = 0.0
-    for i in range(y.size):
+    for i in range(x.size):
         e = 0.0
         for j in range(7):
             e += _E[j] * K[j, i]
-        scale = atol + rtol * max(abs(y[i]), abs(y_new[i]))
+        scale = atol + rtol * max(abs(x[i]), abs(x_new[i]))
         acc += (h * e / scale) ** 2
-    return math.sqrt(acc / y.size)
+    return acc
 
 
 @njit(cache=True)
 def _benettin_adaptive(rhs_into, jacobian, gradients, y, Q, p, tau, n_blocks, rtol, atol, h, max_steps):
-    """As :func:`_benettin`, stepped by Dormand-Prince 5(4) with the state's error controlled to ``rtol``,
-    ``atol`` (steps end on the re-orthonormalization times ``b tau``); also returns the numbers of accepted and
+    """As :func:`_benettin`, stepped by Dormand-Prince 5(4) with the errors of the state and the tangent vectors
+    controlled to ``rtol``, ``atol`` (steps end on the re-orthonormalization times ``b tau``); also returns the numbers of accepted and
     rejected steps (``max_steps`` reached: accepted = -1)."""
     n, k = Q.shape
     sums, hist, hist_t = np.zeros(k), np.empty((n_blocks, k)), np.empty(n_blocks)
@@ -206,13 +206,17 @@ def _benettin_adaptive(rhs_into, jacobian, gradients, y, Q, p, tau, n_blocks, rt
             _stage_point(y_new, y, step, K, 6)
             _stage_point(q_new, q, step, KQ, 6)
             rhs_into(0.0, y_new, p, K[6])
-            err = _error_norm(y, y_new, K, step, rtol, atol)
+            _times(jacobian(y_new, p), q_new.reshape((n, k)), KQ[6].reshape((n, k)))
+            # the tangent vectors are controlled too: at an equilibrium the state alone would let the step grow
+            # past the stability of the tangent dynamics
+            err = math.sqrt((_error_squares(y, y_new, K, step, rtol, atol)
+                             + _error_squares(q, q_new, KQ, step, rtol, atol)) / (n + n * k))
             if err <= 1.0:
                 t = t_end if step == t_end - t else t + step
                 y[:] = y_new
                 q[:] = q_new
                 K[0] = K[6]
-                _times(jacobian(y, p), Q, KQ[0].reshape((n, k)))
+                KQ[0] = KQ[6]
                 accepted += 1
             else:
                 rejected += 1
@@ -279,8 +283,8 @@ def lyapunov(m: Model, y0, p, t_end: float, k: int | None = None, h: float | Non
 
     Without ``rtol``: classical Runge-Kutta with the fixed step ``h`` (default: 1/50 of the period of the fastest
     linear mode at ``y0``); ``tau``: the time between re-orthonormalizations (default ``10 h``), rounded to a whole
-    number of steps.  With ``rtol`` (and ``atol``, default ``rtol * 1e-2``): Dormand-Prince 5(4) with the state's
-    error controlled as in ``simulate(method="DP54")``, ``h`` the first step, ``tau`` (default ``span / 1000``)
+    number of steps.  With ``rtol`` (and ``atol``, default ``rtol * 1e-2``): Dormand-Prince 5(4) with the errors of
+    the state and of the tangent vectors controlled as in ``simulate(method="DP54")``, ``h`` the first step, ``tau`` (default ``span / 1000``)
     rounded to divide the span; ``max_steps`` bounds the steps.
     """
     p = m.check_params(p)
