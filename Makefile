@@ -30,6 +30,7 @@ bench:
 	$(PYTHON) -m benchmarks.recording
 	$(PYTHON) -m benchmarks.mechanics_peers
 	$(PYTHON) -m benchmarks.rigid_pydy
+	$(PYTHON) -m benchmarks.lyapunov_speed
 
 ## figures: every figure of the paper
 figures:

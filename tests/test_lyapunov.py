@@ -20,7 +20,6 @@ import knifeedge as ke
 st = importlib.import_module("knifeedge.stability")
 
 
-@pytest.mark.slow  # the variational loop compiles in every process (about 20 s of a worker): the slow tier
 def test_sum_of_exponents_is_the_time_averaged_divergence():
     m = ke.load("two_mode")
     p = m.params(m.default_params)
@@ -35,7 +34,6 @@ def test_sum_of_exponents_is_the_time_averaged_divergence():
     np.testing.assert_allclose(res.y, run.y[:, -1], rtol=0, atol=1e-8)  # the same trajectory
 
 
-@pytest.mark.slow  # a second compiled variational loop: the slow tier
 def test_exponents_do_not_depend_on_the_renormalization_interval():
     m = ke.load("two_mode")
     p = m.params(m.default_params)
@@ -45,6 +43,39 @@ def test_exponents_do_not_depend_on_the_renormalization_interval():
     assert a.h == b.h
     np.testing.assert_allclose(a.exponents, b.exponents, rtol=0, atol=1e-10)
     assert a.history.shape == (400, 5) and b.history.shape == (80, 5)
+
+
+def test_step_control_gives_the_fixed_steps_exponents():
+    """Dormand-Prince 5(4) with the state's error controlled (``rtol``) and RK4 with a fine fixed step are two
+    discretizations of the same variational equations: their exponents agree to the integration error, and the
+    sum is the time-averaged divergence (Liouville's formula, as above)."""
+    m = ke.load("two_mode")
+    p = m.params(m.default_params)
+    y0 = m.state(theta1=0.02, theta2=0.01, theta1_dot=0.0, theta2_dot=0.0, phi_dot=0.3)
+    fixed = ke.lyapunov(m, y0, p, 40.0, h=0.005, tau=0.5)
+    adaptive = ke.lyapunov(m, y0, p, 40.0, tau=0.5, rtol=1e-11)
+    assert adaptive.method.startswith("DP54") and 0 < adaptive.steps < fixed.steps and adaptive.tau == 0.5
+    np.testing.assert_allclose(adaptive.exponents, fixed.exponents, rtol=0, atol=1e-8)
+    np.testing.assert_allclose(adaptive.y, fixed.y, rtol=0, atol=1e-9)
+    with pytest.raises(ValueError, match="`atol`"):
+        ke.lyapunov(m, y0, p, 1.0, h=0.01, atol=1e-9)
+    with pytest.raises(ValueError, match="`rtol`"):
+        ke.lyapunov(m, y0, p, 1.0, rtol=-1.0)
+    with pytest.raises(RuntimeError, match="`max_steps`"):
+        ke.lyapunov(m, y0, p, 40.0, tau=0.5, rtol=1e-11, max_steps=10)
+
+
+def test_one_compiled_loop_serves_every_model():
+    """The Benettin loop is compiled for the first-class function types of ``rhs_into``/``jacobian``, not for one
+    module's functions: a second model adds no compilation, and numba can keep the loop in its disk cache (a
+    closure per module, the earlier design, compiled again in every process)."""
+    ly = importlib.import_module("knifeedge.lyapunov")
+    for name in ("single_mode", "two_mode"):
+        m = ke.load(name, "reduced")
+        p = m.params(m.default_params)
+        ke.lyapunov(m, m.state(m.module.DEFAULT_STATE), p, 1.0, h=0.01, tau=0.1)
+    assert ly._benettin.signatures == [ly._SIGNATURE]
+    assert type(ly._benettin._cache).__name__ != "NullCache"
 
 
 def test_bad_arguments_are_named():

@@ -80,3 +80,29 @@ def test_predictability_scene():
     assert all(p < 10 * s for p, s in zip(n["probe_shift"][1:], n["reversal_spread"][1:]))
     verdicts = [v for _, v, _ in r.claims]
     assert verdicts == ["supports", "contradicts", "supports"]
+
+
+@pytest.mark.slow  # the full celt's Jacobian (10-20 s cold) and 1000 s of its variational equations (~5 s)
+def test_celt_chaos_scene():
+    """Scene ``celt_chaos``: the energy against the Newton-Euler reference's (tests/rigid_reference.py), the upright
+    spin of the same energy and its growth rate against the held-out linearization by hand
+    (tests/test_celt_held_out.py), and the spectrum's structure: one positive exponent, two zero (flow direction,
+    energy), a negative sum (Borisov & Mamaev, Physics-Uspekhi 46 (2003) 393: the non-holonomic celt's phase
+    volume is not conserved)."""
+    import rigid_reference as ref
+    from test_celt_held_out import hand_block
+
+    r = result("celt_chaos")
+    assert set(r.scene.reports) <= set(r.numbers)
+    run = r.scene.run
+    p = np.array([run.params[k] for k in ref.NAMES])
+    y0 = np.array([run.y0[k] for k in ("n_x", "n_y", "n_z", "omega_x", "omega_y", "omega_z")])
+    assert r.numbers["energy"] == pytest.approx(ref.energy(y0, p), rel=1e-12)
+    spin = r.numbers["steady_spin_same_energy"]
+    upright = np.array([0.0, 0.0, 1.0, 0.0, 0.0, spin])
+    assert ref.energy(upright, p) == pytest.approx(r.numbers["energy"], rel=1e-12)
+    expected = float(np.linalg.eigvals(hand_block(p, spin)).real.max())
+    assert r.numbers["steady_spin_growth_rate"] == pytest.approx(expected, rel=1e-8)
+    lam = np.array(r.numbers["exponents"])
+    assert lam[0] > 0.5 and np.sort(np.abs(lam))[1] < 0.015 and lam.sum() < -0.02
+    assert all(v == "supports" for _, v, _ in r.claims), r.claims

@@ -22,7 +22,7 @@ from .scenes.base import format_number
 #: the tasks, heaviest first (CPU seconds, cold: knife_edge_rigid 4.6-5.3, the GIFs of numerical2, celt and
 #: numerical 3.1, 2.7, 1.7, the scenes tinversion 2.1, numerical2 1.7, ...), so that the parallel run does not
 #: end on a long task started last; a scene's GIF is a task of its own, ("animation", name)
-_ORDER = (("scene", "predictability"), ("scene", "knife_edge_rigid"), ("scene", "celt_stability"),
+_ORDER = (("scene", "predictability"), ("scene", "knife_edge_rigid"), ("scene", "celt_stability"), ("scene", "celt_chaos"),
           ("animation", "numerical2"), ("animation", "celt"), ("scene", "tinversion"),
           ("scene", "numerical2"), ("animation", "numerical"), ("scene", "celt"), ("scene", "knife_edge_vs_celt"),
           ("scene", "model_fidelity"), ("scene", "table_path"), ("scene", "ellipses"), ("scene", "celt_schoemer"),

@@ -13,12 +13,10 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from numba import njit
+from numba import njit, types
 
+from .integrators.rk_tableaus import DP54_A, DP54_B, DP54_E
 from .models import Model
-
-_KERNELS: dict = {}
-
 
 @njit(cache=True)
 def _times(J, Q, out):
@@ -76,50 +74,168 @@ def _project_out(G, Q):
                 Q[c, j] -= r * G[i, c]
 
 
-def _kernel(module):
-    """The compiled Benettin loop of one generated module (compiled once per module and process)."""
-    key = module.__name__
-    if key in _KERNELS:
-        return _KERNELS[key]
-    rhs_into, jacobian, gradients = module.rhs_into, module.jacobian, module.invariant_gradients
+@njit(cache=True)
+def _shifted(out, x, c, dx):
+    """``out = x + c dx`` (vectors)."""
+    for i in range(x.size):
+        out[i] = x[i] + c * dx[i]
 
-    @njit
-    def stage(y, Q, p, dy, dQ):
-        rhs_into(0.0, y, p, dy)
-        _times(jacobian(y, p), Q, dQ)
 
-    @njit
-    def run(y, Q, p, h, n_blocks, steps_per_block, t0):
-        n, k = Q.shape
-        sums = np.zeros(k)
-        hist = np.empty((n_blocks, k))
-        hist_t = np.empty(n_blocks)
-        k1, k2, k3, k4, yt = np.empty(n), np.empty(n), np.empty(n), np.empty(n), np.empty(n)
-        K1, K2, K3, K4, Qt = (np.empty((n, k)), np.empty((n, k)), np.empty((n, k)), np.empty((n, k)),
-                              np.empty((n, k)))
-        for b in range(n_blocks):
-            for _ in range(steps_per_block):
-                stage(y, Q, p, k1, K1)
-                yt[:] = y + 0.5 * h * k1
-                Qt[:, :] = Q + 0.5 * h * K1
-                stage(yt, Qt, p, k2, K2)
-                yt[:] = y + 0.5 * h * k2
-                Qt[:, :] = Q + 0.5 * h * K2
-                stage(yt, Qt, p, k3, K3)
-                yt[:] = y + h * k3
-                Qt[:, :] = Q + h * K3
-                stage(yt, Qt, p, k4, K4)
-                y += h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4)
-                Q += h / 6.0 * (K1 + 2.0 * K2 + 2.0 * K3 + K4)
-            # round-off leaks into the invariants' directions (rate 0), which would outgrow decaying directions
-            _project_out(gradients(y, p), Q)
-            _orthonormalize(Q, sums)
-            hist_t[b] = (b + 1) * steps_per_block * h
-            hist[b] = sums / hist_t[b]
-        return y, Q, sums, hist_t + t0, hist
+@njit(cache=True)
+def _rk4_update(x, h, d1, d2, d3, d4):
+    """The classical Runge-Kutta step ``x += h/6 (d1 + 2 d2 + 2 d3 + d4)`` in place (vectors)."""
+    for i in range(x.size):
+        x[i] += h / 6.0 * (d1[i] + 2.0 * d2[i] + 2.0 * d3[i] + d4[i])
 
-    _KERNELS[key] = run
-    return run
+
+#: the first-class function types of a generated module's ``rhs_into(t, s, p, ds)``, ``jacobian(s, p)`` and
+#: ``invariant_gradients(s, p)``: the loop below is compiled for these types, not for one module's functions, so
+#: one compiled loop (in numba's cache, once per machine) serves every model and calls them through their addresses
+_VECTOR = types.float64[::1]
+_MATRIX = types.float64[:, ::1]
+_RHS = types.FunctionType(types.none(types.float64, _VECTOR, _VECTOR, _VECTOR))
+_MATRIX_OF_STATE = types.FunctionType(_MATRIX(_VECTOR, _VECTOR))
+_SIGNATURE = (_RHS, _MATRIX_OF_STATE, _MATRIX_OF_STATE, _VECTOR, _MATRIX, _VECTOR, types.float64, types.int64,
+              types.int64)
+
+
+@njit(cache=True)
+def _benettin(rhs_into, jacobian, gradients, y, Q, p, h, n_blocks, steps_per_block):
+    """RK4 on the state ``y`` and the tangent vectors ``Q`` (n x k) for ``n_blocks`` blocks of ``steps_per_block``
+    steps of ``h``, re-orthonormalized after each block; returns the final y, Q, the sums of log |R_jj|, and the
+    times and running estimates of the re-orthonormalizations (from time 0)."""
+    n, k = Q.shape
+    sums = np.zeros(k)
+    hist = np.empty((n_blocks, k))
+    hist_t = np.empty(n_blocks)
+    k1, k2, k3, k4, yt = np.empty(n), np.empty(n), np.empty(n), np.empty(n), np.empty(n)
+    K1, K2, K3, K4, Qt = (np.empty((n, k)), np.empty((n, k)), np.empty((n, k)), np.empty((n, k)),
+                          np.empty((n, k)))
+    # the tangent vectors as flat views, so that one loop over a vector serves the state and the tangents
+    q, q1, q2, q3, q4, qt = Q.ravel(), K1.ravel(), K2.ravel(), K3.ravel(), K4.ravel(), Qt.ravel()
+    for b in range(n_blocks):
+        for _ in range(steps_per_block):
+            rhs_into(0.0, y, p, k1)
+            _times(jacobian(y, p), Q, K1)
+            _shifted(yt, y, 0.5 * h, k1)
+            _shifted(qt, q, 0.5 * h, q1)
+            rhs_into(0.0, yt, p, k2)
+            _times(jacobian(yt, p), Qt, K2)
+            _shifted(yt, y, 0.5 * h, k2)
+            _shifted(qt, q, 0.5 * h, q2)
+            rhs_into(0.0, yt, p, k3)
+            _times(jacobian(yt, p), Qt, K3)
+            _shifted(yt, y, h, k3)
+            _shifted(qt, q, h, q3)
+            rhs_into(0.0, yt, p, k4)
+            _times(jacobian(yt, p), Qt, K4)
+            _rk4_update(y, h, k1, k2, k3, k4)
+            _rk4_update(q, h, q1, q2, q3, q4)
+        # round-off leaks into the invariants' directions (rate 0), which would outgrow decaying directions
+        _project_out(gradients(y, p), Q)
+        _orthonormalize(Q, sums)
+        hist_t[b] = (b + 1) * steps_per_block * h
+        hist[b] = sums / hist_t[b]
+    return y, Q, sums, hist_t, hist
+
+
+def _kernel():
+    """The compiled Benettin loop for the first-class function types (compiled, or loaded from numba's cache,
+    once per process; its entry point takes a module's numba functions and passes their addresses)."""
+    if _SIGNATURE not in _benettin.overloads:
+        _benettin.compile(_SIGNATURE)
+    return _benettin.overloads[_SIGNATURE].entry_point
+
+
+#: Dormand-Prince 5(4) (SciPy's RK45; the project's ``DP54``): row s < 6 the coefficients of stage s, row 6 the
+#: weights of the new point (whose rate is the seventh stage, FSAL); ``_E`` the error estimator over the 7
+_A = np.zeros((7, 6))
+_A[:6, :5] = DP54_A
+_A[6] = DP54_B
+_E = DP54_E
+_ADAPTIVE_SIGNATURE = (_RHS, _MATRIX_OF_STATE, _MATRIX_OF_STATE, _VECTOR, _MATRIX, _VECTOR, types.float64,
+                       types.int64, types.float64, types.float64, types.float64, types.int64)
+
+
+@njit(cache=True)
+def _stage_point(out, x, h, K, s):
+    """``out = x + h sum_j A[s, j] K[j]`` over the stages ``j < s``."""
+    for i in range(x.size):
+        acc = 0.0
+        for j in range(s):
+            acc += _A[s, j] * K[j, i]
+        out[i] = x[i] + h * acc
+
+
+@njit(cache=True)
+def _error_squares(x, x_new, K, h, rtol, atol):
+    """Sum over the components of the squared embedded error estimates, each scaled by ``atol + rtol |x|`` (the
+    terms of SciPy's RMS norm)."""
+    acc = 0.0
+    for i in range(x.size):
+        e = 0.0
+        for j in range(7):
+            e += _E[j] * K[j, i]
+        scale = atol + rtol * max(abs(x[i]), abs(x_new[i]))
+        acc += (h * e / scale) ** 2
+    return acc
+
+
+@njit(cache=True)
+def _benettin_adaptive(rhs_into, jacobian, gradients, y, Q, p, tau, n_blocks, rtol, atol, h, max_steps):
+    """As :func:`_benettin`, stepped by Dormand-Prince 5(4) with the errors of the state and the tangent vectors
+    controlled to ``rtol``, ``atol`` (steps end on the re-orthonormalization times ``b tau``); also returns the numbers of accepted and
+    rejected steps (``max_steps`` reached: accepted = -1)."""
+    n, k = Q.shape
+    sums, hist, hist_t = np.zeros(k), np.empty((n_blocks, k)), np.empty(n_blocks)
+    K, KQ = np.empty((7, n)), np.empty((7, n * k))
+    yt, qt, y_new, q_new = np.empty(n), np.empty(n * k), np.empty(n), np.empty(n * k)
+    q = Q.ravel()
+    t, accepted, rejected = 0.0, 0, 0
+    for b in range(n_blocks):
+        t_end = (b + 1) * tau
+        rhs_into(0.0, y, p, K[0])
+        _times(jacobian(y, p), Q, KQ[0].reshape((n, k)))
+        while t_end - t > 1e-12 * tau:
+            step = min(h, t_end - t)
+            for s in range(1, 6):
+                _stage_point(yt, y, step, K, s)
+                _stage_point(qt, q, step, KQ, s)
+                rhs_into(0.0, yt, p, K[s])
+                _times(jacobian(yt, p), qt.reshape((n, k)), KQ[s].reshape((n, k)))
+            _stage_point(y_new, y, step, K, 6)
+            _stage_point(q_new, q, step, KQ, 6)
+            rhs_into(0.0, y_new, p, K[6])
+            _times(jacobian(y_new, p), q_new.reshape((n, k)), KQ[6].reshape((n, k)))
+            # the tangent vectors are controlled too: at an equilibrium the state alone would let the step grow
+            # past the stability of the tangent dynamics
+            err = math.sqrt((_error_squares(y, y_new, K, step, rtol, atol)
+                             + _error_squares(q, q_new, KQ, step, rtol, atol)) / (n + n * k))
+            if err <= 1.0:
+                t = t_end if step == t_end - t else t + step
+                y[:] = y_new
+                q[:] = q_new
+                K[0] = K[6]
+                KQ[0] = KQ[6]
+                accepted += 1
+            else:
+                rejected += 1
+            factor = 10.0 if err == 0.0 else min(10.0, max(0.2, 0.9 * err ** -0.2))
+            h = step * factor if (err > 1.0 or step == h) else max(h, step * factor)
+            if accepted + rejected >= max_steps:
+                return y, Q, sums, hist_t, hist, -1, rejected
+        _project_out(gradients(y, p), Q)
+        _orthonormalize(Q, sums)
+        hist_t[b] = t_end
+        hist[b] = sums / t_end
+    return y, Q, sums, hist_t, hist, accepted, rejected
+
+
+def _adaptive_kernel():
+    """The compiled adaptive loop (compiled on first use, then loaded from numba's cache)."""
+    if _ADAPTIVE_SIGNATURE not in _benettin_adaptive.overloads:
+        _benettin_adaptive.compile(_ADAPTIVE_SIGNATURE)
+    return _benettin_adaptive.overloads[_ADAPTIVE_SIGNATURE].entry_point
 
 
 @dataclass(frozen=True)
@@ -130,7 +246,8 @@ class LyapunovResult:
     history_t : (n_blocks,) times of the re-orthonormalizations; ``history`` (n_blocks, k) the running estimates
         there (sorted like ``exponents``), to judge convergence.
     uncertainty : (k,) half the spread of each running estimate over the last quarter of the run.
-    y : the final closed state; ``h``, ``tau``: the step and the re-orthonormalization interval used.
+    y : the final closed state; ``h``, ``tau``: the step (adaptive: the mean step) and the re-orthonormalization
+        interval used; ``steps``, ``rejected``: the accepted and rejected steps; ``method``: which integrator.
     """
 
     exponents: np.ndarray
@@ -140,6 +257,9 @@ class LyapunovResult:
     y: np.ndarray
     h: float
     tau: float
+    steps: int = 0
+    rejected: int = 0
+    method: str = "RK4"
 
 
 def _physical_basis(m: Model, y: np.ndarray, p: np.ndarray, k: int | None) -> np.ndarray:
@@ -156,12 +276,16 @@ def _physical_basis(m: Model, y: np.ndarray, p: np.ndarray, k: int | None) -> np
 
 
 def lyapunov(m: Model, y0, p, t_end: float, k: int | None = None, h: float | None = None,
-             tau: float | None = None, t0: float = 0.0) -> LyapunovResult:
+             tau: float | None = None, t0: float = 0.0, rtol: float | None = None, atol: float | None = None,
+             max_steps: int = 10**8) -> LyapunovResult:
     """The ``k`` largest Lyapunov exponents (default: all, of the physical phase space) from ``y0`` over
     ``(t0, t_end)``.
 
-    ``h``: the Runge-Kutta step (default: 1/50 of the period of the fastest linear mode at ``y0``);
-    ``tau``: the time between re-orthonormalizations (default ``10 h``), rounded to a whole number of steps.
+    Without ``rtol``: classical Runge-Kutta with the fixed step ``h`` (default: 1/50 of the period of the fastest
+    linear mode at ``y0``); ``tau``: the time between re-orthonormalizations (default ``10 h``), rounded to a whole
+    number of steps.  With ``rtol`` (and ``atol``, default ``rtol * 1e-2``): Dormand-Prince 5(4) with the errors of
+    the state and of the tangent vectors controlled as in ``simulate(method="DP54")``, ``h`` the first step, ``tau`` (default ``span / 1000``)
+    rounded to divide the span; ``max_steps`` bounds the steps.
     """
     p = m.check_params(p)
     y = m._closed(y0).copy()
@@ -176,17 +300,49 @@ def lyapunov(m: Model, y0, p, t_end: float, k: int | None = None, h: float | Non
         h = min(2 * math.pi / rho / 50 if rho > 0 else span / 1e4, span / 100)
     if not (isinstance(h, (int, float)) and math.isfinite(h) and 0 < h <= span):
         raise ValueError(f"`h` must be a positive step no longer than the span, got {h!r}")
+    Q = _physical_basis(m, y, p, k)
+    mod = m.module
+    functions = (mod.rhs_into, mod.jacobian, mod.invariant_gradients)
+    p = np.ascontiguousarray(p, dtype=float)
+    if rtol is not None:
+        return _adaptive(functions, y, Q, p, span, float(t0), h, tau, rtol, atol, max_steps)
+    if atol is not None:
+        raise ValueError("`atol` needs `rtol` (the adaptive method); with a fixed step `h` leave both out")
     tau = 10 * h if tau is None else tau
     if not (isinstance(tau, (int, float)) and math.isfinite(tau) and h <= tau <= span):
         raise ValueError(f"`tau` must lie between the step `h` = {h} and the span, got {tau!r}")
     steps_per_block = max(1, round(tau / h))
     n_blocks = max(1, int(round(span / (steps_per_block * h))))
     h = span / (n_blocks * steps_per_block)
-    Q = _physical_basis(m, y, p, k)
-    run = _kernel(m.module)
-    y, Q, sums, hist_t, hist = run(y, Q, p, h, n_blocks, steps_per_block, float(t0))
+    y, Q, sums, hist_t, hist = _kernel()(*functions, y, Q, p, h, n_blocks, steps_per_block)
+    return _result(y, hist_t + float(t0), hist, h, steps_per_block * h, n_blocks * steps_per_block, "RK4")
+
+
+def _adaptive(functions, y, Q, p, span, t0, h, tau, rtol, atol, max_steps) -> LyapunovResult:
+    atol = rtol * 1e-2 if atol is None else atol
+    for name, v in (("rtol", rtol), ("atol", atol)):
+        if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
+            raise ValueError(f"`{name}` must be a positive tolerance, got {v!r}")
+    tau = span / 1000 if tau is None else tau
+    if not (isinstance(tau, (int, float)) and math.isfinite(tau) and 0 < tau <= span):
+        raise ValueError(f"`tau` must be a positive time no longer than the span, got {tau!r}")
+    if not (isinstance(max_steps, int) and max_steps > 0):
+        raise ValueError(f"`max_steps` must be a positive integer, got {max_steps!r}")
+    n_blocks = max(1, int(round(span / tau)))
+    tau = span / n_blocks
+    y, Q, sums, hist_t, hist, accepted, rejected = _adaptive_kernel()(*functions, y, Q, p, tau, n_blocks,
+                                                                      float(rtol), float(atol), min(h, tau),
+                                                                      max_steps)
+    if accepted < 0:
+        raise RuntimeError(f"the variational equations needed more than `max_steps` = {max_steps} steps; raise it "
+                           f"or loosen `rtol`")
+    return _result(y, hist_t + t0, hist, span / accepted, tau, accepted, f"DP54 rtol {rtol:g} atol {atol:g}",
+                   rejected)
+
+
+def _result(y, hist_t, hist, h, tau, steps, method, rejected=0) -> LyapunovResult:
     order = np.argsort(-hist[-1], kind="stable")
     hist = hist[:, order]
-    tail = hist[-max(1, n_blocks // 4):]
-    return LyapunovResult(hist[-1].copy(), hist_t, hist, 0.5 * (tail.max(axis=0) - tail.min(axis=0)), y, h,
-                          steps_per_block * h)
+    tail = hist[-max(1, len(hist_t) // 4):]
+    return LyapunovResult(hist[-1].copy(), hist_t, hist, 0.5 * (tail.max(axis=0) - tail.min(axis=0)), y, h, tau,
+                          steps, rejected, method)
