@@ -20,7 +20,7 @@ from sympy.printing.pycode import PythonCodePrinter
 
 from knifeedge.modulecheck import seal
 
-from . import averaging, drawing, engine, jacobian, models, names, steady, truncation
+from . import averaging, drawing, engine, ir_emit, jacobian, models, names, steady, truncation
 from .averaging import AmplitudeSystem
 from .fidelities import FIDELITIES
 
@@ -741,8 +741,9 @@ def module_path(out_dir: Path, name: str, fidelity: str) -> Path:
 def write_all(out_dir: Path, systems: dict | None = None, registry: bool = True) -> list[Path]:
     """Write every module (and, with ``registry``, the package registry ``__init__.py``) into ``out_dir``.
 
-    Every module is sealed (:func:`knifeedge.modulecheck.seal`: its last line is the SHA-256 of its content,
-    which ``knifeedge.load`` verifies before running it).
+    Every module gets the LLVM IR of its right-hand side (:func:`.ir_emit.with_ir`) and is sealed
+    (:func:`knifeedge.modulecheck.seal`: its last line is the SHA-256 of its content, which ``knifeedge.load``
+    verifies before running it).
     """
     systems = systems if systems is not None else build_all()
     paths = {key: module_path(out_dir, *key) for key in sorted(systems)}
@@ -750,7 +751,8 @@ def write_all(out_dir: Path, systems: dict | None = None, registry: bool = True)
     for (name, fidelity), path in paths.items():
         amp = systems.get((name, "amplitude"))
         freq = amp.frequencies if amp is not None and fidelity != "amplitude" else None
-        path.write_text(seal(module_source(systems[(name, fidelity)], fidelity, frequencies=freq)), encoding="utf-8")
+        source = module_source(systems[(name, fidelity)], fidelity, frequencies=freq)
+        path.write_text(seal(ir_emit.with_ir(source)), encoding="utf-8")  # the IR: the module's last step
     paths = list(paths.values())
     if registry:
         reg = out_dir / "__init__.py"

@@ -12,10 +12,10 @@ the error norm (:func:`attempt`), the interpolant (:func:`dense`) and the
 event functions (:func:`events`).  When ``IR`` is true (a specialized
 kernel), ``attempt`` and ``dense`` are straight-line LLVM IR written from
 the tableau with the state size and coefficients as constants
-(:mod:`knifeedge.integrators.irparts`), and the model's ``rhs_q_into`` and
-``constants`` are written into the same IR module from their Python
-(:mod:`knifeedge.integrators.irexpr`; the right-hand side inlined into the
-stages), numba compiling them only where that cannot be done; ``events`` is
+(:mod:`knifeedge.integrators.irparts`), linked with the IR of the model's
+``rhs_q_into`` and ``constants`` that the generated module carries
+(``LLVM_IR``, written at derive time; the right-hand side inlined into the
+stages), numba compiling them only where the module has none; ``events`` is
 a ``numba.cfunc`` (a no-op from the IR module for a model without event
 functions).  Otherwise all four are numba's compilation (``attempt`` and
 ``dense`` of the loops over the tableau below: the reference the tests
@@ -26,6 +26,7 @@ integrator with this model's parts: it takes the arguments of ``erk.solve``
 without ``fns`` and ``q``.
 """
 import ctypes
+import sys
 
 import numpy as np
 from numba import carray, cfunc, types
@@ -171,8 +172,9 @@ def parts() -> np.ndarray:
     if not _PARTS:
         constants = None
         if IR:  # the right-hand side and constants too, as IR (numba's compilation where they cannot be)
-            lib, addresses = _irparts.load_or_compile(__file__, TABLEAU, N, NQ, _rhs,
-                                                      lambda: cfunc(RHS_SIG, **_OPTIONS)(rhs), _constants)
+            model = sys.modules[_rhs.py_func.__module__]  # the generated module (its LLVM_IR)
+            lib, addresses = _irparts.load_or_compile(__file__, TABLEAU, N, NQ, model, _rhs.py_func.__name__,
+                                                      lambda: cfunc(RHS_SIG, **_OPTIONS)(rhs))
             attempt_address, dense_address, rhs_address = addresses[:3]
             if addresses[3]:
                 constants = (np.int64(addresses[3]), ctypes.CFUNCTYPE(ctypes.c_int64)(addresses[4])())
