@@ -1,4 +1,4 @@
-"""Integration methods as data: the tableau checks, the registry, Tsitouras 5(4), and the template's generic bodies.
+"""Integration methods as data: the tableau checks, the registry, Tsitouras 5(4).
 
 Scenes as in test_integrators.py: the single-mode knife edge of the paper's Fig. 'numerical'
 (g = ell = L = D = 1, theta(0) = 1e-3, phi_dot(0) = 0.1), whose spin reversal is at t = 106.361.
@@ -76,9 +76,9 @@ def test_tsit5_satisfies_the_order_conditions():
     assert abs(b_hat @ c1**4 - 1 / 5) > 1e-6  # the estimate is of order 4, not 5
 
 
-def _harmonic(method, rtol, **kw):
+def _harmonic(method, rtol):
     """The stub oscillator q'' = -w^2 q of the templates (w = 2): q(t) = cos(2t), exact at t = 10."""
-    m_solve = specialize.load_kernel("erk", method, _stub, "rhs_q_into", 3, **kw).solve
+    m_solve = specialize.load_kernel("erk", method, _stub, "rhs_q_into", 3).solve
     y0, p = np.array([1.0, 0.0, 0.0]), np.array([2.0])
     ts, ys, ev_t, ev_k = np.empty(2), np.empty((2, 3)), np.empty(64), np.empty(64, dtype=np.int64)
     n_out, n_ev, status, nfev = m_solve(0.0, 10.0, y0, y0, p, rtol, np.full(3, rtol * 1e-3), 0.0, np.inf,
@@ -102,22 +102,6 @@ def test_adaptive_methods_converge_at_their_order(method, order):
         assert ev.size == 6
     slope = -math.log(errs[1] / errs[0]) / math.log(work[1] / work[0])
     assert 0.7 * order < slope < 1.3 * order + 1, (slope, errs, work)
-
-
-@pytest.mark.xdist_group("generic_parts")  # with test_irparts: one worker compiles the generic-loop parts
-@pytest.mark.parametrize("method", [pytest.param("Tsit5", marks=pytest.mark.slow), pytest.param("DP54", marks=pytest.mark.slow), "DOP853"])
-def test_generic_template_bodies_agree_with_the_unrolled_ones(method):
-    """The template's loops over the tableau (unroll=False) and the straight-line IR parts (irparts) compute
-    the same method: as many steps, and answers equal within the tolerance (their round-off differs, as
-    the unrolled stages use fused multiply-adds, and moves the step sizes, hence the answers at the error level;
-    a wrong coefficient would break the order and miss by orders of magnitude more)."""
-    a, ev_a, n_a = _harmonic(method, 1e-9)
-    b, ev_b, n_b = _harmonic(method, 1e-9, unroll=False)
-    assert n_a == n_b
-    np.testing.assert_allclose(a, b, rtol=1e-8, atol=1e-9)
-    np.testing.assert_allclose(ev_a, ev_b, rtol=1e-9)
-    src = specialize.kernel_source("erk", method, "m", "rhs_q_into", 3, unroll=False)
-    assert "for s in range(1, N_STAGES + 1):" in src and "generic loops" in src
 
 
 @pytest.mark.xdist_group("dp54_tsit5")  # one worker compiles the DP54 and Tsit5 integrators for all such tests

@@ -18,10 +18,8 @@ is summed as ``y + (h a_0) K_0 + (h a_1) K_1 + ...``, oldest stage first, so
 that only the last term waits for the stage just computed (the chain of
 dependent operations between two right-hand-side calls is one fused
 multiply-add); the error norm and the interpolant sum ``0.0 + (c_0 K_0 +
-c_1 K_1 + ...)``.  The template's loops over the tableau
-(``erk_parts.attempt`` and ``erk_parts.dense``, compiled by numba for a
-kernel written with ``unroll=False``) compute the same method and differ by
-round-off; the tests call both on one workspace (``tests/test_irparts.py``).
+c_1 K_1 + ...)``.  ``tests/test_irparts.py`` compares them with the same
+method as plain loops over the tableau in numpy, on one workspace.
 
 A right-hand side that fails (numba's status nonzero) makes ``attempt``
 return NaN, so the step is rejected and the run ends with the step-size
