@@ -820,7 +820,7 @@ def simulate(
         more inside one step included: a step whose ends have the same sign
         is sampled when the cubic through the event's values and rates at
         its ends dips toward zero inside it (see
-        ``knifeedge/integrators/templates/_blocks.py``).
+        ``knifeedge/integrators/common.py``).
 
     Returns
     -------
