@@ -41,6 +41,8 @@ N = 3  # knifeedge:n  (the state size, a compile-time constant so that the loops
 NV = 1  # knifeedge:nv  (the number of event functions)
 NQ = 2  # knifeedge:nq  (the size of constants(p))
 
+#: the right-hand side's name in the generated module (its IR is ``LLVM_IR[RHS_NAME]``)
+RHS_NAME = _rhs.py_func.__name__
 #: a fixed-step method: the driver (``fixed_driver.solve``) takes the method's data after the parts
 FIXED = TABLEAU in _fixed.FIXED_METHODS
 _METHOD = (_fixed.FIXED_METHODS[TABLEAU].driver_data(),) if FIXED else ()
@@ -83,7 +85,7 @@ def parts() -> np.ndarray:
     if not _PARTS:
         constants = None
         model = sys.modules[_rhs.py_func.__module__]  # the generated module (its LLVM_IR)
-        lib, addresses = _irparts.load_or_compile(__file__, TABLEAU, N, NQ, model, _rhs.py_func.__name__,
+        lib, addresses = _irparts.load_or_compile(__file__, TABLEAU, N, NQ, model, RHS_NAME,
                                                   lambda: cfunc(RHS_SIG, **_OPTIONS)(rhs))
         attempt_address, dense_address, rhs_address = addresses[:3]
         if addresses[3]:
