@@ -452,9 +452,7 @@ def _scipy_phase(r: _Run, scipy_method: str, fun, event_values, stop=None, jac=N
 
     from .integrators import common
 
-    SAMPLES, GA, GB, SA, SB, CRIT0, N_CRIT, FLAG = (common.SAMPLES, common.GA, common.GB, common.SA, common.SB,
-                                                    common.CRIT0, common.N_CRIT, common.FLAG)
-    screen = common.screen.py_func
+    SAMPLES, screen = common.SAMPLES, common.screen.py_func
 
     solver_class = getattr(integrate, scipy_method)
     model = r.model
@@ -494,7 +492,8 @@ def _scipy_phase(r: _Run, scipy_method: str, fun, event_values, stop=None, jac=N
         return np.array(f if f is not None else fun(solver.t, solver.y), dtype=float)
 
     f_old = rate(solver) if codes else None
-    g = np.zeros((len(codes), 8))  # the events' work rows, as the kernels keep them
+    # the screen's flags and Hermite extrema, as the kernels keep them
+    crit, n_crit, flag = np.zeros((len(codes), 2)), np.zeros(len(codes), dtype=np.int64), np.zeros(len(codes), dtype=np.int64)
     y_prev = r.y0.copy()
     next_ask = time.perf_counter() + 0.05
     done = True
@@ -520,18 +519,18 @@ def _scipy_phase(r: _Run, scipy_method: str, fun, event_values, stop=None, jac=N
         if codes:
             h = t - t_old
             f_new = rate(solver)
-            g[:, GA], g[:, SA] = values(y_prev, f_old, h)
-            g[:, GB], g[:, SB] = values(y, f_new, h)
-            screen(g)  # the kernels' rule (integrators.common.screen), run here by Python: nothing to compile
+            ga, sa = values(y_prev, f_old, h)
+            gb, sb = values(y, f_new, h)
+            screen(ga, gb, sa, sb, crit, n_crit, flag)  # the kernels' rule, run here by Python: nothing to compile
             for k, (e, c) in enumerate(zip(names, codes)):
-                if not g[k, FLAG]:
+                if not flag[k]:
                     continue
                 sol = sol or solver.dense_output()
-                crit = set(g[k, CRIT0:CRIT0 + int(g[k, N_CRIT])].tolist())
-                xs = [0.0] + (sorted({m / SAMPLES for m in range(1, SAMPLES)} | crit) if g[k, FLAG] == 2 else [])
-                gs = [g[k, GA]] + [at(sol, c, t_old + x * h) for x in xs[1:]]
+                extrema = set(crit[k, :n_crit[k]].tolist())
+                xs = [0.0] + (sorted({m / SAMPLES for m in range(1, SAMPLES)} | extrema) if flag[k] == 2 else [])
+                gs = [ga[k]] + [at(sol, c, t_old + x * h) for x in xs[1:]]
                 xs.append(1.0)
-                gs.append(g[k, GB])
+                gs.append(gb[k])
                 for m in range(1, len(xs)):
                     fa, fb = gs[m - 1], gs[m]
                     if fa == 0.0 or not (fb == 0.0 or (fa > 0.0) != (fb > 0.0)):
@@ -795,7 +794,7 @@ def simulate(
         more inside one step included: a step whose ends have the same sign
         is sampled when the cubic through the event's values and rates at
         its ends dips toward zero inside it (see
-        ``knifeedge/integrators/common.py``).
+        ``knifeedge/integrators/templates/_blocks.py``).
 
     Returns
     -------

@@ -13,7 +13,6 @@ from dataclasses import dataclass
 from . import dop853_tableau, rk_tableaus, tsit5
 from .specialize import cache_dir, call_repairing, is_compiled, load_kernel
 from .status import Status, from_code
-from .fixed_methods import FIXED_METHODS, FixedMethod, register_fixed
 from .tableau import TABLEAUS, ExplicitTableau, register
 from .common import SAMPLES as _SAMPLES
 from .compiler import compile_mode, set_compile_mode
@@ -35,7 +34,7 @@ class CompiledMethod:
     ----------
     name : str
     template : str  -- kernel template (``"erk"`` adaptive, ``"fixed"`` fixed step)
-    variant : str -- the registered method (an ``ExplicitTableau`` or a ``FixedMethod``)
+    variant : str or int -- the registered tableau (``erk``) or the variant number (``fixed``)
     order : int     -- classical order of accuracy
     fixed_step : bool -- needs a step ``h`` instead of tolerances
     description : str
@@ -53,7 +52,10 @@ COMPILED_METHODS = {
     m.name: m
     for m in (
         *(CompiledMethod(t.name, "erk", t.name, t.order, False, t.description) for t in TABLEAUS.values()),
-        *(CompiledMethod(m.name, "fixed", m.name, m.order, True, m.description) for m in FIXED_METHODS.values()),
+        CompiledMethod("RK4", "fixed", 0, 4, True, "classical Runge-Kutta, fixed step"),
+        CompiledMethod("implicit_midpoint", "fixed", 1, 2, True, "implicit midpoint rule (Gauss-Legendre, 1 stage)"),
+        CompiledMethod("gauss4", "fixed", 2, 4, True, "Gauss-Legendre collocation, 2 stages, order 4"),
+        CompiledMethod("gauss6", "fixed", 3, 6, True, "Gauss-Legendre collocation, 3 stages, order 6"),
     )
 }
 #: other accepted names of compiled methods

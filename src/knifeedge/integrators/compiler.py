@@ -166,7 +166,7 @@ def start(model, method: str, kernel_module, arg_types: tuple) -> Pending:
         return Pending(kernel_module, path, None, started=False)
     lock.unlink(missing_ok=True)
     job = {
-        "kernel": str(path), "method": method, "template": "fixed" if kernel_module.FIXED else "erk",
+        "kernel": str(path), "method": method, "template": "erk",
         "variant": kernel_module.TABLEAU, "rhs": kernel_module.RHS_NAME,
         "model": model.module.MODEL, "fidelity": model.module.FIDELITY, "pose": bool(model.pose),
         "path": str(model.source_path.parent) if model.source_path is not None else None,

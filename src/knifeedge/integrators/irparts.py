@@ -68,8 +68,7 @@ def literal(x: float) -> str:
 class _Writer:
     """IR text of one function: numbered SSA values and the instructions the parts need."""
 
-    def __init__(self, flags: str = FLAGS):
-        self.flags = flags
+    def __init__(self):
         # the right-hand side's return slot and exception slot (numba's calling convention)
         self.lines: list = ["  %ret = alloca ptr, align 8", "  %exc = alloca ptr, align 8"]
         self.count = 0
@@ -95,26 +94,26 @@ class _Writer:
         self.emit(f"store double {value}, ptr {self.ptr(base, offset)}, align 8")
 
     def mul(self, a: str, b: str) -> str:
-        return self.value(f"fmul {self.flags} double {a}, {b}")
+        return self.value(f"fmul {FLAGS} double {a}, {b}")
 
     def add(self, a: str, b: str) -> str:
-        return self.value(f"fadd {self.flags} double {a}, {b}")
+        return self.value(f"fadd {FLAGS} double {a}, {b}")
 
     def sub(self, a: str, b: str) -> str:
-        return self.value(f"fsub {self.flags} double {a}, {b}")
+        return self.value(f"fsub {FLAGS} double {a}, {b}")
 
     def div(self, a: str, b: str) -> str:
-        return self.value(f"fdiv {self.flags} double {a}, {b}")
+        return self.value(f"fdiv {FLAGS} double {a}, {b}")
 
     def fabs(self, a: str) -> str:
-        return self.value(f"call {self.flags} double @llvm.fabs.f64(double {a})")
+        return self.value(f"call {FLAGS} double @llvm.fabs.f64(double {a})")
 
     def sqrt(self, a: str) -> str:
-        return self.value(f"call {self.flags} double @llvm.sqrt.f64(double {a})")
+        return self.value(f"call {FLAGS} double @llvm.sqrt.f64(double {a})")
 
     def max(self, acc: str, v: str) -> str:
         """Python's ``max(acc, v)`` on floats as numba lowers it: ``v`` if ``v > acc``, else ``acc``."""
-        gt = self.value(f"fcmp {self.flags} ogt double {v}, {acc}")
+        gt = self.value(f"fcmp {FLAGS} ogt double {v}, {acc}")
         return self.value(f"select i1 {gt}, double {v}, double {acc}")
 
     def dot(self, coefficients, k: list, i: int) -> str:
@@ -255,70 +254,14 @@ def dense_ir(tab: Tableau, n: int, nq: int, name: str, rhs: str) -> str:
     return _function("void", name, DENSE_ARGS, w)
 
 
-class FixedLayout:
-    """The offsets of the fixed-step driver's workspace (:mod:`.fixed_driver`): the stages Z and the new stages
-    Zn (s x n each), y, work, dy (n each), then q."""
-
-    def __init__(self, n: int, s: int):
-        self.n = n
-        self.k = [j * n for j in range(s)]  # Z: the stage derivatives
-        self.zn = [(s + j) * n for j in range(s)]
-        self.y, self.work, self.dy = 2 * s * n, (2 * s + 1) * n, (2 * s + 2) * n
-        self.q = (2 * s + 3) * n
-
-
-def fixed_step_ir(method, n: int, nq: int, name: str, rhs: str) -> str:
-    """The IR of a fixed-step method's stages, ``double name(double t, double h, ptr ws, i64 nq)`` (workspace
-    :class:`FixedLayout`), calling the right-hand side ``rhs``: for an explicit ``method``
-    (:class:`.fixed_methods.FixedMethod`) the stages ``Z[1 ..]`` from ``Z[0] = f(t, y)`` (``y + (h a_0) Z_0 +
-    ...``) and ``dy = h (b_0 Z_0 + ...)``; for an implicit one, one sweep of its stage equations ``Zn[k] = f(t +
-    c_k h, y + h (a_k0 Z_0 + ...))``.  Returns 0.0, or NaN if a call of the right-hand side failed.  No
-    fast-math flags: the operations of the loops the stepping used before, in their order."""
-    lay = FixedLayout(n, method.stages)
-    w = _Writer(flags="")
-    y = [w.load("%ws", lay.y + i) for i in range(n)]
-    if not method.implicit:
-        k = [[w.load("%ws", lay.k[0] + i) for i in range(n)]]
-        for s in range(1, method.stages):
-            time = w.add("%t", w.mul(literal(method.c[s]), "%h"))
-            _stage(w, lay, rhs, nq, y, k, method.A[s], time, lay.work, True)
-        for i in range(n):
-            w.store(w.mul("%h", w.dot(method.b, k, i)), "%ws", lay.dy + i)
-    else:
-        z = [[w.load("%ws", lay.k[j] + i) for i in range(n)] for j in range(method.stages)]
-        for s in range(method.stages):
-            time = w.add("%t", w.mul(literal(method.c[s]), "%h"))
-            for i in range(n):
-                w.store(w.add(y[i], w.mul("%h", w.dot(method.A[s], z, i))), "%ws", lay.work + i)
-            code = w.value(f"call i32 @\"{rhs}\"(ptr %ret, ptr %exc, double {time}, ptr {w.ptr('%ws', lay.work)}, "
-                           f"ptr {w.ptr('%ws', lay.q)}, i64 {nq}, ptr {w.ptr('%ws', lay.zn[s])}) #0")
-            w.status = w.value(f"or i32 {w.status}, {code}")
-    failed = w.value(f"icmp ne i32 {w.status}, 0")
-    w.emit(f"ret double {w.value(f'select i1 {failed}, double {_NAN}, double 0.0')}")
-    return _function("double", name, DENSE_ARGS, w)
-
-
-def _nothing() -> _Writer:
-    w = _Writer()
-    w.emit("ret void")
-    return w
-
-
-def _method(name: str):
-    """The registered method ``name``: a :class:`.fixed_methods.FixedMethod` or a :class:`Tableau`."""
-    from .fixed_methods import FIXED_METHODS
-
-    return FIXED_METHODS[name] if name in FIXED_METHODS else Tableau(name)
-
-
 def _function(returns: str, name: str, args, w: _Writer) -> str:
     return f'define {returns} @"{name}"({", ".join(args)}) {{\nentry:\n' + "\n".join(w.lines) + "\n}\n"
 
 
-def module_ir(tab, n: int, nq: int, names: tuple, rhs: str, rhs_definition: str = "", extra: str = "") -> str:
+def module_ir(tab: Tableau, n: int, nq: int, names: tuple, rhs: str, rhs_definition: str = "",
+              extra: str = "") -> str:
     """The IR module of both parts (``names``: the symbols of ``attempt`` and ``dense``, and optionally of a
-    C-callable ``rhs`` part) for ``tab`` on ``n`` states and ``nq`` constants (a fixed-step method: its
-    :func:`fixed_step_ir` as ``attempt``, and a ``dense`` that does nothing), calling the right-hand side
+    C-callable ``rhs`` part) for ``tab`` on ``n`` states and ``nq`` constants, calling the right-hand side
     ``rhs`` (numba's calling convention): defined by ``rhs_definition`` (its IR, from the generated module), or
     else declared (numba's compiled ``rhs`` part, linked in).  Every call of it is inlined (``alwaysinline``:
     measured on the two-mode model, a call left in costs 7-9 % per evaluation).  ``extra``: more
@@ -333,8 +276,8 @@ def module_ir(tab, n: int, nq: int, names: tuple, rhs: str, rhs_definition: str 
         or f'declare i32 @"{rhs}"(ptr, ptr, double, ptr, ptr, i64, ptr)',
         *declarations,
         *[x for x in more if not x.startswith("declare ")],
-        *((attempt_ir(tab, n, nq, names[0], rhs), dense_ir(tab, n, nq, names[1], rhs)) if isinstance(tab, Tableau)
-          else (fixed_step_ir(tab, n, nq, names[0], rhs), _function("void", names[1], DENSE_ARGS, _nothing()))),
+        attempt_ir(tab, n, nq, names[0], rhs),
+        dense_ir(tab, n, nq, names[1], rhs),
         *([c_wrapper_ir(rhs, names[2])] if len(names) > 2 else []),
         "attributes #0 = { alwaysinline }",
         "",
@@ -454,7 +397,7 @@ def load_or_compile(kernel_file, tableau: str, n: int, nq: int, model, rhs_name:
             raise RuntimeError(f"unexpected symbol of a compiled C callback: {native!r}") from None
         native, definition, link = native[len("cfunc."):], "", [compiled._library]
     extras = _extras_ir(names, ir.get("constants", ""), getattr(model, "LLVM_IR_READS", 0))
-    text = module_ir(_method(tableau), n, nq, names[:3], native, definition, extras)
+    text = module_ir(Tableau(tableau), n, nq, names[:3], native, definition, extras)
     lib = compile_library(text, f"knifeedge_parts_{Path(kernel_file).stem}", link)
     addresses = [lib.get_pointer_to_function(x) if i < 3 or i == 5 or "constants" in ir else 0
                  for i, x in enumerate(names)]

@@ -42,11 +42,8 @@ import numba
 
 _HERE = Path(__file__).resolve().parent
 TEMPLATES = ("erk", "fixed")
-#: the file of each template's per-model module: the model's parts of the shared integrator (``erk.py`` written
-#: per tableau, or ``fixed_driver.py``)
-MODEL_FILES = {"erk": "erk_parts", "fixed": "erk_parts"}
-#: the shared integrator of the fixed-step methods (a module of the package: nothing is written for it)
-FIXED_DRIVER = "knifeedge.integrators.fixed_driver"
+#: the file of each template's per-model module (``erk``: the model's parts of the shared integrator ``erk.py``)
+MODEL_FILES = {"erk": "erk_parts", "fixed": "fixed"}
 RHS_MARK = "# knifeedge:rhs"
 DRIVER_MARK = "# knifeedge:driver"
 NV_MARK = "# knifeedge:nv"
@@ -55,6 +52,10 @@ VARIANT_MARK = "# knifeedge:variant"
 N_MARK = "# knifeedge:n"
 EVENTS_MARK = "# knifeedge:event_values"
 BLOCK_MARK = "# knifeedge:"
+#: blocks every template takes from ``templates/_blocks.py`` (the bodies of its functions of these names)
+EVENT_BLOCKS = ("alloc", "ends", "suspect", "output")
+#: functions of ``templates/_blocks.py`` compiled into the kernels of models with event functions
+FUNCTION_DEFS = ("_event_at", "_function_ends", "_locate_functions")
 _LOADED: dict = {}
 
 
@@ -141,13 +142,13 @@ def kernel_source(template: str, variant, rhs_module: str, rhs_name: str, n_stat
     lines = (_HERE / "templates" / f"{MODEL_FILES[template]}.py").read_text().splitlines()
     out, seen = [], set()
     for line in lines:
-        if line.rstrip().endswith(DRIVER_MARK):
+        if template == "erk" and line.rstrip().endswith(DRIVER_MARK):
             line = f"import {driver} as _driver  {DRIVER_MARK}"
             seen.add(DRIVER_MARK)
-        elif line.startswith("NV =") and NV_MARK in line:
+        elif template == "erk" and line.startswith("NV =") and NV_MARK in line:
             line = f"NV = {int(n_events) if has_events else 0}  {NV_MARK}"
             seen.add(NV_MARK)
-        elif line.startswith("NQ =") and NQ_MARK in line:
+        elif template == "erk" and line.startswith("NQ =") and NQ_MARK in line:
             line = f"NQ = {int(n_constants)}  {NQ_MARK}"
             seen.add(NQ_MARK)
         elif line.rstrip().endswith(RHS_MARK):
@@ -158,18 +159,34 @@ def kernel_source(template: str, variant, rhs_module: str, rhs_name: str, n_stat
                     f"from knifeedge.integrators.common import no_event_values as _event_values  {EVENTS_MARK}")
             seen.add(EVENTS_MARK)
         elif VARIANT_MARK in line:
-            line = f"TABLEAU = {str(variant)!r}  {VARIANT_MARK}"
+            line = (f"TABLEAU = {str(variant)!r}  {VARIANT_MARK}" if template == "erk"
+                    else f"VARIANT = {int(variant)}  {VARIANT_MARK}")
             seen.add(VARIANT_MARK)
         elif N_MARK in line and line.startswith("N ="):
             line = f"N = {n_state}  {N_MARK}"
             seen.add(N_MARK)
         out.append(line)
-    if seen != {RHS_MARK, VARIANT_MARK, N_MARK, EVENTS_MARK, DRIVER_MARK, NV_MARK, NQ_MARK}:
+    if seen != {RHS_MARK, VARIANT_MARK, N_MARK, EVENTS_MARK} | ({DRIVER_MARK, NV_MARK, NQ_MARK} if template == "erk" else set()):
         raise RuntimeError(f"kernel template {template}.py lacks one of its {RHS_MARK!r}, {VARIANT_MARK!r}, "
                            f"{N_MARK!r}, {EVENTS_MARK!r} lines")
+    if template == "fixed":
+        out = _event_blocks(out, has_events)
     header = (f"# Specialized kernel: template {template}.py, variant {variant}, rhs {rhs_module}.{rhs_name}, "
               f"{n_state} states.\n")
     return header + "\n".join(out) + "\n"
+
+
+def _event_blocks(out: list, has_events: bool) -> list:
+    """The template's event blocks and functions filled in (``has_events``: with the event functions')."""
+    if has_events:
+        out = _replace_block(out, "function_defs", sum((_event_function(f) for f in FUNCTION_DEFS), []))
+        out = _replace_block(out, "functions", lambda block: block)
+    else:
+        out = _replace_block(out, "function_defs", [])
+        out = _replace_block(out, "functions", [])
+    for name in EVENT_BLOCKS:
+        out = _replace_block(out, name, _event_block(name))
+    return out
 
 
 def driver_source(variant: str) -> str:
@@ -185,6 +202,7 @@ def driver_source(variant: str) -> str:
         out.append(line)
     if not seen:
         raise RuntimeError(f"kernel template erk.py lacks its {VARIANT_MARK!r} line")
+    out = _event_blocks(out, True)
     from .tableau import erk_arrays
 
     out = _replace_block(out, "power", _power_block(erk_arrays(variant)[-1]))
@@ -228,6 +246,35 @@ def _replace_block(lines: list, name: str, body) -> list:
     if not found:
         raise RuntimeError(f"kernel template lacks a block {begin!r}")
     return out
+
+
+def _event_block(name: str) -> list:
+    """The body of function ``name`` of ``templates/_blocks.py`` (dedented, without its ``return`` line)."""
+    lines = (_HERE / "templates" / "_blocks.py").read_text().splitlines()
+    start = next(k for k, line in enumerate(lines) if line.startswith(f"def {name}("))
+    body = []
+    for line in lines[start + 1:]:
+        if line and not line.startswith(" "):
+            break
+        body.append(line[4:])
+    while body and not body[-1].strip():
+        body.pop()
+    if body and body[-1].startswith("return "):
+        body.pop()
+    return body
+
+
+def _event_function(name: str) -> list:
+    """Function ``name`` of ``templates/_blocks.py``, whole, compiled (decorated) and followed by two blank lines."""
+    lines = (_HERE / "templates" / "_blocks.py").read_text().splitlines()
+    start = next(k for k, line in enumerate(lines) if line.startswith(f"def {name}("))
+    end = start + 1
+    while end < len(lines) and (not lines[end] or lines[end].startswith(" ")):
+        end += 1
+    body = lines[start:end]
+    while body and not body[-1].strip():
+        body.pop()
+    return ['@njit(cache=True, error_model="numpy")'] + body + ["", ""]
 
 
 def _key(source: str, rhs_file: str | None) -> str:
@@ -425,7 +472,7 @@ def load_kernel(template: str, variant, rhs_module: ModuleType, rhs_name: str, n
     cannot be written or imported: there is no slow fallback.
     """
     names = tuple(getattr(rhs_module, "EVENT_NAMES", ()))
-    driver = FIXED_DRIVER
+    driver = "knifeedge.integrators.templates.erk"
     if template == "erk":
         dsource = driver_source(variant)
         dstem = f"erk{variant}_driver_{_key(dsource, None)}"

@@ -30,7 +30,7 @@ from numba import njit
 
 from knifeedge.integrators import common as _c
 from knifeedge.integrators import tableau as _tableau
-from knifeedge.integrators.common import SAMPLES
+from knifeedge.integrators.common import MAX_ITER, NEAR, SAMPLES  # noqa: F401 (used by the blocks)
 from knifeedge.integrators.fnptr import call_f8, call_void
 
 TABLEAU = "DOP853"  # knifeedge:variant  (a registered ExplicitTableau, see knifeedge.integrators.tableau)
@@ -45,6 +45,18 @@ MAX_FACTOR = 10.0
 DENSE_NFEV = N_EXT - N_STAGES - 1
 
 _EPS = np.finfo(np.float64).eps
+
+
+@njit(cache=True, error_model="numpy")
+def _values(s, p, ev):
+    """The model's event functions at ``s`` (``ev``: the address of its ``events`` part and their number)."""
+    out = np.empty(ev[1])
+    call_void(ev[0], (s, p, np.int64(p.size), out))
+    return out
+
+
+# knifeedge:begin function_defs
+# knifeedge:end function_defs
 
 
 @njit(cache=True, error_model="numpy")
@@ -77,7 +89,7 @@ def solve(fns, t0, t1, y0, f0, q, p, rtol, atol, h_init, max_step, t_eval, every
 
     Zero crossings of the ``events`` (a state component ``c >= 0`` or the
     model's event function ``-1 - c``) are found on the step's interpolant,
-    two or more inside one step included (see :mod:`knifeedge.integrators.common`).
+    two or more inside one step included (see :mod:`._blocks`).
 
     Returns
     -------
@@ -105,8 +117,8 @@ def solve(fns, t0, t1, y0, f0, q, p, rtol, atol, h_init, max_step, t_eval, every
         y[i] = y0[i]
     fa = K[0]  # the derivatives at the ends of a step (views of the first and the last stage)
     fb = K[N_STAGES]
-    ne = events.size
-    g = np.zeros((ne, 8))  # the events' work rows (see integrators.common)
+    # knifeedge:begin alloc
+    # knifeedge:end alloc
     # counters start as int64, not as the literal 0 (numba would type them twice)
     n_out = np.int64(0)
     ie = np.int64(0)
@@ -199,14 +211,29 @@ def solve(fns, t0, t1, y0, f0, q, p, rtol, atol, h_init, max_step, t_eval, every
         n_acc += 1
         any_flag = False
         if ne > 0:
-            any_flag = _c.screen_step(events, y, y_new, fa, fb, h, p, ev, work, g)
+            # knifeedge:begin ends
+            # knifeedge:end ends
+            # knifeedge:begin functions
+            if n_fun > 0:
+                _function_ends(events, y, y_new, fa, fb, h, p, ev, work, ga, gb, sa, sb)
+            # knifeedge:end functions
+            # knifeedge:begin suspect
+            # knifeedge:end suspect
+            if suspect:
+                any_flag = _c.screen(ga, gb, sa, sb, crit, n_crit, flag)
         if any_flag or (ie < t_eval.size and t_eval[ie] < t_new):
             # the interpolant of the step: F (DENSE_ROWS x N)
             call_void(dense, (t, h, ws, nq))
             nfev += DENSE_NFEV
         if any_flag:
-            n_ev = _c.locate(events, F, y, ALT, t, h, p, ev, work, g, ev_t, ev_k, n_ev)
-        n_out, ie = _c.output(every, ts, ys, n_out, t_eval, ie, t, h, t_new, y, y_new, F, ALT)
+            n_ev = _c.locate(events, F, y, ALT, t, h, ga, gb, crit, n_crit, flag, xs, gs, ev_t, ev_k, n_ev)
+            # knifeedge:begin functions
+            if n_fun > 0:
+                n_ev = _locate_functions(events, F, y, t, h, p, ev, work, ga, gb, crit, n_crit, flag, xs, gs, ev_t,
+                                         ev_k, n_ev)
+            # knifeedge:end functions
+        # knifeedge:begin output
+        # knifeedge:end output
         for i in range(N):
             y[i] = y_new[i]
             K[0, i] = K[N_STAGES, i]

@@ -28,7 +28,6 @@ import sys
 import numpy as np
 from numba import carray, cfunc, types
 
-from knifeedge.integrators import fixed_methods as _fixed
 from knifeedge.integrators import fnptr as _fnptr
 from knifeedge.integrators import irparts as _irparts
 from knifeedge.integrators import tableau as _tableau
@@ -36,29 +35,25 @@ from knifeedge.integrators.templates import erk as _driver  # knifeedge:driver
 from knifeedge.integrators.templates._stub import constants as _constants, rhs_q_into as _rhs  # knifeedge:rhs
 from knifeedge.integrators.templates._stub import event_values as _event_values  # knifeedge:event_values
 
-TABLEAU = "DOP853"  # knifeedge:variant  (a registered ExplicitTableau or FixedMethod)
+TABLEAU = "DOP853"  # knifeedge:variant  (a registered ExplicitTableau, see knifeedge.integrators.tableau)
 N = 3  # knifeedge:n  (the state size, a compile-time constant so that the loops over it unroll)
 NV = 1  # knifeedge:nv  (the number of event functions)
 NQ = 2  # knifeedge:nq  (the size of constants(p))
 
+(_, _, _, _, _, _, _, N_STAGES, N_EXT, DENSE_ROWS, _, _) = _tableau.erk_arrays(TABLEAU)
 #: the right-hand side's name in the generated module (its IR is ``LLVM_IR[RHS_NAME]``)
 RHS_NAME = _rhs.py_func.__name__
-#: a fixed-step method: the driver (``fixed_driver.solve``) takes the method's data after the parts
-FIXED = TABLEAU in _fixed.FIXED_METHODS
-_METHOD = (_fixed.FIXED_METHODS[TABLEAU].driver_data(),) if FIXED else ()
-if not FIXED:
-    (_, _, _, _, _, _, _, N_STAGES, N_EXT, DENSE_ROWS, _, _) = _tableau.erk_arrays(TABLEAU)
-    #: the adaptive integrator's workspace, in this order: K (N_EXT x N), y, y_new, work, scale (N each),
-    #: F (DENSE_ROWS x N), then q (NQ); the parts take their arrays at these fixed offsets of the one pointer
-    _O = N_EXT * N
-    _OQ = _O + (4 + DENSE_ROWS) * N
-    #: its size: a constant, so that every view of it is at an offset the compiler knows
-    _WS = _OQ + NQ
 
 _F8 = types.float64
 _I8 = types.int64
 _D = types.CPointer(types.float64)
 RHS_SIG = types.void(_F8, _D, _D, _I8, _D)
+#: the integrator's workspace, in this order: K (N_EXT x N), y, y_new, work, scale (N each), F (DENSE_ROWS x N),
+#: then q (NQ); the parts take their arrays at these fixed offsets of the one pointer
+_O = N_EXT * N
+_OQ = _O + (4 + DENSE_ROWS) * N
+#: its size: a constant, so that every view of it is at an offset the compiler knows
+_WS = _OQ + NQ
 EVENTS_SIG = types.void(_D, _D, _I8, _D)
 
 
@@ -135,11 +130,11 @@ def arguments(t0, t1, y0, f0, p, *rest) -> tuple:
     q = constants(p)
     if q.size != NQ:
         raise ValueError(f"constants(p) has {q.size} elements, not the {NQ} this kernel was specialized to")
-    return (parts(), *_METHOD, t0, t1, y0, f0, q, p) + _one_signature(rest)
+    return (parts(), t0, t1, y0, f0, q, p) + _one_signature(rest)
 
 
 def _one_signature(rest: tuple) -> tuple:
-    """``rest`` (after ``p``; ``pair`` is its 9th for either driver) with ``pair`` read-only, as ``simulate`` passes it: a writable one is
+    """``rest`` (``rtol`` .. ``ev_k``) with ``pair`` read-only, as ``simulate`` passes it: a writable one is
     another numba type, and the integrator would compile a second time (3-4 s) for it."""
     pair = rest[8]
     if pair.flags.writeable:
@@ -153,7 +148,7 @@ def argument_types(args: tuple) -> tuple:
     """numba's types of the integrator's arguments for the arguments ``args`` of :func:`solve` (compiles
     nothing: what a separate process needs to compile the integrator)."""
     t0, t1, y0, f0, p, *rest = args
-    sample = (np.zeros(5, dtype=np.int64), *_METHOD, t0, t1, y0, f0, np.zeros(1), p, *_one_signature(tuple(rest)))
+    sample = (np.zeros(5, dtype=np.int64), t0, t1, y0, f0, np.zeros(1), p, *_one_signature(tuple(rest)))
     return tuple(_driver.solve.typeof_pyval(a) for a in sample)
 
 
@@ -163,7 +158,8 @@ def compile_types(types_) -> None:
     _driver.solve.compile(types_)
 
 
-def solve(t0, t1, y0, f0, p, *rest):
-    """The driver's ``solve`` (``erk.solve`` or ``fixed_driver.solve``) with this model's parts, its ``constants(p)``
-    and the method's data (see its parameters and returns)."""
-    return _driver.solve(*arguments(t0, t1, y0, f0, p, *rest))
+def solve(t0, t1, y0, f0, p, rtol, atol, h_init, max_step, t_eval, every, events, max_steps, pair, mode_scaled,
+          chunk, ts, ys, ev_t, ev_k):
+    """``erk.solve`` with this model's parts (see its parameters and returns)."""
+    return _driver.solve(*arguments(t0, t1, y0, f0, p, rtol, atol, h_init, max_step, t_eval, every, events,
+                                    max_steps, pair, mode_scaled, chunk, ts, ys, ev_t, ev_k))
