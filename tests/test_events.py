@@ -23,8 +23,7 @@ W = 2.0
 
 def _kernel(method):
     template = "fixed" if method == "RK4" else "erk"
-    variant = 0 if method == "RK4" else method
-    return template, specialize.load_kernel(template, variant, _stub, "rhs_q_into", 3).solve
+    return template, specialize.load_kernel(template, method, _stub, "rhs_q_into", 3).solve
 
 
 def _run(method, y0, p, t1, events, rtol=1e-10, h=None, atol=None):

@@ -160,7 +160,7 @@ def kernel_source(template: str, variant, rhs_module: str, rhs_name: str, n_stat
             seen.add(EVENTS_MARK)
         elif VARIANT_MARK in line:
             line = (f"TABLEAU = {str(variant)!r}  {VARIANT_MARK}" if template == "erk"
-                    else f"VARIANT = {int(variant)}  {VARIANT_MARK}")
+                    else f"METHOD = {str(variant)!r}  {VARIANT_MARK}")
             seen.add(VARIANT_MARK)
         elif N_MARK in line and line.startswith("N ="):
             line = f"N = {n_state}  {N_MARK}"
