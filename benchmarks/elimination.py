@@ -3,7 +3,7 @@
 ``python -m benchmarks.elimination [--symbolic-pendulum]`` derives examples/rolling_disk.py and
 examples/disk_pendulum.py with ``knifeedge derive`` into a temporary folder (the pendulum also forced to the closed
 form with ``--symbolic-pendulum``: minutes), then times ``rhs_into`` in a compiled loop: the median of 9 repeats of
-200,000 calls each, every ratio measured in this one run.  It also says whether ``integrators/irexpr.py`` wrote the
+200,000 calls each, every ratio measured in this one run.  It also says whether ``derivation/ir_emit.py`` wrote the
 right-hand side as IR or fell back to numba's compilation.
 """
 from __future__ import annotations
@@ -46,12 +46,8 @@ def per_call_ns(model, s, p) -> float:
 
 
 def _ir(model) -> str:
-    from knifeedge.integrators import irexpr
-    try:
-        irexpr.rhs_ir(model.module.rhs_q_into, "rhs")
-        return "IR"
-    except irexpr.Unsupported as exc:
-        return f"numba fallback ({exc})"
+    """Whether the module carries its right-hand side as LLVM IR (``derivation/ir_emit.py``) or numba compiles it."""
+    return "IR" if "rhs_q_into" in getattr(model.module, "LLVM_IR", {}) else "numba (not straight-line)"
 
 
 def main(argv=None) -> int:

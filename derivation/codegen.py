@@ -22,7 +22,7 @@ from sympy.printing.pycode import PythonCodePrinter
 
 from knifeedge.modulecheck import seal
 
-from . import names
+from . import ir_emit, names
 
 #: model files of the source tree's examples/ derived into generated/ with the package's models (``make derive``)
 EXAMPLE_MODELS = ("examples/rolling_disk.py",)
@@ -211,8 +211,9 @@ from numba import njit
 
 
 def finish(parts: ModuleParts) -> str:
-    """The finished text of a module: :func:`module_text` sealed (its last line the SHA-256 of the rest)."""
-    return seal(module_text(parts))
+    """The finished text of a module: :func:`module_text` with the LLVM IR of its right-hand side appended
+    (:func:`.ir_emit.with_ir`), sealed (its last line the SHA-256 of the rest)."""
+    return seal(ir_emit.with_ir(module_text(parts)))
 
 
 def regenerate_hint(label: str) -> str:

@@ -465,8 +465,9 @@ def module_path(out_dir: Path, name: str, fidelity: str) -> Path:
 def write_all(out_dir: Path, systems: dict | None = None, registry: bool = True) -> list[Path]:
     """Write every module (and, with ``registry``, the package registry ``__init__.py``) into ``out_dir``.
 
-    Every module is sealed (:func:`knifeedge.modulecheck.seal`: its last line is the SHA-256 of its content,
-    which ``knifeedge.load`` verifies before running it).
+    Every module gets the LLVM IR of its right-hand side (:func:`.ir_emit.with_ir`) and is sealed
+    (:func:`knifeedge.modulecheck.seal`: its last line is the SHA-256 of its content, which ``knifeedge.load``
+    verifies before running it).
     """
     systems = systems if systems is not None else build_all()
     paths = {key: module_path(out_dir, *key) for key in sorted(systems)}

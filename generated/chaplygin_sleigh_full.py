@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/sleigh.py (model 'chaplygin_sleigh',
 constraints knife_edge) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:fb4291193ef419aa538bdcf4b7644e5a81ed00416bb33b308a39b21137ca6457
+SymPy 1.14.0; input hash sha256:5e281664ae2fe1d75b804410369527daa77d6a575d08cd00a1df795e65784ef8
 
 Chaplygin sleigh: a rigid body on the plane with a knife edge at its rear contact point (x, y) that forbids sideways motion; heading phi, centre of mass at distance a ahead of the contact, radius of gyration k about the centre of mass; v is the speed along the axis.
 
@@ -60,7 +60,7 @@ MULTIPLIER_NAMES = ('knife_edge',)
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'fb4291193ef419aa538bdcf4b7644e5a81ed00416bb33b308a39b21137ca6457'
+INPUT_HASH = '5e281664ae2fe1d75b804410369527daa77d6a575d08cd00a1df795e65784ef8'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -331,5 +331,102 @@ def invariant_gradients(s, p):
     k = p[1]
 
     return out
+
+
+#: LLVM IR of the functions above that are straight-line arithmetic, written by derivation/ir_emit.py
+#: (the operations numba emits for them, in its order: the same bits); the runtime compiles it
+LLVM_IR = {
+    'rhs_q_into': (
+        'define internal i32 @"rhs_q_into"(ptr nocapture %ret, ptr nocapture %exc, double %t, ptr nocapture %s, ptr nocapture %q, i64 %nq, ptr nocapture %ds) {\n'
+        'entry:\n'
+        '  %v1 = getelementptr inbounds double, ptr %s, i64 0\n'
+        '  %v2 = load double, ptr %v1\n'
+        '  %v3 = getelementptr inbounds double, ptr %s, i64 1\n'
+        '  %v4 = load double, ptr %v3\n'
+        '  %v5 = getelementptr inbounds double, ptr %q, i64 0\n'
+        '  %v6 = load double, ptr %v5\n'
+        '  %v7 = getelementptr inbounds double, ptr %q, i64 1\n'
+        '  %v8 = load double, ptr %v7\n'
+        '  %v9 = getelementptr inbounds double, ptr %q, i64 2\n'
+        '  %v10 = load double, ptr %v9\n'
+        '  %v11 = fmul double %v4, %v4\n'
+        '  %v12 = fmul double %v6, %v11\n'
+        '  %v13 = getelementptr inbounds double, ptr %ds, i64 0\n'
+        '  store double %v12, ptr %v13\n'
+        '  %v14 = fmul double %v10, %v4\n'
+        '  %v15 = fmul double %v14, %v2\n'
+        '  %v16 = getelementptr inbounds double, ptr %ds, i64 1\n'
+        '  store double %v15, ptr %v16\n'
+        '  ret i32 0\n'
+        '}\n'
+        '\n'
+    ),
+    'rhs_pose_q_into': (
+        'define internal i32 @"rhs_pose_q_into"(ptr nocapture %ret, ptr nocapture %exc, double %t, ptr nocapture %s, ptr nocapture %q, i64 %nq, ptr nocapture %ds) {\n'
+        'entry:\n'
+        '  %v1 = getelementptr inbounds double, ptr %s, i64 0\n'
+        '  %v2 = load double, ptr %v1\n'
+        '  %v3 = getelementptr inbounds double, ptr %s, i64 1\n'
+        '  %v4 = load double, ptr %v3\n'
+        '  %v5 = getelementptr inbounds double, ptr %s, i64 2\n'
+        '  %v6 = load double, ptr %v5\n'
+        '  %v7 = getelementptr inbounds double, ptr %s, i64 3\n'
+        '  %v8 = load double, ptr %v7\n'
+        '  %v9 = getelementptr inbounds double, ptr %s, i64 4\n'
+        '  %v10 = load double, ptr %v9\n'
+        '  %v11 = getelementptr inbounds double, ptr %q, i64 0\n'
+        '  %v12 = load double, ptr %v11\n'
+        '  %v13 = getelementptr inbounds double, ptr %q, i64 1\n'
+        '  %v14 = load double, ptr %v13\n'
+        '  %v15 = getelementptr inbounds double, ptr %q, i64 2\n'
+        '  %v16 = load double, ptr %v15\n'
+        '  %v17 = fmul double %v4, %v4\n'
+        '  %v18 = fmul double %v12, %v17\n'
+        '  %v19 = getelementptr inbounds double, ptr %ds, i64 0\n'
+        '  store double %v18, ptr %v19\n'
+        '  %v20 = fmul double %v16, %v4\n'
+        '  %v21 = fmul double %v20, %v2\n'
+        '  %v22 = getelementptr inbounds double, ptr %ds, i64 1\n'
+        '  store double %v21, ptr %v22\n'
+        '  %v23 = getelementptr inbounds double, ptr %ds, i64 2\n'
+        '  store double %v4, ptr %v23\n'
+        '  %v24 = call double @llvm.cos.f64(double %v6)\n'
+        '  %v25 = fmul double %v2, %v24\n'
+        '  %v26 = getelementptr inbounds double, ptr %ds, i64 3\n'
+        '  store double %v25, ptr %v26\n'
+        '  %v27 = call double @llvm.sin.f64(double %v6)\n'
+        '  %v28 = fmul double %v2, %v27\n'
+        '  %v29 = getelementptr inbounds double, ptr %ds, i64 4\n'
+        '  store double %v28, ptr %v29\n'
+        '  ret i32 0\n'
+        '}\n'
+        'declare double @llvm.cos.f64(double)\n'
+        'declare double @llvm.sin.f64(double)\n'
+    ),
+    'constants': (
+        'define internal void @"constants"(ptr nocapture readonly %p, ptr nocapture %q) {\n'
+        'entry:\n'
+        '  %v1 = getelementptr inbounds double, ptr %p, i64 0\n'
+        '  %v2 = load double, ptr %v1\n'
+        '  %v3 = getelementptr inbounds double, ptr %p, i64 1\n'
+        '  %v4 = load double, ptr %v3\n'
+        '  %v5 = getelementptr inbounds double, ptr %q, i64 0\n'
+        '  store double %v2, ptr %v5\n'
+        '  %v6 = getelementptr inbounds double, ptr %q, i64 1\n'
+        '  store double %v4, ptr %v6\n'
+        '  %v7 = fneg double %v2\n'
+        '  %v8 = fmul double %v2, %v2\n'
+        '  %v9 = fmul double %v4, %v4\n'
+        '  %v10 = fadd double %v8, %v9\n'
+        '  %v11 = fdiv double %v7, %v10\n'
+        '  %v12 = getelementptr inbounds double, ptr %q, i64 2\n'
+        '  store double %v11, ptr %v12\n'
+        '  ret void\n'
+        '}\n'
+        '\n'
+    ),
+}
+#: how many parameters the IR of ``constants`` reads
+LLVM_IR_READS = 2
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '50f66736357f4e4c80a49f5f816633a1eeb67657c489d4dad6aee6d5cb39af3e'
+MODULE_SHA256 = 'ec5da46dcc3ae544c99906f8867b24a35898ca68025b8e50b1ac85eccf59e5de'

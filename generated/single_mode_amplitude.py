@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:6df86e8f6a2f8503ca8bf9097b453ea9ba550e4fea0ee263d1880f69c7233170
+SymPy 1.14.0; input hash sha256:b6d355763e6c81d70a6a5f55dc1a08a4703a547b622ff39ba9e58753cdfd7c0f
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -67,7 +67,7 @@ HAS_DISSIPATION = False
 EXPORTS = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy',)
-INPUT_HASH = '6df86e8f6a2f8503ca8bf9097b453ea9ba550e4fea0ee263d1880f69c7233170'
+INPUT_HASH = 'b6d355763e6c81d70a6a5f55dc1a08a4703a547b622ff39ba9e58753cdfd7c0f'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 10, 'constants': 6, 'rhs_q': 4, 'energy': 9, 'invariants': 9, 'frequencies': 5, 'growth_rates': 2, 'drive_rates': 5}
@@ -269,5 +269,77 @@ def invariant_gradients(s, p):
     D = p[3]
 
     return out
+
+
+#: LLVM IR of the functions above that are straight-line arithmetic, written by derivation/ir_emit.py
+#: (the operations numba emits for them, in its order: the same bits); the runtime compiles it
+LLVM_IR = {
+    'rhs_q_into': (
+        'define internal i32 @"rhs_q_into"(ptr nocapture %ret, ptr nocapture %exc, double %t, ptr nocapture %s, ptr nocapture %q, i64 %nq, ptr nocapture %ds) {\n'
+        'entry:\n'
+        '  %v1 = getelementptr inbounds double, ptr %s, i64 0\n'
+        '  %v2 = load double, ptr %v1\n'
+        '  %v3 = getelementptr inbounds double, ptr %s, i64 1\n'
+        '  %v4 = load double, ptr %v3\n'
+        '  %v5 = getelementptr inbounds double, ptr %q, i64 0\n'
+        '  %v6 = load double, ptr %v5\n'
+        '  %v7 = getelementptr inbounds double, ptr %q, i64 1\n'
+        '  %v8 = load double, ptr %v7\n'
+        '  %v9 = getelementptr inbounds double, ptr %q, i64 2\n'
+        '  %v10 = load double, ptr %v9\n'
+        '  %v11 = getelementptr inbounds double, ptr %q, i64 3\n'
+        '  %v12 = load double, ptr %v11\n'
+        '  %v13 = getelementptr inbounds double, ptr %q, i64 4\n'
+        '  %v14 = load double, ptr %v13\n'
+        '  %v15 = getelementptr inbounds double, ptr %q, i64 5\n'
+        '  %v16 = load double, ptr %v15\n'
+        '  %v17 = fmul double %v4, %v2\n'
+        '  %v18 = fmul double %v17, %v14\n'
+        '  %v19 = getelementptr inbounds double, ptr %ds, i64 0\n'
+        '  store double %v18, ptr %v19\n'
+        '  %v20 = fmul double %v2, %v2\n'
+        '  %v21 = fmul double %v20, %v16\n'
+        '  %v22 = getelementptr inbounds double, ptr %ds, i64 1\n'
+        '  store double %v21, ptr %v22\n'
+        '  ret i32 0\n'
+        '}\n'
+        '\n'
+    ),
+    'constants': (
+        'define internal void @"constants"(ptr nocapture readonly %p, ptr nocapture %q) {\n'
+        'entry:\n'
+        '  %v1 = getelementptr inbounds double, ptr %p, i64 0\n'
+        '  %v2 = load double, ptr %v1\n'
+        '  %v3 = getelementptr inbounds double, ptr %p, i64 1\n'
+        '  %v4 = load double, ptr %v3\n'
+        '  %v5 = getelementptr inbounds double, ptr %p, i64 2\n'
+        '  %v6 = load double, ptr %v5\n'
+        '  %v7 = getelementptr inbounds double, ptr %p, i64 3\n'
+        '  %v8 = load double, ptr %v7\n'
+        '  %v9 = getelementptr inbounds double, ptr %q, i64 0\n'
+        '  store double %v2, ptr %v9\n'
+        '  %v10 = getelementptr inbounds double, ptr %q, i64 1\n'
+        '  store double %v4, ptr %v10\n'
+        '  %v11 = getelementptr inbounds double, ptr %q, i64 2\n'
+        '  store double %v6, ptr %v11\n'
+        '  %v12 = getelementptr inbounds double, ptr %q, i64 3\n'
+        '  store double %v8, ptr %v12\n'
+        '  %v13 = fmul double 0x3FE0000000000000, %v8\n'
+        '  %v14 = fdiv double %v13, %v4\n'
+        '  %v15 = getelementptr inbounds double, ptr %q, i64 4\n'
+        '  store double %v14, ptr %v15\n'
+        '  %v16 = fneg double %v13\n'
+        '  %v17 = fmul double %v16, %v2\n'
+        '  %v18 = fmul double %v6, %v6\n'
+        '  %v19 = fdiv double %v17, %v18\n'
+        '  %v20 = getelementptr inbounds double, ptr %q, i64 5\n'
+        '  store double %v19, ptr %v20\n'
+        '  ret void\n'
+        '}\n'
+        '\n'
+    ),
+}
+#: how many parameters the IR of ``constants`` reads
+LLVM_IR_READS = 4
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '1682a149cbc5e139767c9b263e7c7b20a7dbc712cb9e343150ef1d151086dc15'
+MODULE_SHA256 = 'f9fe286ef52209e7a01191202829a75fc40234d8d53985e0c34f6b3129a5ea56'

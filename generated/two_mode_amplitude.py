@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:159d89a3bc5ccd1aee023567bd9e33029895b849b29f5430b5a4d28bf3e2e6bb
+SymPy 1.14.0; input hash sha256:74b41b4fe46f37a969284c83b8d2cbc949345fd46994a4e6205e46723e2e10be
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -71,7 +71,7 @@ HAS_DISSIPATION = False
 EXPORTS = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy', 'log_A1_A2')
-INPUT_HASH = '159d89a3bc5ccd1aee023567bd9e33029895b849b29f5430b5a4d28bf3e2e6bb'
+INPUT_HASH = '74b41b4fe46f37a969284c83b8d2cbc949345fd46994a4e6205e46723e2e10be'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 24, 'constants': 14, 'rhs_q': 10, 'energy': 12, 'invariants': 19, 'frequencies': 12, 'growth_rates': 11, 'drive_rates': 12}
@@ -352,5 +352,113 @@ def invariant_gradients(s, p):
     alpha = p[4]
 
     return out
+
+
+#: LLVM IR of the functions above that are straight-line arithmetic, written by derivation/ir_emit.py
+#: (the operations numba emits for them, in its order: the same bits); the runtime compiles it
+LLVM_IR = {
+    'rhs_q_into': (
+        'define internal i32 @"rhs_q_into"(ptr nocapture %ret, ptr nocapture %exc, double %t, ptr nocapture %s, ptr nocapture %q, i64 %nq, ptr nocapture %ds) {\n'
+        'entry:\n'
+        '  %v1 = getelementptr inbounds double, ptr %s, i64 0\n'
+        '  %v2 = load double, ptr %v1\n'
+        '  %v3 = getelementptr inbounds double, ptr %s, i64 1\n'
+        '  %v4 = load double, ptr %v3\n'
+        '  %v5 = getelementptr inbounds double, ptr %s, i64 2\n'
+        '  %v6 = load double, ptr %v5\n'
+        '  %v7 = getelementptr inbounds double, ptr %q, i64 0\n'
+        '  %v8 = load double, ptr %v7\n'
+        '  %v9 = getelementptr inbounds double, ptr %q, i64 1\n'
+        '  %v10 = load double, ptr %v9\n'
+        '  %v11 = getelementptr inbounds double, ptr %q, i64 2\n'
+        '  %v12 = load double, ptr %v11\n'
+        '  %v13 = getelementptr inbounds double, ptr %q, i64 3\n'
+        '  %v14 = load double, ptr %v13\n'
+        '  %v15 = getelementptr inbounds double, ptr %q, i64 4\n'
+        '  %v16 = load double, ptr %v15\n'
+        '  %v17 = getelementptr inbounds double, ptr %q, i64 5\n'
+        '  %v18 = load double, ptr %v17\n'
+        '  %v19 = getelementptr inbounds double, ptr %q, i64 6\n'
+        '  %v20 = load double, ptr %v19\n'
+        '  %v21 = getelementptr inbounds double, ptr %q, i64 7\n'
+        '  %v22 = load double, ptr %v21\n'
+        '  %v23 = getelementptr inbounds double, ptr %q, i64 8\n'
+        '  %v24 = load double, ptr %v23\n'
+        '  %v25 = getelementptr inbounds double, ptr %q, i64 9\n'
+        '  %v26 = load double, ptr %v25\n'
+        '  %v27 = fmul double %v2, %v6\n'
+        '  %v28 = fmul double %v27, %v18\n'
+        '  %v29 = getelementptr inbounds double, ptr %ds, i64 0\n'
+        '  store double %v28, ptr %v29\n'
+        '  %v30 = fmul double %v4, %v6\n'
+        '  %v31 = fmul double %v30, %v20\n'
+        '  %v32 = getelementptr inbounds double, ptr %ds, i64 1\n'
+        '  store double %v31, ptr %v32\n'
+        '  %v33 = fmul double %v2, %v2\n'
+        '  %v34 = fmul double %v33, %v22\n'
+        '  %v35 = fmul double %v4, %v4\n'
+        '  %v36 = fmul double %v35, %v24\n'
+        '  %v37 = fadd double %v34, %v36\n'
+        '  %v38 = fmul double %v26, %v37\n'
+        '  %v39 = getelementptr inbounds double, ptr %ds, i64 2\n'
+        '  store double %v38, ptr %v39\n'
+        '  ret i32 0\n'
+        '}\n'
+        '\n'
+    ),
+    'constants': (
+        'define internal void @"constants"(ptr nocapture readonly %p, ptr nocapture %q) {\n'
+        'entry:\n'
+        '  %v1 = getelementptr inbounds double, ptr %p, i64 0\n'
+        '  %v2 = load double, ptr %v1\n'
+        '  %v3 = getelementptr inbounds double, ptr %p, i64 1\n'
+        '  %v4 = load double, ptr %v3\n'
+        '  %v5 = getelementptr inbounds double, ptr %p, i64 2\n'
+        '  %v6 = load double, ptr %v5\n'
+        '  %v7 = getelementptr inbounds double, ptr %p, i64 3\n'
+        '  %v8 = load double, ptr %v7\n'
+        '  %v9 = getelementptr inbounds double, ptr %p, i64 4\n'
+        '  %v10 = load double, ptr %v9\n'
+        '  %v11 = getelementptr inbounds double, ptr %q, i64 0\n'
+        '  store double %v2, ptr %v11\n'
+        '  %v12 = getelementptr inbounds double, ptr %q, i64 1\n'
+        '  store double %v4, ptr %v12\n'
+        '  %v13 = getelementptr inbounds double, ptr %q, i64 2\n'
+        '  store double %v6, ptr %v13\n'
+        '  %v14 = getelementptr inbounds double, ptr %q, i64 3\n'
+        '  store double %v8, ptr %v14\n'
+        '  %v15 = getelementptr inbounds double, ptr %q, i64 4\n'
+        '  store double %v10, ptr %v15\n'
+        '  %v16 = fmul double 0x3FD0000000000000, %v8\n'
+        '  %v17 = fmul double 0x4000000000000000, %v10\n'
+        '  %v18 = call double @llvm.sin.f64(double %v17)\n'
+        '  %v19 = fmul double %v16, %v18\n'
+        '  %v20 = fmul double %v6, %v6\n'
+        '  %v21 = fmul double %v4, %v4\n'
+        '  %v22 = fadd double %v20, %v21\n'
+        '  %v23 = fdiv double %v19, %v22\n'
+        '  %v24 = fneg double %v19\n'
+        '  %v25 = fdiv double %v24, %v4\n'
+        '  %v26 = getelementptr inbounds double, ptr %q, i64 5\n'
+        '  store double %v25, ptr %v26\n'
+        '  %v27 = fmul double %v23, %v4\n'
+        '  %v28 = getelementptr inbounds double, ptr %q, i64 6\n'
+        '  store double %v27, ptr %v28\n'
+        '  %v29 = getelementptr inbounds double, ptr %q, i64 7\n'
+        '  store double %v22, ptr %v29\n'
+        '  %v30 = fneg double %v21\n'
+        '  %v31 = getelementptr inbounds double, ptr %q, i64 8\n'
+        '  store double %v30, ptr %v31\n'
+        '  %v32 = fmul double %v23, %v2\n'
+        '  %v33 = fdiv double %v32, %v20\n'
+        '  %v34 = getelementptr inbounds double, ptr %q, i64 9\n'
+        '  store double %v33, ptr %v34\n'
+        '  ret void\n'
+        '}\n'
+        'declare double @llvm.sin.f64(double)\n'
+    ),
+}
+#: how many parameters the IR of ``constants`` reads
+LLVM_IR_READS = 5
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'f3e8bdea5ba14a679cbfa9524513515dd868b34300a34b8cb9f6665908d88b14'
+MODULE_SHA256 = '9e71a71ef31d28a4468e0b6ccf441b23f169f721783fcf078c50c50f77b1a7a3'

@@ -125,7 +125,8 @@ def test_cached_compiled_code_is_checked_before_it_runs_lock(tmp_path, monkeypat
         return _Proc()
 
     monkeypatch.setattr(compiler.subprocess, "Popen", popen)
-    kernel = types.SimpleNamespace(__file__=str(tmp_path / "erkDOP853_m_rhs_0123.py"))
+    kernel = types.SimpleNamespace(__file__=str(tmp_path / "erkDOP853_m_rhs_0123.py"), TABLEAU="DOP853",
+                                   RHS_NAME="rhs_q_into")
     model = types.SimpleNamespace(module=types.SimpleNamespace(MODEL="m", FIDELITY="full"), pose=False,
                                   source_path=None)
     lock = tmp_path / "erkDOP853_m_rhs_0123.compiling"

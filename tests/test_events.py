@@ -23,8 +23,7 @@ W = 2.0
 
 def _kernel(method):
     template = "fixed" if method == "RK4" else "erk"
-    variant = 0 if method == "RK4" else method
-    return template, specialize.load_kernel(template, variant, _stub, "rhs_q_into", 3).solve
+    return template, specialize.load_kernel(template, method, _stub, "rhs_q_into", 3).solve
 
 
 def _run(method, y0, p, t1, events, rtol=1e-10, h=None, atol=None):
@@ -139,18 +138,25 @@ def test_event_buffers_hold_every_crossing_a_step_can_find():
 
 
 def test_screen_flags_a_dip_a_crossing_and_nothing_else():
-    """The screen's verdicts (simulate._suspects, the kernels' ``screen``) on closed-form ends: g = (x - 0.5)^2 - d
-    over the step [0, 1] (values and rates at x = 0, 1) dips below zero for d > 0 (two crossings, flag 2 with
-    the extremum at 0.5), stays above it for d < 0 far from zero (flag 0); a line through zero is flag 1."""
-    from knifeedge.simulate import _suspects
+    """The screen's verdicts (``integrators.common.screen``: compiled in the kernels, run by Python in the SciPy
+    path) on closed-form ends: g = (x - 0.5)^2 - d over the step [0, 1] (values and rates at x = 0, 1) dips
+    below zero for d > 0 (two crossings, flag 2 with the extremum at 0.5), stays above it for d < 0 far from
+    zero (flag 0); a line through zero is flag 1."""
+    from knifeedge.integrators.common import screen
+
+    def verdict(fn, g0, g1, s0, s1):
+        crit, n_crit, flag = np.zeros((1, 2)), np.zeros(1, dtype=np.int64), np.zeros(1, dtype=np.int64)
+        fn(np.array([g0]), np.array([g1]), np.array([s0]), np.array([s1]), crit, n_crit, flag)
+        return int(flag[0]), crit[0, :n_crit[0]].tolist()
 
     def ends(d):
         return 0.25 - d, 0.25 - d, -1.0, 1.0  # g(0), g(1), g'(0), g'(1) (the step is 1)
 
-    flag, crit = _suspects(*ends(0.01))
-    assert flag == 2 and crit == pytest.approx([0.5])
-    assert _suspects(*ends(-1.0)) == (0, [])
-    assert _suspects(1.0, -1.0, -2.0, -2.0)[0] == 1
+    for fn in (screen, screen.py_func):
+        flag, crit = verdict(fn, *ends(0.01))
+        assert flag == 2 and crit == pytest.approx([0.5])
+        assert verdict(fn, *ends(-1.0)) == (0, [])
+        assert verdict(fn, 1.0, -1.0, -2.0, -2.0)[0] == 1
 
 
 @pytest.fixture(scope="module")

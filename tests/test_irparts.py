@@ -1,7 +1,7 @@
 """The stages of a step and the interpolant written as LLVM IR (knifeedge.integrators.irparts).
 
-Each check calls the IR parts of a kernel and numba's compilation of the template's loops over the tableau
-(``unroll=False``, an independent implementation of the same method) on one workspace, or checks the IR parts
+Each check calls the IR parts of a kernel and compares with the method's loops over the tableau written here in
+numpy (an independent implementation of the same method) from one workspace, or checks the IR parts
 against the formulas they implement: Hairer, Norsett & Wanner, Solving ODEs I, Sect. II.4 (the error scale
 ``atol + rtol max(|y|, |y_new|)``) and II.10 (DOP853's error norm), as SciPy's ``solve_ivp`` computes them.
 The stand-in model is ``templates/_stub.py``: q' = v, v' = -w^2 q, s' = -q.
@@ -48,37 +48,74 @@ def _step(mod, ws, h, rtol, atol, pair, mode):
     return err
 
 
-@pytest.mark.xdist_group("generic_parts")  # with test_tableaus' generic-loop check: one worker compiles them
+def _loops(method, ws, n, h, rtol, atol, pair, mode, rhs):
+    """One step and its interpolant from the workspace ``ws`` (K[0], y and q set), as plain loops over the
+    tableau (Hairer, Norsett & Wanner I, Sect. II.4-II.6; DOP853's dense output as in SciPy's
+    ``Dop853DenseOutput``): ``(K, y_new, scale, err, F)``."""
+    t = irparts.Tableau(method)
+    K = np.zeros((t.n_ext, n))
+    K[0] = ws[:n]
+    lay = irparts.Layout(n, t.n_ext, t.dense_rows)
+    y, q = ws[lay.y:lay.y + n].copy(), ws[lay.q:]
+    for s in range(1, t.n_ext):
+        K[s] = rhs(0.0 + t.C[s] * h, y + h * (t.A[s, :s] @ K[:s]), q)
+        if s == t.n_stages:
+            y_new = y + h * (t.A[s, :s] @ K[:s])
+    mag = np.maximum(np.abs(y), np.abs(y_new))
+    if mode:
+        mag = np.maximum(mag, np.where(pair >= 0, np.maximum(np.abs(y[pair]), np.abs(y_new[pair])), 0.0))
+    scale = atol + rtol * mag
+    e5 = t.E5[:t.n_stages + 1] @ K[:t.n_stages + 1] / scale
+    if t.hairer:
+        e3 = t.E3[:t.n_stages + 1] @ K[:t.n_stages + 1] / scale
+        n5, n3 = np.sum(e5 ** 2), np.sum(e3 ** 2)
+        err = abs(h) * n5 / math.sqrt((n5 + 0.01 * n3) * n)
+        dy = y_new - y
+        F = np.array([dy, h * K[0] - dy, 2 * dy - h * (K[t.n_stages] + K[0])] + [h * (row @ K) for row in t.DD])
+    else:
+        err = abs(h) * math.sqrt(np.sum(e5 ** 2) / n)
+        F = h * (K.T @ t.P).T
+    return K, y_new, scale, err, F
+
+
+def _stub_rhs(p):
+    def rhs(t, y, q):
+        out = np.empty(3)
+        _stub.rhs_q_into.py_func(t, y, q, out)
+        return out
+    return rhs
+
+
 @pytest.mark.parametrize("method", ["DOP853", pytest.param("DP54", marks=pytest.mark.slow),
                                     pytest.param("Tsit5", marks=pytest.mark.slow)])
-def test_ir_parts_compute_what_numbas_loops_over_the_tableau_compute(method):
+def test_ir_parts_compute_the_loops_over_the_tableau(method):
     """One step of the stand-in from one workspace: the stages K, y_new, the scale, the error norm and the
-    interpolant's rows F agree between the IR parts and numba's loops to round-off (the IR sums a stage as
-    y + (h a_0) K_0 + ... with fused multiply-adds, the loops as y + h (a_0 K_0 + ...)); with
+    interpolant's rows F agree between the IR parts and the loops over the tableau to round-off (the IR sums a
+    stage as y + (h a_0) K_0 + ... with fused multiply-adds, the loops as y + h (a_0 K_0 + ...)); with
     ``mode_scaled`` the scale of a component takes its partner's magnitude too."""
     ir = specialize.load_kernel("erk", method, _stub, "rhs_q_into", 3)
-    loops = specialize.load_kernel("erk", method, _stub, "rhs_q_into", 3, unroll=False)
-    assert ir.IR and not loops.IR
     y, p = np.array([0.8, -0.3, 0.1]), np.array([2.0, 0.1])
     atol = np.array([1e-9, 2e-9, 3e-9])
     pair = np.array([1, 0, -1], dtype=np.int64)
     for mode in (0, 1):
-        wa, wb = _workspace(ir, y, p), _workspace(loops, y, p)
+        wa = _workspace(ir, y, p)
         # a long step (DOP853: error norm 0.03 at rtol 1e-7), so that the estimate is far above round-off
+        K, y_new_b, scale, eb, Fb = _loops(method, wa.copy(), 3, 0.3, 1e-7, atol, pair, mode, _stub_rhs(p))
         ea = _step(ir, wa, 0.3, 1e-7, atol, pair, mode)
-        eb = _step(loops, wb, 0.3, 1e-7, atol, pair, mode)
         assert math.isfinite(ea) and ea > 0.0
         assert math.isclose(ea, eb, rel_tol=1e-6), (ea, eb)  # round-off in the estimate: 1e-9 seen
-        np.testing.assert_allclose(wa[:ir._O], wb[:ir._O], rtol=1e-13, atol=1e-15)  # the stages K
+        np.testing.assert_allclose(wa[:ir._O], K.ravel(), rtol=1e-13, atol=1e-15)  # the stages K
         y_new = wa[ir._O + 3:ir._O + 6]
-        np.testing.assert_allclose(y_new, wb[ir._O + 3:ir._O + 6], rtol=1e-14)
+        np.testing.assert_allclose(y_new, y_new_b, rtol=1e-14)
         # the scale, from its definition (mode_scaled: max over the component and its partner)
         mag = np.maximum(np.abs(y), np.abs(y_new))
         if mode:
             mag = np.array([max(mag[0], mag[1]), max(mag[0], mag[1]), mag[2]])
         np.testing.assert_allclose(wa[ir._O + 9:ir._O + 12], atol + 1e-7 * mag, rtol=1e-15)
+        np.testing.assert_allclose(scale, atol + 1e-7 * mag, rtol=1e-13)  # from the loops' y_new
+        wb = Fb.ravel()
         F = slice(ir._O + 12, ir._OQ)
-        np.testing.assert_allclose(wa[F], wb[F], rtol=0, atol=1e-12 * np.abs(wb[F]).max())  # 2e-13 seen
+        np.testing.assert_allclose(wa[F], wb, rtol=0, atol=1e-12 * np.abs(wb).max())  # 2e-13 seen
     # the exact solution q = 0.8 cos(2t) - 0.15 sin(2t): one short step of the 8th (5th) order method is that close
     ws = _workspace(ir, y, p)
     _step(ir, ws, 0.05, 1e-7, atol, pair, 0)

@@ -7,14 +7,9 @@ import pytest
 
 from benchmarks import structure
 
-#: imports of the integrators that still close a cycle (``integrators/compiler.py`` reaching the package's
-#: top-level ``load`` and the integrators' ``__init__``; ``irparts`` <-> ``irexpr``): to be emptied by the
-#: integrators' rework (issue 25 item 1), not to be added to.
-INTEGRATOR_CYCLE_IMPORTS = {
-    ("knifeedge.integrators.compiler", "knifeedge"),
-    ("knifeedge.integrators.compiler", "knifeedge.integrators"),
-    ("knifeedge.integrators.irparts", "knifeedge.integrators.irexpr"),
-}
+#: imports of the integrators that still close a cycle: none since the integrators' rework (issue 25 item 1);
+#: not to be added to.
+INTEGRATOR_CYCLE_IMPORTS: set = set()
 
 #: functions over 80 lines still allowed (``path:qualified name``): shrink this list, never grow it
 LONG_FUNCTIONS_ALLOWED = {
@@ -108,9 +103,9 @@ def test_the_checker_counts_nested_functions_and_methods(tmp_path):
     assert found == {"A.long": 86, "outer": 88, "outer.inner": 86}  # a docstring does not count
 
 
-@pytest.mark.xfail(strict=True, reason="issue 25 item 2: integrators/irexpr.py parses the generated Python (ast) "
-                                       "and integrators/specialize.py writes kernel modules; remove this mark when "
-                                       "the derivation writes every form of the right-hand side")
+@pytest.mark.xfail(strict=True, reason="issue 25 item 2: integrators/specialize.py still writes kernel modules "
+                                       "(the per-tableau driver, the parts, the fixed-step kernels); remove this "
+                                       "mark when the integrators are data run by compiled drivers only")
 def test_the_integrators_neither_parse_nor_write_source():
     assert structure.writes_or_parses_source() == []
 

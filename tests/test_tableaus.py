@@ -1,4 +1,4 @@
-"""Integration methods as data: the tableau checks, the registry, Tsitouras 5(4), and the template's generic bodies.
+"""Integration methods as data: the tableau checks, the registry, Tsitouras 5(4).
 
 Scenes as in test_integrators.py: the single-mode knife edge of the paper's Fig. 'numerical'
 (g = ell = L = D = 1, theta(0) = 1e-3, phi_dot(0) = 0.1), whose spin reversal is at t = 106.361.
@@ -76,9 +76,9 @@ def test_tsit5_satisfies_the_order_conditions():
     assert abs(b_hat @ c1**4 - 1 / 5) > 1e-6  # the estimate is of order 4, not 5
 
 
-def _harmonic(method, rtol, **kw):
+def _harmonic(method, rtol):
     """The stub oscillator q'' = -w^2 q of the templates (w = 2): q(t) = cos(2t), exact at t = 10."""
-    m_solve = specialize.load_kernel("erk", method, _stub, "rhs_q_into", 3, **kw).solve
+    m_solve = specialize.load_kernel("erk", method, _stub, "rhs_q_into", 3).solve
     y0, p = np.array([1.0, 0.0, 0.0]), np.array([2.0])
     ts, ys, ev_t, ev_k = np.empty(2), np.empty((2, 3)), np.empty(64), np.empty(64, dtype=np.int64)
     n_out, n_ev, status, nfev = m_solve(0.0, 10.0, y0, y0, p, rtol, np.full(3, rtol * 1e-3), 0.0, np.inf,
@@ -104,22 +104,6 @@ def test_adaptive_methods_converge_at_their_order(method, order):
     assert 0.7 * order < slope < 1.3 * order + 1, (slope, errs, work)
 
 
-@pytest.mark.xdist_group("generic_parts")  # with test_irparts: one worker compiles the generic-loop parts
-@pytest.mark.parametrize("method", [pytest.param("Tsit5", marks=pytest.mark.slow), pytest.param("DP54", marks=pytest.mark.slow), "DOP853"])
-def test_generic_template_bodies_agree_with_the_unrolled_ones(method):
-    """The template's loops over the tableau (unroll=False) and the straight-line IR parts (irparts) compute
-    the same method: as many steps, and answers equal within the tolerance (their round-off differs, as
-    the unrolled stages use fused multiply-adds, and moves the step sizes, hence the answers at the error level;
-    a wrong coefficient would break the order and miss by orders of magnitude more)."""
-    a, ev_a, n_a = _harmonic(method, 1e-9)
-    b, ev_b, n_b = _harmonic(method, 1e-9, unroll=False)
-    assert n_a == n_b
-    np.testing.assert_allclose(a, b, rtol=1e-8, atol=1e-9)
-    np.testing.assert_allclose(ev_a, ev_b, rtol=1e-9)
-    src = specialize.kernel_source("erk", method, "m", "rhs_q_into", 3, unroll=False)
-    assert "for s in range(1, N_STAGES + 1):" in src and "generic loops" in src
-
-
 @pytest.mark.xdist_group("dp54_tsit5")  # one worker compiles the DP54 and Tsit5 integrators for all such tests
 def test_tsit5_on_the_paper_scene_matches_dop853():
     """Fig. 'numerical': the spin reversal at t = 106.361 and the final state, Tsit5 against DOP853 (an
@@ -134,3 +118,49 @@ def test_tsit5_on_the_paper_scene_matches_dop853():
     assert math.isclose(ts5.reversal_times[0], ref.reversal_times[0], rel_tol=1e-8)
     np.testing.assert_allclose(ts5.y[:, -1], ref.y[:, -1], rtol=1e-6, atol=1e-9)
     assert ts5.nfev < dp5.nfev
+
+
+# -- fixed-step methods as data ------------------------------------------------------------------------------------
+def test_fixed_step_methods_are_registered_data_checked_when_built():
+    """The fixed-step methods are registered tableaus: RK4 (its increment written out in the kernel, recognized
+    by its tableau), the Gauss-Legendre methods of 1-3 stages (Hairer, Lubich & Wanner, Geometric Numerical
+    Integration, Table II.1.1: implicit, rows of A summing to c); a tableau whose rows do not sum to c, or whose
+    weights do not sum to one, is refused when built."""
+    from knifeedge.integrators import COMPILED_METHODS, FIXED_METHODS, FixedMethod
+
+    assert list(FIXED_METHODS)[:4] == ["RK4", "implicit_midpoint", "gauss4", "gauss6"]  # (a test may add more)
+    assert all(COMPILED_METHODS[name].fixed_step for name in FIXED_METHODS)
+    assert FIXED_METHODS["RK4"].is_classical_rk4 and not FIXED_METHODS["RK4"].implicit
+    for name, s in (("implicit_midpoint", 1), ("gauss4", 2), ("gauss6", 3)):
+        m = FIXED_METHODS[name]
+        assert m.implicit and m.stages == s and m.order == 2 * s
+        # the collocation polynomial through the nodes reproduces itself: extrapolating a constant is constant
+        np.testing.assert_allclose(m.extrapolation.sum(axis=1), 1.0, rtol=1e-13)
+    with pytest.raises(ValueError, match="rows of A do not sum to c"):
+        FixedMethod("bad", [[0.0, 0.0], [0.4, 0.0]], [0.5, 0.5], [0.0, 0.5], 2, "rows off")
+    with pytest.raises(ValueError, match="weights b sum to"):
+        FixedMethod("bad", [[0.0, 0.0], [0.5, 0.0]], [0.5, 0.4], [0.0, 0.5], 2, "weights off")
+
+
+def test_an_explicit_tableau_as_data_converges_at_its_order():
+    """An explicit fixed-step method given only as its tableau (Kutta's 3/8 rule, order 4: E. Hairer, S. P.
+    Norsett, G. Wanner, Solving ODEs I, Table II.1.2) runs through the kernel's general stage loops: on the stub
+    oscillator q'' = -4 q its error at t = 10 against cos(20) falls 16-fold when the step halves (order 4)."""
+    from knifeedge.integrators.fixed_methods import FIXED_METHODS, FixedMethod, register_fixed
+
+    name = "kutta38_test"
+    if name not in FIXED_METHODS:
+        register_fixed(FixedMethod(name, [[0, 0, 0, 0], [1 / 3, 0, 0, 0], [-1 / 3, 1, 0, 0], [1, -1, 1, 0]],
+                                   [1 / 8, 3 / 8, 3 / 8, 1 / 8], [0, 1 / 3, 2 / 3, 1], 4, "Kutta's 3/8 rule", 8.0))
+    assert not FIXED_METHODS[name].is_classical_rk4
+    solve = specialize.load_kernel("fixed", name, _stub, "rhs_q_into", 3).solve
+    y0, p = np.array([1.0, 0.0, 0.0]), np.array([2.0])
+    errs = []
+    for n_steps in (200, 400):
+        ts, ys, ev_t, ev_k = np.empty(2), np.empty((2, 3)), np.empty(64), np.empty(64, dtype=np.int64)
+        out = solve(0.0, 10.0, y0, y0, p, 10.0 / n_steps, n_steps, 0, np.full(3, 1e-12), np.array([10.0]), False,
+                    np.empty(0, dtype=np.int64), 10**6, np.full(3, -1), 10**6, np.zeros(3), np.empty((4, 3)),
+                    ts, ys, ev_t, ev_k)
+        assert out[2] == 0 and out[0] == 1
+        errs.append(abs(ys[0, 0] - math.cos(20.0)))
+    assert 16 * 0.8 < errs[0] / errs[1] < 16 * 1.25, errs

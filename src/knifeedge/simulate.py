@@ -438,37 +438,6 @@ def _while_compiling(r: _Run, spec, twin: str, names: tuple, events: np.ndarray,
     return ph
 
 
-def _suspects(g0: float, g1: float, s0: float, s1: float) -> tuple:
-    """``(flag, extrema)`` of one event over a step, as the kernels' ``integrators.common.screen``.
-
-    ``g0``, ``g1``: its values at the ends; ``s0``, ``s1``: its rates times the step.  ``flag`` 1: the signs
-    differ (a crossing); 2: the cubic Hermite interpolant of the four numbers has an extremum inside the step
-    that crosses zero or comes within ``NEAR`` of the larger end value of it (crossings are sampled for);
-    0: neither.  ``extrema``: those extrema (fractions of the step).
-    """
-    from .integrators.common import NEAR
-
-    flag = 1 if g0 != 0.0 and (g1 == 0.0 or (g0 > 0.0) != (g1 > 0.0)) else 0
-    b = 3.0 * (g1 - g0) - 2.0 * s0 - s1
-    a = s0 + s1 - 2.0 * (g1 - g0)
-    big = max(abs(g0), abs(g1))
-    roots = []
-    if a != 0.0:
-        disc = b * b - 3.0 * a * s0
-        if disc >= 0.0:
-            r = math.sqrt(disc)
-            roots = [(-b - r) / (3.0 * a), (-b + r) / (3.0 * a)]
-    elif b != 0.0:
-        roots = [-s0 / (2.0 * b)]
-    crit = []
-    for x in roots:
-        if 0.0 < x < 1.0:
-            v = g0 + x * (s0 + x * (b + x * a))
-            if v * g0 <= 0.0 or v * g1 <= 0.0 or abs(v) < NEAR * big:
-                crit.append(x)
-    return (2 if crit else flag), crit
-
-
 class _Phase:
     """What :func:`_scipy_phase` did: its output rows, crossings and counters, and the solver it stopped."""
 
@@ -489,7 +458,9 @@ def _scipy_phase(r: _Run, scipy_method: str, fun, event_values, stop=None, jac=N
     from scipy import integrate  # imported on use: it adds ~0.3 s to the start-up
     from scipy.optimize import brentq
 
-    from .integrators.common import SAMPLES
+    from .integrators import common
+
+    SAMPLES, screen = common.SAMPLES, common.screen.py_func
 
     solver_class = getattr(integrate, scipy_method)
     model = r.model
@@ -529,6 +500,8 @@ def _scipy_phase(r: _Run, scipy_method: str, fun, event_values, stop=None, jac=N
         return np.array(f if f is not None else fun(solver.t, solver.y), dtype=float)
 
     f_old = rate(solver) if codes else None
+    # the screen's flags and Hermite extrema, as the kernels keep them
+    crit, n_crit, flag = np.zeros((len(codes), 2)), np.zeros(len(codes), dtype=np.int64), np.zeros(len(codes), dtype=np.int64)
     y_prev = r.y0.copy()
     next_ask = time.perf_counter() + 0.05
     done = True
@@ -556,12 +529,13 @@ def _scipy_phase(r: _Run, scipy_method: str, fun, event_values, stop=None, jac=N
             f_new = rate(solver)
             ga, sa = values(y_prev, f_old, h)
             gb, sb = values(y, f_new, h)
+            screen(ga, gb, sa, sb, crit, n_crit, flag)  # the kernels' rule, run here by Python: nothing to compile
             for k, (e, c) in enumerate(zip(names, codes)):
-                flag, crit = _suspects(ga[k], gb[k], sa[k], sb[k])
-                if not flag:
+                if not flag[k]:
                     continue
                 sol = sol or solver.dense_output()
-                xs = [0.0] + (sorted({m / SAMPLES for m in range(1, SAMPLES)} | set(crit)) if flag == 2 else [])
+                extrema = set(crit[k, :n_crit[k]].tolist())
+                xs = [0.0] + (sorted({m / SAMPLES for m in range(1, SAMPLES)} | extrema) if flag[k] == 2 else [])
                 gs = [ga[k]] + [at(sol, c, t_old + x * h) for x in xs[1:]]
                 xs.append(1.0)
                 gs.append(gb[k])

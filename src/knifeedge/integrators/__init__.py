@@ -13,6 +13,7 @@ from dataclasses import dataclass
 from . import dop853_tableau, rk_tableaus, tsit5
 from .specialize import cache_dir, call_repairing, is_compiled, load_kernel
 from .status import Status, from_code
+from .fixed_methods import FIXED_METHODS, FixedMethod, register_fixed
 from .tableau import TABLEAUS, ExplicitTableau, register
 from .common import SAMPLES as _SAMPLES
 from .compiler import compile_mode, set_compile_mode
@@ -34,7 +35,7 @@ class CompiledMethod:
     ----------
     name : str
     template : str  -- kernel template (``"erk"`` adaptive, ``"fixed"`` fixed step)
-    variant : str or int -- the registered tableau (``erk``) or the variant number (``fixed``)
+    variant : str -- the registered method (an ``ExplicitTableau`` or a ``FixedMethod``)
     order : int     -- classical order of accuracy
     fixed_step : bool -- needs a step ``h`` instead of tolerances
     description : str
@@ -52,10 +53,7 @@ COMPILED_METHODS = {
     m.name: m
     for m in (
         *(CompiledMethod(t.name, "erk", t.name, t.order, False, t.description) for t in TABLEAUS.values()),
-        CompiledMethod("RK4", "fixed", 0, 4, True, "classical Runge-Kutta, fixed step"),
-        CompiledMethod("implicit_midpoint", "fixed", 1, 2, True, "implicit midpoint rule (Gauss-Legendre, 1 stage)"),
-        CompiledMethod("gauss4", "fixed", 2, 4, True, "Gauss-Legendre collocation, 2 stages, order 4"),
-        CompiledMethod("gauss6", "fixed", 3, 6, True, "Gauss-Legendre collocation, 3 stages, order 6"),
+        *(CompiledMethod(m.name, "fixed", m.name, m.order, True, m.description) for m in FIXED_METHODS.values()),
     )
 }
 #: other accepted names of compiled methods
@@ -131,7 +129,9 @@ def _announced(solve, label: str):
     return first_call
 
 
-__all__ = ["COMPILED_METHODS", "ALIASES", "EVENTS_PER_STEP", "CompiledMethod", "ExplicitTableau", "Status", "TABLEAUS",
+__all__ = ["COMPILED_METHODS", "ALIASES", "EVENTS_PER_STEP", "CompiledMethod", "ExplicitTableau", "FIXED_METHODS",
+           "FixedMethod", "Status", "TABLEAUS",
            "cache_dir",
            "call_repairing", "compile_mode", "from_code", "kernel", "kernel_compiled", "kernel_module", "register",
+           "register_fixed",
            "set_compile_mode", "use_compiled"]

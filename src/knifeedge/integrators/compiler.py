@@ -143,17 +143,12 @@ def _write_lock(lock: Path, pid: int) -> None:
 
 def argument_types(kernel_module, args: tuple) -> tuple:
     """numba's types of what ``kernel_module.solve(*args)`` compiles, found without compiling anything."""
-    if hasattr(kernel_module, "argument_types"):  # the model's parts of the shared adaptive integrator
-        return kernel_module.argument_types(args)
-    return tuple(kernel_module.solve.typeof_pyval(a) for a in args)
+    return kernel_module.argument_types(args)
 
 
 def compile_types(kernel_module, arg_types: tuple) -> None:
     """Compile (or load from the cache) ``kernel_module``'s code for :func:`argument_types` ``arg_types``."""
-    if hasattr(kernel_module, "compile_types"):
-        kernel_module.compile_types(arg_types)
-    else:
-        kernel_module.solve.compile(arg_types)
+    kernel_module.compile_types(arg_types)
 
 
 def start(model, method: str, kernel_module, arg_types: tuple) -> Pending:
@@ -171,7 +166,8 @@ def start(model, method: str, kernel_module, arg_types: tuple) -> Pending:
         return Pending(kernel_module, path, None, started=False)
     lock.unlink(missing_ok=True)
     job = {
-        "kernel": str(path), "method": method,
+        "kernel": str(path), "method": method, "template": "erk",
+        "variant": kernel_module.TABLEAU, "rhs": kernel_module.RHS_NAME,
         "model": model.module.MODEL, "fidelity": model.module.FIDELITY, "pose": bool(model.pose),
         "path": str(model.source_path.parent) if model.source_path is not None else None,
         "types": base64.b64encode(pickle.dumps(tuple(arg_types))).decode(),
@@ -193,11 +189,11 @@ def _main() -> int:
     job = json.loads(sys.stdin.read())
     path = Path(job["kernel"])
     try:
-        from .. import load
-        from . import kernel_module
+        from ..models import load
+        from .specialize import load_kernel
 
         model = load(job["model"], fidelity=job["fidelity"], pose=job["pose"], path=job["path"])
-        module = kernel_module(model, job["method"])
+        module = load_kernel(job["template"], job["variant"], model.module, job["rhs"], model.n_state)
         if Path(module.__file__) != path:
             raise RuntimeError(f"the kernel of this process is {module.__file__}, not {path}")
         compile_types(module, pickle.loads(base64.b64decode(job["types"])))

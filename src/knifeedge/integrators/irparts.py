@@ -18,10 +18,8 @@ is summed as ``y + (h a_0) K_0 + (h a_1) K_1 + ...``, oldest stage first, so
 that only the last term waits for the stage just computed (the chain of
 dependent operations between two right-hand-side calls is one fused
 multiply-add); the error norm and the interpolant sum ``0.0 + (c_0 K_0 +
-c_1 K_1 + ...)``.  The template's loops over the tableau
-(``erk_parts.attempt`` and ``erk_parts.dense``, compiled by numba for a
-kernel written with ``unroll=False``) compute the same method and differ by
-round-off; the tests call both on one workspace (``tests/test_irparts.py``).
+c_1 K_1 + ...)``.  ``tests/test_irparts.py`` compares them with the same
+method as plain loops over the tableau in numpy, on one workspace.
 
 A right-hand side that fails (numba's status nonzero) makes ``attempt``
 return NaN, so the step is rejected and the run ends with the step-size
@@ -56,7 +54,7 @@ DENSE_ARGS = ("double %t", "double %h", "ptr %ws", "i64 %nq")
 #: the flags of every floating-point operation of the two parts (numba's ``fastmath={"contract"}``)
 FLAGS = "contract"
 #: the version of what this module writes (part of the cache key)
-FORMAT = 3
+FORMAT = 4
 #: the first bytes of a compiled-parts file
 MAGIC = b"knifeedge compiled parts\n"
 _NAN = "0x7FF8000000000000"
@@ -264,12 +262,10 @@ def module_ir(tab: Tableau, n: int, nq: int, names: tuple, rhs: str, rhs_definit
               extra: str = "") -> str:
     """The IR module of both parts (``names``: the symbols of ``attempt`` and ``dense``, and optionally of a
     C-callable ``rhs`` part) for ``tab`` on ``n`` states and ``nq`` constants, calling the right-hand side
-    ``rhs`` (numba's calling convention): defined by ``rhs_definition`` (its IR, :func:`.irexpr.rhs_ir`), or
+    ``rhs`` (numba's calling convention): defined by ``rhs_definition`` (its IR, from the generated module), or
     else declared (numba's compiled ``rhs`` part, linked in).  Every call of it is inlined (``alwaysinline``:
     measured on the two-mode model, a call left in costs 7-9 % per evaluation).  ``extra``: more
     definitions (their declarations of intrinsics merged with the parts')."""
-    from .irexpr import c_wrapper_ir
-
     lines = rhs_definition.splitlines()
     more = extra.splitlines()
     declarations = sorted({x for x in lines + more if x.startswith("declare ")}
@@ -334,65 +330,76 @@ def symbols(kernel_file) -> tuple:
 
 
 def _extras_ir(names: tuple, constants: str, reads: int) -> str:
-    """``constants`` (its IR, or "") with the function returning ``reads``, and the ``events`` part that
-    does nothing (for a model without event functions: the integrator never calls it)."""
+    """The model's ``constants`` (its IR from the generated module, or "") exported as ``names[3]``, with the
+    function returning ``reads``, and the ``events`` part that does nothing (for a model without event
+    functions: the integrator never calls it)."""
     text = f'define void @"{names[5]}"(ptr %s, ptr %p, i64 %n_p, ptr %out) {{\nentry:\n  ret void\n}}\n'
     if constants:
-        text += constants + f'define i64 @"{names[4]}"() {{\nentry:\n  ret i64 {reads}\n}}\n'
+        text += (constants + f'define void @"{names[3]}"(ptr %p, ptr %q) {{\nentry:\n'
+                 f'  call void @"constants"(ptr %p, ptr %q)\n  ret void\n}}\n'
+                 f'define i64 @"{names[4]}"() {{\nentry:\n  ret i64 {reads}\n}}\n')
     return text
 
 
-def load_or_compile(kernel_file, tableau: str, n: int, nq: int, rhs_source, rhs_cfunc,
-                    constants_source=None) -> tuple:
-    """``(library, addresses)`` of the kernel module ``kernel_file``'s parts, loaded from :func:`cache_file`,
-    or compiled from :func:`module_ir` and saved there; ``addresses`` are those of :func:`symbols` (0 for
-    ``constants`` and its count where it could not be written as IR).
+def c_wrapper_ir(native: str, symbol: str) -> str:
+    """A C-callable ``void symbol(double t, double* y, double* q, int64 nq, double* out)`` calling ``native``
+    (the ``rhs`` part's address for the integrator's own calls: the initial step)."""
+    return (f'define void @"{symbol}"(double %t, ptr %y, ptr %q, i64 %nq, ptr %out) {{\nentry:\n'
+            f"  %ret = alloca ptr\n  %exc = alloca ptr\n"
+            f'  %status = call i32 @"{native}"(ptr %ret, ptr %exc, double %t, ptr %y, ptr %q, i64 %nq, ptr %out)\n'
+            f"  ret void\n}}\n")
 
-    The right-hand side is ``rhs_source`` (the generated ``rhs_q_into``) written as IR by
-    :func:`.irexpr.rhs_ir`; when that cannot write it, numba's compiled ``rhs`` part (``rhs_cfunc()``, a
-    ``numba.cfunc``) linked in.  ``constants_source`` (the generated ``constants``) is written by
-    :func:`.irexpr.constants_ir` when it can.  A cache file that cannot be read is removed, said in one line
-    on stderr, and compiled again.
-    """
-    from .irexpr import Unsupported, constants_ir, rhs_ir
 
+def _load(path: Path, names: tuple):
+    """``(library, addresses)`` kept in ``path``, or None (a file that cannot be used is removed, said on stderr)."""
     from numba.core.compiler_lock import global_compiler_lock
 
+    if not path.exists():
+        return None
+    try:
+        serialized = read_parts(path)
+        with global_compiler_lock:
+            lib = _codegen().unserialize_library(serialized)
+            addresses = [lib.get_pointer_to_function(x) for x in names]
+        if all(addresses[:3]) and addresses[5] and bool(addresses[3]) == bool(addresses[4]):
+            return lib, addresses
+        problem = "it lacks the parts' symbols"
+    except Exception as exc:  # noqa: BLE001 - any unreadable file is compiled again
+        problem = f"{type(exc).__name__}: {exc}" if not isinstance(exc, _Refused) else str(exc)
+    path.unlink(missing_ok=True)
+    print(f"knifeedge: discarded a damaged compiled-parts cache file {path} ({problem}); compiling it again",
+          file=sys.stderr, flush=True)
+    return None
+
+
+def load_or_compile(kernel_file, tableau: str, n: int, nq: int, model, rhs_name: str, rhs_cfunc) -> tuple:
+    """``(library, addresses)`` of the kernel module ``kernel_file``'s parts, loaded from :func:`cache_file`,
+    or compiled from :func:`module_ir` and saved there; ``addresses`` are those of :func:`symbols` (0 for
+    ``constants`` and its count where the model has no IR of it).
+
+    The right-hand side ``rhs_name`` and ``constants`` are the IR the generated ``model`` carries
+    (``model.LLVM_IR``, written at derive time by ``derivation/ir_emit.py``); a right-hand side it does not
+    carry is numba's compiled ``rhs`` part (``rhs_cfunc()``, a ``numba.cfunc``) linked in.  A cache file that
+    cannot be read is removed, said in one line on stderr, and compiled again.
+    """
     path = cache_file(kernel_file)
     names = symbols(kernel_file)
-    if path.exists():
-        try:
-            serialized = read_parts(path)
-            with global_compiler_lock:
-                lib = _codegen().unserialize_library(serialized)
-                addresses = [lib.get_pointer_to_function(x) for x in names]
-            if all(addresses[:3]) and addresses[5] and bool(addresses[3]) == bool(addresses[4]):
-                return lib, addresses
-            problem = "it lacks the parts' symbols"
-        except Exception as exc:  # noqa: BLE001 - any unreadable file is compiled again
-            problem = f"{type(exc).__name__}: {exc}" if not isinstance(exc, _Refused) else str(exc)
-        path.unlink(missing_ok=True)
-        print(f"knifeedge: discarded a damaged compiled-parts cache file {path} ({problem}); compiling it again",
-              file=sys.stderr, flush=True)
-    native = f"knifeedge.rhs_native.{Path(kernel_file).stem}"
-    try:
-        definition, link = rhs_ir(rhs_source, native), []
-    except Unsupported:
+    loaded = _load(path, names)
+    if loaded is not None:
+        return loaded
+    ir = getattr(model, "LLVM_IR", {})
+    if rhs_name in ir:
+        native, definition, link = rhs_name, ir[rhs_name], []
+    else:
         compiled = rhs_cfunc()
         native = compiled.native_name
         if not native.startswith("cfunc."):
             raise RuntimeError(f"unexpected symbol of a compiled C callback: {native!r}") from None
-        native = native[len("cfunc."):]
-        definition, link = "", [compiled._library]
-    constants, reads = "", 0
-    if constants_source is not None:
-        try:
-            constants, reads = constants_ir(constants_source, names[3], nq)
-        except Unsupported:
-            pass
-    text = module_ir(Tableau(tableau), n, nq, names[:3], native, definition, _extras_ir(names, constants, reads))
+        native, definition, link = native[len("cfunc."):], "", [compiled._library]
+    extras = _extras_ir(names, ir.get("constants", ""), getattr(model, "LLVM_IR_READS", 0))
+    text = module_ir(Tableau(tableau), n, nq, names[:3], native, definition, extras)
     lib = compile_library(text, f"knifeedge_parts_{Path(kernel_file).stem}", link)
-    addresses = [lib.get_pointer_to_function(x) if i < 3 or i == 5 or constants else 0
+    addresses = [lib.get_pointer_to_function(x) if i < 3 or i == 5 or "constants" in ir else 0
                  for i, x in enumerate(names)]
     write_parts(path, lib.serialize_using_object_code())
     return lib, addresses

@@ -7,10 +7,8 @@ line by the state size (a compile-time constant, so LLVM unrolls the loops
 over the state).  For the adaptive methods the kernel module is the model's
 parts (``templates/erk_parts.py``: ``# knifeedge:nv`` and ``# knifeedge:nq``
 become its number of event functions and the size of its ``constants(p)``,
-``# knifeedge:driver`` the import of the integrator, and ``# knifeedge:ir``
-says whether its stages and interpolant are written as LLVM IR from the
-tableau, :mod:`.irparts`, or compiled by numba from the template's loops
-over the tableau, ``unroll=False``).  The integrator they serve
+``# knifeedge:driver`` the import of the integrator; its stages and
+interpolant are LLVM IR, :mod:`.irparts`).  The integrator they serve
 (``templates/erk.py``, one per method for every model, its ``power`` block
 the step-size controller's power) is written by :func:`driver_source`.
 Each module is written once to ``<cache>/kernels/`` under a name carrying a
@@ -50,7 +48,6 @@ RHS_MARK = "# knifeedge:rhs"
 DRIVER_MARK = "# knifeedge:driver"
 NV_MARK = "# knifeedge:nv"
 NQ_MARK = "# knifeedge:nq"
-IR_MARK = "# knifeedge:ir"
 VARIANT_MARK = "# knifeedge:variant"
 N_MARK = "# knifeedge:n"
 EVENTS_MARK = "# knifeedge:event_values"
@@ -129,15 +126,11 @@ def _private_folder(path: Path, follow: bool = False) -> None:
         raise PermissionError(f"refused {path}: others may write to it (mode {stat.S_IMODE(st.st_mode):o})")
 
 
-def kernel_source(template: str, variant, rhs_module: str, rhs_name: str, n_state: int, unroll: bool = True,
-                  has_events: bool = False, driver: str = "knifeedge.integrators.templates.erk",
-                  n_events: int = 0, n_constants: int = 1) -> str:
+def kernel_source(template: str, variant, rhs_module: str, rhs_name: str, n_state: int, has_events: bool = False,
+                  driver: str = "knifeedge.integrators.templates.erk", n_events: int = 0, n_constants: int = 1) -> str:
     """Text of the kernel module for a template specialized to ``rhs_module.rhs_name`` on ``n_state`` states.
 
-    ``unroll=False`` has numba compile the template's generic loops over the
-    tableau instead of the straight-line LLVM IR of :mod:`.irparts` (same
-    algorithm; the tests compare the two).  ``has_events``: the module
-    defines ``n_events`` event functions (``EVENT_NAMES``, ``event_values(s,
+    ``has_events``: the module defines ``n_events`` event functions (``EVENT_NAMES``, ``event_values(s,
     p)``), which the kernel then locates besides state components.  For
     ``erk`` the module holds the model's parts of the integrator, the module
     ``driver`` (see :func:`driver_source`); ``n_constants`` is the size of the model's ``constants(p)``.
@@ -158,9 +151,6 @@ def kernel_source(template: str, variant, rhs_module: str, rhs_name: str, n_stat
         elif template == "erk" and line.startswith("NQ =") and NQ_MARK in line:
             line = f"NQ = {int(n_constants)}  {NQ_MARK}"
             seen.add(NQ_MARK)
-        elif template == "erk" and line.startswith("IR =") and IR_MARK in line:
-            line = f"IR = {bool(unroll)}  {IR_MARK}"
-            seen.add(IR_MARK)
         elif line.rstrip().endswith(RHS_MARK):
             line = f"from {rhs_module} import constants as _constants, {rhs_name} as _rhs  {RHS_MARK}"
             seen.add(RHS_MARK)
@@ -170,19 +160,19 @@ def kernel_source(template: str, variant, rhs_module: str, rhs_name: str, n_stat
             seen.add(EVENTS_MARK)
         elif VARIANT_MARK in line:
             line = (f"TABLEAU = {str(variant)!r}  {VARIANT_MARK}" if template == "erk"
-                    else f"VARIANT = {int(variant)}  {VARIANT_MARK}")
+                    else f"METHOD = {str(variant)!r}  {VARIANT_MARK}")
             seen.add(VARIANT_MARK)
         elif N_MARK in line and line.startswith("N ="):
             line = f"N = {n_state}  {N_MARK}"
             seen.add(N_MARK)
         out.append(line)
-    if seen != {RHS_MARK, VARIANT_MARK, N_MARK, EVENTS_MARK} | ({DRIVER_MARK, NV_MARK, NQ_MARK, IR_MARK} if template == "erk" else set()):
+    if seen != {RHS_MARK, VARIANT_MARK, N_MARK, EVENTS_MARK} | ({DRIVER_MARK, NV_MARK, NQ_MARK} if template == "erk" else set()):
         raise RuntimeError(f"kernel template {template}.py lacks one of its {RHS_MARK!r}, {VARIANT_MARK!r}, "
                            f"{N_MARK!r}, {EVENTS_MARK!r} lines")
     if template == "fixed":
         out = _event_blocks(out, has_events)
     header = (f"# Specialized kernel: template {template}.py, variant {variant}, rhs {rhs_module}.{rhs_name}, "
-              f"{n_state} states{'' if unroll else ', generic loops'}.\n")
+              f"{n_state} states.\n")
     return header + "\n".join(out) + "\n"
 
 
@@ -473,8 +463,7 @@ def call_repairing(fn, *args):
     return fn(*args)
 
 
-def load_kernel(template: str, variant, rhs_module: ModuleType, rhs_name: str, n_state: int,
-                unroll: bool = True) -> ModuleType:
+def load_kernel(template: str, variant, rhs_module: ModuleType, rhs_name: str, n_state: int) -> ModuleType:
     """Import (writing it first if needed) the kernel module for a model's right-hand side.
 
     For ``erk`` the adaptive integrator shared by every model (one module per
@@ -489,11 +478,10 @@ def load_kernel(template: str, variant, rhs_module: ModuleType, rhs_name: str, n
         dstem = f"erk{variant}_driver_{_key(dsource, None)}"
         driver = f"knifeedge_driver_{dstem}"
         _import(dstem, dsource, driver)
-    source = kernel_source(template, variant, rhs_module.__name__, rhs_name, n_state, unroll,
-                           has_events=bool(names), driver=driver, n_events=len(names),
-                           n_constants=_n_constants(rhs_module))
+    source = kernel_source(template, variant, rhs_module.__name__, rhs_name, n_state, has_events=bool(names),
+                           driver=driver, n_events=len(names), n_constants=_n_constants(rhs_module))
     key = _key(source, rhs_module.__file__)
-    stem = f"{template}{variant}{'' if unroll else 'g'}_{rhs_module.__name__.rsplit('.', 1)[-1]}_{rhs_name}_{key}"
+    stem = f"{template}{variant}_{rhs_module.__name__.rsplit('.', 1)[-1]}_{rhs_name}_{key}"
     return _import(stem, source, f"knifeedge_kernels.{stem}")
 
 

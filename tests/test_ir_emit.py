@@ -1,16 +1,19 @@
-"""A generated right-hand side written as LLVM IR (knifeedge.integrators.irexpr) computes what numba's
-compilation of the same Python computes, bit for bit: the same operations in the same order, no fast-math
-flags, numba's square-and-multiply for integer powers (numba/cpython/numbers.py, ``static_power_impl``)."""
+"""A generated right-hand side written as LLVM IR at derive time (derivation/ir_emit.py, carried by every
+generated module as ``LLVM_IR``) computes what numba's compilation of the same Python computes, bit for bit:
+the same operations in the same order, no fast-math flags, numba's square-and-multiply for integer powers
+(numba/cpython/numbers.py, ``static_power_impl``)."""
 import ctypes
 import importlib
+import inspect
 import math
 
 import numpy as np
 import pytest
 from numba import njit
 
+from knifeedge.derive import ir_emit
 from knifeedge.generated import MODULES
-from knifeedge.integrators import irexpr, irparts
+from knifeedge.integrators import irparts
 
 _P = ctypes.c_void_p
 RHS = ctypes.CFUNCTYPE(None, ctypes.c_double, _P, _P, ctypes.c_int64, _P)
@@ -23,18 +26,26 @@ KEYS = [key if MODULES[key] == "two_mode_full" else pytest.param(key, marks=pyte
         for key in sorted(MODULES)]
 
 
-def _compiled(func, name):
-    """The C-callable rhs of ``func`` written as IR and compiled, and the library holding it."""
-    native = f"test.native.{name}"
-    text = irexpr.rhs_ir(func, native) + irexpr.c_wrapper_ir(native, f"test.c.{name}")
-    lib = irparts.compile_library(text, f"test_irexpr_{name}", [])
+def _source(func):
+    """The parsed source of ``func`` (a Python function or a numba dispatcher)."""
+    py = getattr(func, "py_func", func)
+    return ir_emit.functions(inspect.getsource(py))[py.__name__]
+
+
+def _compiled(text, native, name):
+    """The C-callable rhs of the IR ``text`` (defining ``native``) compiled, and the library kept."""
+    text = text + irparts.c_wrapper_ir(native, f"test.c.{name}")
+    lib = irparts.compile_library(text, f"test_ir_emit_{name}", [])
     _KEEP.append(lib)
     return RHS(lib.get_pointer_to_function(f"test.c.{name}"))
 
 
-def _both(func, name, t, s, q, n_out):
+def _both(func, name, t, s, q, n_out, text=None):
+    """The IR's result (``text``, else ``func`` written as IR now) and numba's, at ``(t, s, q)``."""
     ir = np.full(n_out, np.nan)
-    _compiled(func, name)(t, s.ctypes.data, q.ctypes.data, q.size, ir.ctypes.data)
+    native = func.py_func.__name__ if text is not None else f"test.native.{name}"
+    text = text if text is not None else ir_emit.rhs_ir(_source(func), native)
+    _compiled(text, native, name)(t, s.ctypes.data, q.ctypes.data, q.size, ir.ctypes.data)
     nb = np.full(n_out, np.nan)
     func(t, s, q, nb)
     return ir, nb
@@ -42,20 +53,23 @@ def _both(func, name, t, s, q, n_out):
 
 @pytest.mark.parametrize("key", KEYS, ids="_".join)
 def test_generated_right_hand_sides_are_written_and_agree_bit_for_bit(key):
-    """Every generated module's rhs_q_into (and rhs_pose_q_into) is straight-line code the writer takes,
-    and at random states and parameters the IR gives numba's result exactly (NaN where numba's does)."""
+    """Every generated module carries the IR of its rhs_q_into (and rhs_pose_q_into): straight-line code the
+    writer takes, and at random states and parameters that IR gives numba's result exactly (NaN where numba's
+    does); it is the IR written from the module's own text now (not stale)."""
     mod = importlib.import_module(f"knifeedge.generated.{MODULES[key]}")
     rng = np.random.default_rng(sum(map(ord, MODULES[key])))
     names = ["rhs_q_into"] + (["rhs_pose_q_into"] if hasattr(mod, "rhs_pose_q_into") else [])
     n, n_pose = len(mod.STATE_NAMES), len(getattr(mod, "POSE_NAMES", ()))
     for name in names:
         func = getattr(mod, name)
+        assert mod.LLVM_IR[name] == ir_emit.rhs_ir(_source(func), name)
         size = n + (n_pose if name == "rhs_pose_q_into" else 0)
         for _ in range(3):
             p = rng.uniform(0.5, 2.0, len(mod.PARAM_NAMES))
             q = mod.constants(p)
             s = rng.uniform(-0.6, 0.6, size)
-            ir, nb = _both(func, f"{MODULES[key]}_{name}", float(rng.uniform(0, 10)), s, q, size)
+            ir, nb = _both(func, f"{MODULES[key]}_{name}", float(rng.uniform(0, 10)), s, q, size,
+                           mod.LLVM_IR[name])
             assert np.isfinite(nb).any()
             np.testing.assert_array_equal(ir.view(np.int64), nb.view(np.int64))
 
@@ -65,14 +79,16 @@ CONSTANTS = ctypes.CFUNCTYPE(None, _P, _P)
 
 @pytest.mark.parametrize("key", KEYS, ids="_".join)
 def test_generated_constants_are_written_and_agree_bit_for_bit(key):
-    """Every generated module's constants(p) is written as IR (reading exactly the model's parameters) and
+    """Every generated module carries its constants(p) as IR (reading exactly the model's parameters), which
     gives numba's result exactly at random parameters."""
     mod = importlib.import_module(f"knifeedge.generated.{MODULES[key]}")
     rng = np.random.default_rng(1 + sum(map(ord, MODULES[key])))
     nq = mod.constants(rng.uniform(0.5, 2.0, len(mod.PARAM_NAMES))).size
-    text, reads = irexpr.constants_ir(mod.constants, f"test.constants.{MODULES[key]}", nq)
-    assert reads == len(mod.PARAM_NAMES)
-    lib = irparts.compile_library(text, f"test_irexpr_constants_{MODULES[key]}", [])
+    assert mod.LLVM_IR_READS == len(mod.PARAM_NAMES)
+    assert ir_emit.constants_ir(_source(mod.constants), "constants", nq) == (mod.LLVM_IR["constants"], mod.LLVM_IR_READS)
+    text = (mod.LLVM_IR["constants"] + f'define void @"test.constants.{MODULES[key]}"(ptr %p, ptr %q) {{\n'
+            'entry:\n  call void @"constants"(ptr %p, ptr %q)\n  ret void\n}\n')
+    lib = irparts.compile_library(text, f"test_ir_emit_constants_{MODULES[key]}", [])
     _KEEP.append(lib)
     fn = CONSTANTS(lib.get_pointer_to_function(f"test.constants.{MODULES[key]}"))
     for _ in range(3):
@@ -80,8 +96,8 @@ def test_generated_constants_are_written_and_agree_bit_for_bit(key):
         q = np.full(nq, np.nan)
         fn(p.ctypes.data, q.ctypes.data)
         np.testing.assert_array_equal(q.view(np.int64), mod.constants(p).view(np.int64))
-    with pytest.raises(irexpr.Unsupported):  # another size than the one it allocates
-        irexpr.constants_ir(mod.constants, "x", nq + 1)
+    with pytest.raises(ir_emit.Unsupported):  # another size than the one it allocates
+        ir_emit.constants_ir(_source(mod.constants), "x", nq + 1)
 
 
 def test_a_kernel_checks_the_parameters_its_ir_constants_read():
@@ -90,8 +106,8 @@ def test_a_kernel_checks_the_parameters_its_ir_constants_read():
     from knifeedge.integrators import specialize
     from knifeedge.integrators.templates import _stub
 
-    with pytest.raises(irexpr.Unsupported):
-        irexpr.constants_ir(_stub.constants, "x", 2)
+    with pytest.raises(ir_emit.Unsupported):
+        ir_emit.constants_ir(_source(_stub.constants), "x", 2)
     mod = importlib.import_module("knifeedge.generated.single_mode_full")
     kernel = specialize.load_kernel("erk", "DOP853", mod, "rhs_q_into", len(mod.STATE_NAMES))
     p = np.array([1.0, 1.0, 1.0, 1.0])
@@ -148,5 +164,5 @@ def test_what_is_not_straight_line_arithmetic_is_refused(func):
     """A branch, a function the writer does not know, a name bound twice: Unsupported, so that the kernel
     uses numba's compilation of the right-hand side instead (tests/test_irparts.py runs a model whose
     right-hand side raises through that path)."""
-    with pytest.raises(irexpr.Unsupported):
-        irexpr.rhs_ir(func, "x")
+    with pytest.raises(ir_emit.Unsupported):
+        ir_emit.rhs_ir(_source(func), "x")

@@ -1,4 +1,12 @@
-"""A generated model's right-hand side as LLVM IR, written from its Python source.
+"""A generated model's right-hand side as LLVM IR, written at derive time from the module's Python.
+
+:func:`with_ir` is the emitter's last step before a module is sealed
+(``emit.write_all``): it reads the module text it was given and appends
+``LLVM_IR``, the IR of its ``rhs_q_into``, ``rhs_pose_q_into`` and
+``constants`` where they can be written so (a function left out is one the
+runtime compiles with numba instead), and ``LLVM_IR_READS``, the number of
+parameters that ``constants`` reads.  The runtime hands these strings to
+LLVM (``knifeedge.integrators.irparts``); it never parses source.
 
 The generated ``rhs_q_into(t, s, q, ds)`` (and ``rhs_pose_q_into``) is
 straight-line arithmetic: names bound once, ``s[i]`` and ``q[i]`` read,
@@ -8,7 +16,7 @@ lowering cost about a millisecond per operation); LLVM, given the same
 operations as IR, a few milliseconds.  :func:`rhs_ir` writes that IR with
 the operations numba would emit, in the same order and without fast-math
 flags, so that the result is the one numba's compilation computes, bit for
-bit (checked for every generated module by ``tests/test_irexpr.py``):
+bit (checked for every generated module by ``tests/test_ir_emit.py``):
 
 - ``a + b``, ``a - b``, ``a * b``, ``a / b``: one ``fadd``, ``fsub``, ``fmul``,
   ``fdiv`` in double precision; integer literals are converted exactly;
@@ -23,16 +31,24 @@ would raise (which a compiled callback cannot pass on): the integrator sees
 a non-finite error norm and rejects the step.
 
 Anything else (a branch, a call of another function) raises
-:class:`Unsupported`; the caller then uses numba's compilation instead.
+:class:`Unsupported`; that function is then left out of ``LLVM_IR``.
+
+Every function is defined ``internal`` under its Python name (``@"rhs_q_into"``, ...): the runtime links it
+into a library of its own that calls it (and inlines it), so equal names in several libraries never clash.
 """
 from __future__ import annotations
 
 import ast
-import inspect
 import math
-import textwrap
+import struct
 
-from .irparts import literal
+#: the functions of a generated module written as IR, when it has them and they are straight-line
+FUNCTIONS = ("rhs_q_into", "rhs_pose_q_into", "constants")
+
+
+def literal(x: float) -> str:
+    """``x`` as an exact LLVM IR double literal."""
+    return "0x%016X" % struct.unpack("<Q", struct.pack("<d", float(x)))[0]
 
 #: math functions and the LLVM intrinsic that numba's compilation calls for each
 _INTRINSICS = {"sin": "llvm.sin.f64", "cos": "llvm.cos.f64", "sqrt": "llvm.sqrt.f64", "exp": "llvm.exp.f64",
@@ -160,19 +176,17 @@ class _Body:
         raise Unsupported(ast.unparse(node))
 
 
-def _function_def(func, args: list) -> ast.FunctionDef:
-    """The parsed source of ``func`` (a numba dispatcher or a Python function), whose parameters must be
-    exactly ``args``."""
-    py = getattr(func, "py_func", func)
-    try:
-        tree = ast.parse(textwrap.dedent(inspect.getsource(py)))
-    except (OSError, TypeError, SyntaxError) as exc:
-        raise Unsupported(f"no source ({exc})") from None
-    fn = tree.body[0]
+def _function_def(fn: ast.FunctionDef, args: list) -> ast.FunctionDef:
+    """``fn`` (a parsed function), whose parameters must be exactly ``args``."""
     if not isinstance(fn, ast.FunctionDef) or [a.arg for a in fn.args.args] != args \
             or fn.args.vararg or fn.args.kwarg or fn.args.kwonlyargs or fn.args.defaults:
         raise Unsupported(f"not a function of ({', '.join(args)})")
     return fn
+
+
+def functions(source: str) -> dict:
+    """The top-level functions of the module text ``source``, by name (parsed, not run)."""
+    return {node.name: node for node in ast.parse(source).body if isinstance(node, ast.FunctionDef)}
 
 
 def _text(head: str, body: _Body, ret: str) -> str:
@@ -182,9 +196,9 @@ def _text(head: str, body: _Body, ret: str) -> str:
     return head + "\n".join(body.lines + [f"  {ret}", "}"]) + "\n" + "\n".join(declarations) + "\n"
 
 
-def rhs_ir(func, symbol: str) -> str:
-    """The IR of ``func(t, s, q, ds)`` (a generated ``rhs_q_into``; a numba dispatcher or a Python function),
-    as the function ``symbol`` with numba's native calling convention for the arguments ``(t, s, q, nq, ds)``
+def rhs_ir(func: ast.FunctionDef, symbol: str) -> str:
+    """The IR of ``func(t, s, q, ds)`` (a generated ``rhs_q_into``, parsed: :func:`functions`),
+    as the internal function ``symbol`` with numba's native calling convention for the arguments ``(t, s, q, nq, ds)``
     (``i32 (ptr retptr, ptr excinfo, double, ptr, ptr, i64, ptr)``, returning 0), followed by the declarations
     of the intrinsics it calls.  Raises :class:`Unsupported` for what it cannot write."""
     fn = _function_def(func, ["t", "s", "q", "ds"])
@@ -193,14 +207,14 @@ def rhs_ir(func, symbol: str) -> str:
         if isinstance(node, ast.Return) and node.value is None:
             continue
         body.statement(node)
-    head = (f'define i32 @"{symbol}"(ptr nocapture %ret, ptr nocapture %exc, double %t, '
+    head = (f'define internal i32 @"{symbol}"(ptr nocapture %ret, ptr nocapture %exc, double %t, '
             f"ptr nocapture %s, ptr nocapture %q, i64 %nq, ptr nocapture %ds) {{\nentry:\n")
     return _text(head, body, "ret i32 0")
 
 
-def constants_ir(func, symbol: str, nq: int) -> tuple:
-    """The IR of a generated ``constants(p)`` (``q = np.empty(nq)``, ``q[i] = ...``, ``return q``) as the
-    C-callable ``void symbol(double* p, double* q)`` writing into ``q``, and the number of parameters it
+def constants_ir(func: ast.FunctionDef, symbol: str, nq: int) -> tuple:
+    """The IR of a generated ``constants(p)`` (parsed; ``q = np.empty(nq)``, ``q[i] = ...``, ``return q``) as
+    the internal ``void symbol(double* p, double* q)`` writing into ``q``, and the number of parameters it
     reads (``p`` must hold at least that many).  Raises :class:`Unsupported` for anything else."""
     fn = _function_def(func, ["p"])
     body = _Body(arrays={"p": "%p"}, scalars={})
@@ -220,14 +234,50 @@ def constants_ir(func, symbol: str, nq: int) -> tuple:
         raise Unsupported(f"does not return its np.empty({nq})")
     if body.extent.get(out, 0) > nq:
         raise Unsupported(f"writes beyond its np.empty({nq})")
-    head = f'define void @"{symbol}"(ptr nocapture readonly %p, ptr nocapture %q) {{\nentry:\n'
+    head = f'define internal void @"{symbol}"(ptr nocapture readonly %p, ptr nocapture %q) {{\nentry:\n'
     return _text(head, body, "ret void"), body.extent.get("p", 0)
 
 
-def c_wrapper_ir(native: str, symbol: str) -> str:
-    """A C-callable ``void symbol(double t, double* y, double* q, int64 nq, double* out)`` calling ``native``
-    (the ``rhs`` part's address for the integrator's own calls: the initial step)."""
-    return (f'define void @"{symbol}"(double %t, ptr %y, ptr %q, i64 %nq, ptr %out) {{\nentry:\n'
-            f"  %ret = alloca ptr\n  %exc = alloca ptr\n"
-            f'  %status = call i32 @"{native}"(ptr %ret, ptr %exc, double %t, ptr %y, ptr %q, i64 %nq, ptr %out)\n'
-            f"  ret void\n}}\n")
+def _size(fn: ast.FunctionDef):
+    """``nq`` of a ``constants`` that starts with ``q = np.empty(nq)`` (an integer literal), else None."""
+    for node in fn.body:
+        value = getattr(node, "value", None)
+        if (isinstance(node, ast.Assign) and isinstance(value, ast.Call) and ast.unparse(value.func) == "np.empty"
+                and len(value.args) == 1 and isinstance(value.args[0], ast.Constant)
+                and type(value.args[0].value) is int):
+            return value.args[0].value
+    return None
+
+
+def module_ir(source: str) -> tuple:
+    """``({name: IR}, reads)``: the IR of the functions :data:`FUNCTIONS` of the module text ``source`` that
+    can be written so, and the number of parameters its ``constants`` reads (0 if it is not written)."""
+    found = functions(source)
+    out, reads = {}, 0
+    for name in FUNCTIONS:
+        if name not in found:
+            continue
+        try:
+            if name == "constants":
+                nq = _size(found[name])
+                if nq is None:
+                    raise Unsupported("does not start with q = np.empty(<size>)")
+                out[name], reads = constants_ir(found[name], name, nq)
+            else:
+                out[name] = rhs_ir(found[name], name)
+        except Unsupported:
+            continue
+    return out, reads
+
+
+def with_ir(source: str) -> str:
+    """The module text ``source`` with ``LLVM_IR`` and ``LLVM_IR_READS`` appended (see the module's doc)."""
+    ir, reads = module_ir(source)
+    entries = "".join(f"    {name!r}: (\n" + "".join(f"        {line + chr(10)!r}\n" for line in text.splitlines())
+                      + "    ),\n" for name, text in ir.items())
+    return (source.rstrip("\n") + "\n\n\n"
+            "#: LLVM IR of the functions above that are straight-line arithmetic, written by derivation/ir_emit.py\n"
+            "#: (the operations numba emits for them, in its order: the same bits); the runtime compiles it\n"
+            f"LLVM_IR = {{\n{entries}}}\n"
+            "#: how many parameters the IR of ``constants`` reads\n"
+            f"LLVM_IR_READS = {reads}\n")
