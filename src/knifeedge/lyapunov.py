@@ -207,10 +207,10 @@ def _benettin_adaptive(rhs_into, jacobian, gradients, y, Q, p, tau, n_blocks, rt
             _stage_point(q_new, q, step, KQ, 6)
             rhs_into(0.0, y_new, p, K[6])
             _times(jacobian(y_new, p), q_new.reshape((n, k)), KQ[6].reshape((n, k)))
-            # the tangent vectors are controlled too: at an equilibrium the state alone would let the step grow
-            # past the stability of the tangent dynamics
+            # the tangent vectors are controlled too (at an equilibrium the state alone would let the step grow
+            # past the stability of the tangent dynamics), relative to their unit length after each QR: atol = rtol
             err = math.sqrt((_error_squares(y, y_new, K, step, rtol, atol)
-                             + _error_squares(q, q_new, KQ, step, rtol, atol)) / (n + n * k))
+                             + _error_squares(q, q_new, KQ, step, rtol, rtol)) / (n + n * k))
             if err <= 1.0:
                 t = t_end if step == t_end - t else t + step
                 y[:] = y_new
@@ -284,7 +284,8 @@ def lyapunov(m: Model, y0, p, t_end: float, k: int | None = None, h: float | Non
     Without ``rtol``: classical Runge-Kutta with the fixed step ``h`` (default: 1/50 of the period of the fastest
     linear mode at ``y0``); ``tau``: the time between re-orthonormalizations (default ``10 h``), rounded to a whole
     number of steps.  With ``rtol`` (and ``atol``, default ``rtol * 1e-2``): Dormand-Prince 5(4) with the errors of
-    the state and of the tangent vectors controlled as in ``simulate(method="DP54")``, ``h`` the first step, ``tau`` (default ``span / 1000``)
+    the state and of the tangent vectors controlled as in ``simulate(method="DP54")`` (the tangent vectors, of unit
+    length after each re-orthonormalization, with ``atol = rtol``), ``h`` the first step, ``tau`` (default ``span / 1000``)
     rounded to divide the span; ``max_steps`` bounds the steps.
     """
     p = m.check_params(p)
