@@ -95,6 +95,7 @@ def input_hash(spec: engine.ModelSpec, fidelity: str) -> str:
     for part in (
         spec.name, fidelity, sp.__version__,
         sp.srepr(spec.lagrangian), *(sp.srepr(c) for c in spec.constraints), *(sp.srepr(f) for f in spec.holonomic),
+        *((sp.srepr(sp.sympify(spec.holonomic_rate)),) if spec.holonomic else ()),
         inspect.getsource(engine), inspect.getsource(truncation), inspect.getsource(models), inspect.getsource(names),
         Path(__file__).read_text(), (Path(__file__).parent / "kkt_emit.py").read_text(),
         *((spec.elimination,) if spec.elimination != "auto" else ()),
@@ -540,8 +541,10 @@ def _model_metadata(system) -> str:
         out += ("\n#: ``energy`` holds a potential of pose coordinates: it reads the pose-extended state\n"
                 "ENERGY_NEEDS_POSE = True")
     if system.spec.holonomic:
-        out += ("\n#: holonomic constraints, whose values ``holonomic_residual`` gives (zero on the manifold)\n"
-                f"HOLONOMIC_NAMES = {tuple(system.spec.holonomic_labels)!r}")
+        out += ("\n#: holonomic constraints, whose values ``holonomic_residual`` gives (zero on the manifold); the rates\n"
+                "#: of the dependent coordinates hold them: df/dt = -HOLONOMIC_RATE * f (f decays instead of drifting)\n"
+                f"HOLONOMIC_NAMES = {tuple(system.spec.holonomic_labels)!r}\n"
+                f"HOLONOMIC_RATE = {str(sp.sympify(system.spec.holonomic_rate))!r}")
     if not system.time_dependent:
         return out
     return out + ("\n#: the equations depend on the time: energy, multipliers, pose_rates, power_dissipated and power_input\n"

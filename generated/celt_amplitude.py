@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/rigid_small_emit.py (make derive) from the rigid body 'celt'
 through derivation/rigid.py and derivation/rigid_small.py.
-SymPy 1.14.0; input hash sha256:61116b35c696ff9b1017b2fbc5ccf5eb2fa7bf7e51f5363b00aa8015b351ae8c
+SymPy 1.14.0; input hash sha256:12280152279102eafbc2bdb8f4879b3db72a1d9d57ce20eb4fade61a8a7f6640
 
 Classical rattleback (celt): a rigid body with an ellipsoidal bottom (semi-axes a, b, c along the body axes x, y, z; centre of mass a distance h below the ellipsoid's centre), inertia tensor about the centre of mass with entries I_xx..I_yz in body axes, rolling without slipping on a horizontal table under gravity g, dissipation torque -sigma*omega.  State: upward vertical n and angular velocity omega in body axes, vertical spin omega_n = omega.n; pose: heading psi of the body x axis, centre of mass (x, y).
 
@@ -63,7 +63,7 @@ EXPORTS = ('PRESETS', 'PRESET_SOURCES', 'initial_state', 'modes', 'moffatt_tokie
 PRESETS = {'kane_levinson_1982': {'a': 0.2, 'b': 0.03, 'c': 0.02, 'h': 0.01, 'm': 1.0, 'g': 9.81, 'I_xx': 0.0002, 'I_yy': 0.0016, 'I_zz': 0.0017, 'I_xy': 2e-05, 'sigma': 0.0}, 'schoemer': {'a': 1.618033988749895, 'b': 1.0, 'c': 1.0, 'h': 0.1875, 'm': 0.2, 'g': 9.81, 'I_xx': 0.05796875, 'I_yy': 0.09032943, 'I_zz': 0.12236068, 'I_xy': -0.025, 'sigma': 0.0}}
 PRESET_SOURCES = {'kane_levinson_1982': 'Kane & Levinson, Int. J. Non-Linear Mech. 17 (1982) 175-186', 'schoemer': "E. Schoemer's rattleback (golden-ratio ellipsoid)"}
 SOURCE = 'knifeedge.derive.celt'
-INPUT_HASH = '61116b35c696ff9b1017b2fbc5ccf5eb2fa7bf7e51f5363b00aa8015b351ae8c'
+INPUT_HASH = '12280152279102eafbc2bdb8f4879b3db72a1d9d57ce20eb4fade61a8a7f6640'
 SYMPY_VERSION = '1.14.0'
 OP_COUNTS = {'rhs': 688, 'constants': 669, 'rhs_q': 22, 'energy': 208, 'power_dissipated': 780, 'modes': 133, 'moffatt_tokieda': 351}
 
@@ -2437,4 +2437,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'c27d8cc77e9dbfb2b8217c47ea9da9aa7ca59026917e49c368573b569957a996'
+MODULE_SHA256 = 'b86008f51b9082bc6e770404d6b13b784b685f9a9ed04c7623b665bd5fb5f381'

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/rigid_emit.py (make derive) from the rigid body 'celt'
 through derivation/rigid.py (Lagrange-d'Alembert in body quasi-velocities).
-SymPy 1.14.0; input hash sha256:1ab0f70363e60fac9c3915844ecf2d2423b7c361d3502dd7de99c77d044f8b1c
+SymPy 1.14.0; input hash sha256:fce32aeb2028e9c1bc70828c1965be61207d946fe8a19ad2b979c7fee7e95a9a
 
 Classical rattleback (celt): a rigid body with an ellipsoidal bottom (semi-axes a, b, c along the body axes x, y, z; centre of mass a distance h below the ellipsoid's centre), inertia tensor about the centre of mass with entries I_xx..I_yz in body axes, rolling without slipping on a horizontal table under gravity g, dissipation torque -sigma*omega.  State: upward vertical n and angular velocity omega in body axes, vertical spin omega_n = omega.n; pose: heading psi of the body x axis, centre of mass (x, y).
 
@@ -81,7 +81,7 @@ PRESETS = {'kane_levinson_1982': {'a': 0.2, 'b': 0.03, 'c': 0.02, 'h': 0.01, 'm'
 PRESET_SOURCES = {'kane_levinson_1982': 'Kane & Levinson, Int. J. Non-Linear Mech. 17 (1982) 175-186', 'schoemer': "E. Schoemer's rattleback (golden-ratio ellipsoid)"}
 #: the model file the body comes from
 SOURCE = 'knifeedge.derive.celt'
-INPUT_HASH = '1ab0f70363e60fac9c3915844ecf2d2423b7c361d3502dd7de99c77d044f8b1c'
+INPUT_HASH = 'fce32aeb2028e9c1bc70828c1965be61207d946fe8a19ad2b979c7fee7e95a9a'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 247, 'constants': 23, 'rhs_q': 250, 'rhs_pose': 285, 'rhs_pose_q': 286, 'pose_rates': 71, 'energy': 72, 'multipliers': 265, 'power_dissipated': 6}
@@ -1956,4 +1956,4 @@ def invariant_gradients(s, p):
     out[1, 6] = 1
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'a0cbcf6cc029190829a24a4f536137a7a2b31e95042d1563a7ac36824f76f4e3'
+MODULE_SHA256 = 'cf20e3598c8128d5331148a9d5b791d64a8d0c6ea26ca4b97502164908b4f1b8'

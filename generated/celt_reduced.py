@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/rigid_small_emit.py (make derive) from the rigid body 'celt'
 through derivation/rigid.py and derivation/rigid_small.py.
-SymPy 1.14.0; input hash sha256:7e24460687903b8286d92cb828c46b5189d1b5a0ba2b2bcc55899828d0ab1258
+SymPy 1.14.0; input hash sha256:350f9b4dbec0b8f637a3964d9e34d90d645e48714c70a655552c8621ef770b18
 
 Classical rattleback (celt): a rigid body with an ellipsoidal bottom (semi-axes a, b, c along the body axes x, y, z; centre of mass a distance h below the ellipsoid's centre), inertia tensor about the centre of mass with entries I_xx..I_yz in body axes, rolling without slipping on a horizontal table under gravity g, dissipation torque -sigma*omega.  State: upward vertical n and angular velocity omega in body axes, vertical spin omega_n = omega.n; pose: heading psi of the body x axis, centre of mass (x, y).
 
@@ -65,7 +65,7 @@ EXPORTS = ('PRESETS', 'PRESET_SOURCES', 'initial_state')
 PRESETS = {'kane_levinson_1982': {'a': 0.2, 'b': 0.03, 'c': 0.02, 'h': 0.01, 'm': 1.0, 'g': 9.81, 'I_xx': 0.0002, 'I_yy': 0.0016, 'I_zz': 0.0017, 'I_xy': 2e-05, 'sigma': 0.0}, 'schoemer': {'a': 1.618033988749895, 'b': 1.0, 'c': 1.0, 'h': 0.1875, 'm': 0.2, 'g': 9.81, 'I_xx': 0.05796875, 'I_yy': 0.09032943, 'I_zz': 0.12236068, 'I_xy': -0.025, 'sigma': 0.0}}
 PRESET_SOURCES = {'kane_levinson_1982': 'Kane & Levinson, Int. J. Non-Linear Mech. 17 (1982) 175-186', 'schoemer': "E. Schoemer's rattleback (golden-ratio ellipsoid)"}
 SOURCE = 'knifeedge.derive.celt'
-INPUT_HASH = '7e24460687903b8286d92cb828c46b5189d1b5a0ba2b2bcc55899828d0ab1258'
+INPUT_HASH = '350f9b4dbec0b8f637a3964d9e34d90d645e48714c70a655552c8621ef770b18'
 SYMPY_VERSION = '1.14.0'
 OP_COUNTS = {'rhs': 606, 'constants': 511, 'rhs_q': 108, 'energy': 85, 'power_dissipated': 6}
 
@@ -1513,4 +1513,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '22ea16c16551beed61808817b69459588ae3650ab810a1bdbab76c374efc3669'
+MODULE_SHA256 = '570e07d22e0b9aa215f6911e85d789ba3060d543c53f1e87fabc93ac4aa3f0cb'

@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:83df3432a916626d162c1f5de7a2b9e658d9363b7e072e8b8f746bfdfac911fa
+SymPy 1.14.0; input hash sha256:427b553303698c02a78f0f736d0da5559535e5d17b08955e18c2bd605993faec
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table: heading q1, lean q2 from the vertical, rotation q3 about the axle, contact point (x, y).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '83df3432a916626d162c1f5de7a2b9e658d9363b7e072e8b8f746bfdfac911fa'
+INPUT_HASH = '427b553303698c02a78f0f736d0da5559535e5d17b08955e18c2bd605993faec'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -673,4 +673,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'b44a45a8bcf5278fc60cdae18b91e69f107fa25c380a7fd38c0e65f5cc9d47ec'
+MODULE_SHA256 = '8497f8fedae9bde6b1b15fa904ce1212a732339534b200c871fb0e9475c8456b'

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:d371e43e98c58ecab011d5ba790929f4d6799d501a76e3371eaf34673e9107c7
+SymPy 1.14.0; input hash sha256:47438858ad79a2ab98cfc66255ecbf89becb7215eb1c227d5014207299c246d4
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -67,7 +67,7 @@ HAS_DISSIPATION = False
 EXPORTS = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy',)
-INPUT_HASH = 'd371e43e98c58ecab011d5ba790929f4d6799d501a76e3371eaf34673e9107c7'
+INPUT_HASH = '47438858ad79a2ab98cfc66255ecbf89becb7215eb1c227d5014207299c246d4'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 10, 'constants': 6, 'rhs_q': 4, 'energy': 9, 'invariants': 9, 'frequencies': 5, 'growth_rates': 2, 'drive_rates': 5}
@@ -270,4 +270,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'ae2aba1d3aadb44baba32e8de0417ea4af5c468d6599c1ffd35feb013d4a7a15'
+MODULE_SHA256 = '82bcfb281c3e5a92e5399b5a6f49b809185867a3b5c2e26c87a6cd15bca02497'

@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:99a6755304119c439c4afe69c7b0da9d2f37e7ce903c464c6595ce7c534556f9
+SymPy 1.14.0; input hash sha256:a23bf7512e50b869444de4161a719d9855932fe5cd433d1f302cbb377aac3ce7
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '99a6755304119c439c4afe69c7b0da9d2f37e7ce903c464c6595ce7c534556f9'
+INPUT_HASH = 'a23bf7512e50b869444de4161a719d9855932fe5cd433d1f302cbb377aac3ce7'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -427,4 +427,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '537e5f9e53e1e57e3a780c786deb4a5c772e0e275cfe2d970e53b87c2a004151'
+MODULE_SHA256 = '4d2888ba0f20f7a579b23f5b2349c9d75b5a78965f9ffd016281a9a0ff5fda26'

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/rigid_emit.py (make derive) from the rigid body 'two_mode_rigid'
 through derivation/rigid.py (Lagrange-d'Alembert in body quasi-velocities).
-SymPy 1.14.0; input hash sha256:7c409ae3f56c3f0f400998f0bcf500090271f95882cd9208c6b073a4a8b8feea
+SymPy 1.14.0; input hash sha256:9c0aecf3f2e536089088558f11d805276c25d0d4f023d98f2e9ef89cec572345
 
 Chiral knife edge of the paper's section III as the real rigid body: massless inverted-U bar of half-length L, masses M/2 a distance ell below its ends, contact at the lowest point of a circle of radius D in a vertical plane at the chiral angle alpha to the bar; per unit mass, exact in the tilts.
 
@@ -72,7 +72,7 @@ PRESETS = {}
 PRESET_SOURCES = {}
 #: the model file the body comes from
 SOURCE = 'knifeedge.derive.rigid_knife_edge'
-INPUT_HASH = '7c409ae3f56c3f0f400998f0bcf500090271f95882cd9208c6b073a4a8b8feea'
+INPUT_HASH = '9c0aecf3f2e536089088558f11d805276c25d0d4f023d98f2e9ef89cec572345'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 253, 'constants': 25, 'rhs_q': 221, 'rhs_pose': 293, 'rhs_pose_q': 261, 'pose_rates': 73, 'energy': 56, 'multipliers': 267}
@@ -1608,4 +1608,4 @@ def invariant_gradients(s, p):
     out[1, 6] = 1
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '371bebfc8c5125d6a24f36b40ec484553748e037493cd6041168c674eaedf55e'
+MODULE_SHA256 = '76f6a420fd9df636d5bb749219124b3e54bfd7fd1a9fdf9ffc4ce0541a76a35a'
