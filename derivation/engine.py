@@ -32,6 +32,7 @@ import random
 import re
 import sys
 from dataclasses import dataclass, field
+from pathlib import Path
 
 import mpmath
 
@@ -54,8 +55,8 @@ class ModelSpecError(ValueError):
 def _caller_location() -> str:
     """``file:line`` of the first frame outside this module (where a spec was constructed)."""
     frame = sys._getframe(1)
-    here = __file__
-    while frame is not None and (frame.f_code.co_filename in (here, "<string>")
+    here = (__file__, str(Path(__file__).with_name("multibody.py")))  # and the front end that builds specs
+    while frame is not None and (frame.f_code.co_filename in (*here, "<string>")
                                  or frame.f_code.co_filename.endswith("dataclasses.py")):
         frame = frame.f_back
     if frame is None:

@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/sleigh.py (model 'chaplygin_sleigh',
 constraints knife_edge) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:9fe472d2840960e5e03262535f6bb145263a596c59dff914f784151385140251
+SymPy 1.14.0; input hash sha256:24b476550d3363cca4dcb35b4cf1a556826dd29e9d94deddaf24b98be343f7f7
 
 Chaplygin sleigh: a rigid body on the plane with a knife edge at its rear contact point (x, y) that forbids sideways motion; heading phi, centre of mass at distance a ahead of the contact, radius of gyration k about the centre of mass; v is the speed along the axis.
 
@@ -60,7 +60,7 @@ MULTIPLIER_NAMES = ('knife_edge',)
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '9fe472d2840960e5e03262535f6bb145263a596c59dff914f784151385140251'
+INPUT_HASH = '24b476550d3363cca4dcb35b4cf1a556826dd29e9d94deddaf24b98be343f7f7'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -332,4 +332,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '27619af23227bd1010d4ef6664d6ea1ce6f056be391c9d86702334555401b232'
+MODULE_SHA256 = 'd17a8d0d68a2039198e4f107da505fb48aa1047f5b9c33b9e9924e651ba142ec'

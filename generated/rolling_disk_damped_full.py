@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk_damped',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:5a21b55dc38b6b7cea06877e5a48403f37acea2f10e022544ff364d6b77b3e91
+SymPy 1.14.0; input hash sha256:cb7c1d33188ff2b3831947b098c2b59635f27bac4b2e5cd1f836f0cd1907a848
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table, its rotation resisted by a viscous torque -c r^2 omega per unit mass (Rayleigh function c r^2 |omega|^2/2).
 
@@ -64,7 +64,7 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = True
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '5a21b55dc38b6b7cea06877e5a48403f37acea2f10e022544ff364d6b77b3e91'
+INPUT_HASH = 'cb7c1d33188ff2b3831947b098c2b59635f27bac4b2e5cd1f836f0cd1907a848'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -890,4 +890,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '83cdcf74f5d443d0a699cb2eda8bbdcf80545dc4293ff4abfe7ad77110e65fb2'
+MODULE_SHA256 = 'ba248faf2af2138312ed9b2f6ad57019ac5005837f2fc5d9b689c1eedf6f2c3d'

@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:427b553303698c02a78f0f736d0da5559535e5d17b08955e18c2bd605993faec
+SymPy 1.14.0; input hash sha256:c5fb861b568f147a5a04f5f4c5078e231d6eb89995660bc5dfc2da7d25ed478b
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table: heading q1, lean q2 from the vertical, rotation q3 about the axle, contact point (x, y).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '427b553303698c02a78f0f736d0da5559535e5d17b08955e18c2bd605993faec'
+INPUT_HASH = 'c5fb861b568f147a5a04f5f4c5078e231d6eb89995660bc5dfc2da7d25ed478b'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -673,4 +673,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '8497f8fedae9bde6b1b15fa904ce1212a732339534b200c871fb0e9475c8456b'
+MODULE_SHA256 = 'b55fff3435a12f15e3853dd773963a5a74a61c1ea91580991deddb12e0b68d80'

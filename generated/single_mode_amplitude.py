@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:47438858ad79a2ab98cfc66255ecbf89becb7215eb1c227d5014207299c246d4
+SymPy 1.14.0; input hash sha256:6fe52fdcd6351d83b1ca71f36922fe82af6cbc405825dc3e4ffa8fbd2e0ee57b
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -67,7 +67,7 @@ HAS_DISSIPATION = False
 EXPORTS = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy',)
-INPUT_HASH = '47438858ad79a2ab98cfc66255ecbf89becb7215eb1c227d5014207299c246d4'
+INPUT_HASH = '6fe52fdcd6351d83b1ca71f36922fe82af6cbc405825dc3e4ffa8fbd2e0ee57b'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 10, 'constants': 6, 'rhs_q': 4, 'energy': 9, 'invariants': 9, 'frequencies': 5, 'growth_rates': 2, 'drive_rates': 5}
@@ -270,4 +270,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '82bcfb281c3e5a92e5399b5a6f49b809185867a3b5c2e26c87a6cd15bca02497'
+MODULE_SHA256 = '627334c61ab2b752d416cfc867e14f597d1d2c58d26cd378a6a6148109796f04'

@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:a23bf7512e50b869444de4161a719d9855932fe5cd433d1f302cbb377aac3ce7
+SymPy 1.14.0; input hash sha256:43f72dc8e9d7983fb984557935ea75d7b1691e1f0b21fbf3862b5d0298a267b1
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'a23bf7512e50b869444de4161a719d9855932fe5cd433d1f302cbb377aac3ce7'
+INPUT_HASH = '43f72dc8e9d7983fb984557935ea75d7b1691e1f0b21fbf3862b5d0298a267b1'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -427,4 +427,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '4d2888ba0f20f7a579b23f5b2349c9d75b5a78965f9ffd016281a9a0ff5fda26'
+MODULE_SHA256 = '70cc10860f082b99bdb576cdbf39ed34394e8607fb6c3bf08c186e30ac41ad2c'

@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py and derivation/truncation.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:a1e042abcacebf03f8d3e6cfcb06a1ebd661d0fac39d605d6ff0494cde48dd66
+SymPy 1.14.0; input hash sha256:aed1bcbcd1c754b693f8e23b0b8e8fdf182891b72f8f80af457d06382c0a3ad4
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'a1e042abcacebf03f8d3e6cfcb06a1ebd661d0fac39d605d6ff0494cde48dd66'
+INPUT_HASH = 'aed1bcbcd1c754b693f8e23b0b8e8fdf182891b72f8f80af457d06382c0a3ad4'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -409,4 +409,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'ac1f859c7548085a5a16255c9e294101aa0cadfdfe007f5d4c235381bd1056fd'
+MODULE_SHA256 = '3f4f52bf73b9f1a94f226ca6329fa00f303380ac52fbdb8bc56b0772708c8958'

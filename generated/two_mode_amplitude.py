@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:5d96f56744a672a6c2993b3a1ed5bff08b6efe9336fd2bc14735e84ed70d7fbb
+SymPy 1.14.0; input hash sha256:fd862e969d00dca98330cda8ad56348cc8468cad0f895b27eaa214094a702f5d
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -71,7 +71,7 @@ HAS_DISSIPATION = False
 EXPORTS = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy', 'log_A1_A2')
-INPUT_HASH = '5d96f56744a672a6c2993b3a1ed5bff08b6efe9336fd2bc14735e84ed70d7fbb'
+INPUT_HASH = 'fd862e969d00dca98330cda8ad56348cc8468cad0f895b27eaa214094a702f5d'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 24, 'constants': 14, 'rhs_q': 10, 'energy': 12, 'invariants': 19, 'frequencies': 12, 'growth_rates': 11, 'drive_rates': 12}
@@ -353,4 +353,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '7fe2ad4d97885694792d10f43ef8cef47f9c3e0a46fbfa375cf4170812c248d7'
+MODULE_SHA256 = '45f6cdf30244d7b98d03c306aebab2e9019a6ec9686139380f8abbaba900026c'

@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:89ce1195d7dcb1986be223b61c83cef210d05991a0951e0262e4c3102b2d8ad0
+SymPy 1.14.0; input hash sha256:eb95511228026750b53dc310e44b768f23868ef446ef08d841cb8ee68cb6f393
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -66,7 +66,7 @@ MULTIPLIER_NAMES = ('Const22', 'Const23')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '89ce1195d7dcb1986be223b61c83cef210d05991a0951e0262e4c3102b2d8ad0'
+INPUT_HASH = 'eb95511228026750b53dc310e44b768f23868ef446ef08d841cb8ee68cb6f393'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -920,4 +920,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'd670ad24e67c34b1dc8724cda23bee8e67c0fd52ea07ac30a8cf49094a700316'
+MODULE_SHA256 = '734da675d48ca8b5fde9e7effe38f869d255192de46a1e8e6b9a23311b8742cd'

@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py and derivation/truncation.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:b224a445ef4b765c30a77e2dbf272de1ec06fe2d48a97cba715675c6fe884479
+SymPy 1.14.0; input hash sha256:d3bb1c77e3103d772fbcef629c362357d761bd272b83faa97a2d642bba4c7de9
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -66,7 +66,7 @@ MULTIPLIER_NAMES = ('Const22', 'Const23')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'b224a445ef4b765c30a77e2dbf272de1ec06fe2d48a97cba715675c6fe884479'
+INPUT_HASH = 'd3bb1c77e3103d772fbcef629c362357d761bd272b83faa97a2d642bba4c7de9'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -705,4 +705,4 @@ def invariant_gradients(s, p):
 
     return out
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '38e8c2c10c03d9a3d8f364e531ba24eeee6c0501438132f85ae4bc26b900fe85'
+MODULE_SHA256 = '7f78f8c182202677093dc3ea61087f38d4cd22086e8fd5aa01f25e42b4e4c11c'
