@@ -106,3 +106,50 @@ def test_the_disk_alone_rolls_with_the_textbook_constraints():
     assert sp.simplify(across - (-x_dot * sp.sin(psi) + y_dot * sp.cos(psi) + r * a1_dot * sp.cos(a1))) == 0
     assert spec.dependent == (sp.Symbol("x", real=True), sp.Symbol("y", real=True))
     assert spec.defined_at.startswith(__file__)  # errors name the user's line, not the front end's
+
+
+def _run_doc_section(tmp_path, monkeypatch, tag: str, files: list) -> None:
+    """docs/your-own-model.md's blocks ``python {tag}-file=NAME.py``, ``sh {tag}-example`` and
+    ``python {tag}-example`` as written: the files, the commands, then the examples with their printed values."""
+    import contextlib
+    import io
+    import re
+    import shlex
+
+    from knifeedge.cli import main
+    from test_your_own_model import DOC, _blocks, _check_printed
+
+    monkeypatch.chdir(tmp_path)
+    found = re.findall(rf"```python {tag}-file=(\w+\.py)\n(.*?)```", DOC.read_text(), flags=re.S)
+    assert [name for name, _ in found] == files
+    for name, code in found:
+        (tmp_path / name).write_text(code)
+    for line in (ln for block in _blocks(f"sh {tag}-example") for ln in block.splitlines()):
+        assert main(shlex.split(line)[1:]) == 0, line
+    namespace: dict = {}
+    for code in _blocks(f"python {tag}-example"):
+        out = io.StringIO()
+        with contextlib.redirect_stdout(out):
+            exec(compile(code, "docs/your-own-model.md", "exec"), namespace)
+        _check_printed(code, out.getvalue())
+
+
+def test_the_docs_show_the_example_file_as_it_is():
+    import re
+
+    from test_your_own_model import DOC
+
+    shown = re.findall(r"```python multibody-file=disk_pendulum_bodies.py\n(.*?)```", DOC.read_text(), flags=re.S)
+    assert shown == [(EXAMPLES / "disk_pendulum_bodies.py").read_text()]
+
+
+@pytest.mark.slow  # derives the two-body model and compiles it: the slow tier
+def test_doc_section_on_bodies_joined_by_pins_runs(tmp_path, monkeypatch):
+    _run_doc_section(tmp_path, monkeypatch, "multibody", ["disk_pendulum_bodies.py"])
+
+
+@pytest.mark.slow  # derives the snakeboard (about 20 s of a worker) and compiles it: the slow tier
+def test_doc_section_on_the_snakeboard_gait_runs(tmp_path, monkeypatch):
+    """Section 11: the snakeboard's speed against its equation derived by hand (d'Alembert along the free
+    direction, written in the section), and its forward drift under the gait."""
+    _run_doc_section(tmp_path, monkeypatch, "gait", ["snakeboard.py"])
