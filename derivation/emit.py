@@ -66,6 +66,7 @@ def input_hash(spec: engine.ModelSpec, fidelity: str) -> str:
     for part in (
         spec.name, fidelity, sp.__version__,
         sp.srepr(spec.lagrangian), *(sp.srepr(c) for c in spec.constraints), *(sp.srepr(f) for f in spec.holonomic),
+        *((sp.srepr(sp.sympify(spec.holonomic_rate)),) if spec.holonomic else ()),
         inspect.getsource(engine), inspect.getsource(truncation), inspect.getsource(models), inspect.getsource(names),
         Path(__file__).read_text(), (Path(__file__).parent / "kkt_emit.py").read_text(), Path(codegen.__file__).read_text(),
         *((spec.elimination,) if spec.elimination != "auto" else ()),
@@ -316,8 +317,12 @@ def _model_metadata(system) -> tuple:
         out += (const("ENERGY_NEEDS_POSE", True,
                       "``energy`` holds a potential of pose coordinates: it reads the pose-extended state"),)
     if system.spec.holonomic:
+        rate = str(sp.sympify(system.spec.holonomic_rate)) if system.kkt is None else "0"
         out += (const("HOLONOMIC_NAMES", tuple(system.spec.holonomic_labels),
-                      "holonomic constraints, whose values ``holonomic_residual`` gives (zero on the manifold)"),)
+                      "holonomic constraints, whose values ``holonomic_residual`` gives (zero on the manifold); the rates\n"
+                      "of the dependent coordinates hold them: df/dt = -HOLONOMIC_RATE * f (f decays instead of drifting;\n"
+                      "0: the differentiated constraint only, as in a numeric-elimination model)"),
+                const("HOLONOMIC_RATE", rate))
     if not system.time_dependent:
         return out
     return out + (const("TIME_DEPENDENT", True,

@@ -32,6 +32,7 @@ import random
 import re
 import sys
 from dataclasses import dataclass, field
+from pathlib import Path
 
 import mpmath
 
@@ -54,8 +55,8 @@ class ModelSpecError(ValueError):
 def _caller_location() -> str:
     """``file:line`` of the first frame outside this module (where a spec was constructed)."""
     frame = sys._getframe(1)
-    here = __file__
-    while frame is not None and (frame.f_code.co_filename in (here, "<string>")
+    here = (__file__, str(Path(__file__).with_name("multibody.py")))  # and the front end that builds specs
+    while frame is not None and (frame.f_code.co_filename in (*here, "<string>")
                                  or frame.f_code.co_filename.endswith("dataclasses.py")):
         frame = frame.f_back
     if frame is None:
@@ -108,9 +109,16 @@ class ModelSpec:
        ``holonomic_labels``, default ``h1, h2, ...``): position constraints,
        entered as their time derivatives ``df/dq q_dot + df/dt = 0`` with a
        multiplier each (named after ``constraint_labels``); their coordinates
-       must not be cyclic.  The module's ``holonomic_residual(s, p)`` gives
-       ``f`` along a run: the positions are not projected back onto
-       ``f = 0``, they drift by about the integrator's error.
+       must not be cyclic.  The constraints are held during a run by the
+       rates of the dependent coordinates kept in the state, which solve
+       ``df/dq q_dot + df/dt = -holonomic_rate * f`` (so ``f`` decays as
+       ``exp(-holonomic_rate t)`` instead of drifting; on ``f = 0`` the
+       equations are unchanged): ``holonomic_rate`` is a non-negative
+       number or expression of the parameters, per unit of time (default
+       1; choose about the model's slowest natural frequency, e.g.
+       ``sqrt(g/l)``; far above its fastest one the equations become stiff;
+       0 leaves ``f`` to drift).  ``holonomic_residual(s, p)`` gives ``f``
+       along a run.
     7. ``cyclic`` ({coordinate: value}): coordinates the reduced dynamics
        does not depend on (the symmetry), with the representative value at
        which the equations are evaluated.  A dependent coordinate that is
@@ -183,6 +191,7 @@ class ModelSpec:
     constraint_labels: tuple = ()
     holonomic: tuple = ()
     holonomic_labels: tuple = ()
+    holonomic_rate: object = 1
     cyclic: dict = field(default_factory=dict)
     small: tuple = ()
     pose: tuple = ()
@@ -430,6 +439,7 @@ def _contract_problems(spec: ModelSpec) -> list:
                             f"keep; remove them from `cyclic`")
     if len(spec.holonomic_labels) != len(spec.holonomic):
         problems.append(f"`holonomic_labels` needs one label per holonomic constraint ({len(spec.holonomic)})")
+    problems += _rate_problems(spec)
     not_coord = [q for q in spec.dependent if q not in spec.coordinates]
     if not_coord:
         problems.append(f"`dependent` entries {not_coord} are not coordinates")
@@ -566,6 +576,37 @@ def _velocity_degree(e: sp.Expr, velocities: set) -> float:
         return out
 
     return degree(sp.sympify(e))
+
+
+def _rate_problems(spec: ModelSpec) -> list:
+    """``holonomic_rate``: a real number >= 0 or an expression of the parameters that is not negative."""
+    try:
+        rate = sp.sympify(spec.holonomic_rate, strict=True)
+    except (sp.SympifyError, TypeError):
+        rate = None
+    if rate is None or not isinstance(rate, sp.Expr) or rate.free_symbols - set(spec.params) \
+            or rate.is_extended_real is False or rate.is_negative or rate.has(sp.zoo, sp.oo, -sp.oo, sp.nan):
+        return [f"`holonomic_rate` must be a number >= 0 or an expression of the parameters (a rate per unit of "
+                f"time, e.g. `sqrt(g/l)`), got {spec.holonomic_rate!r}; write it with the symbols of `params`"]
+    return []
+
+
+def held_rates(spec: ModelSpec, at: dict, dep_vel: dict, A_dep_inv: sp.Matrix, variables) -> dict:
+    """Rates of the kept dependent coordinates: ``df/dq q_dot + df/dt = -holonomic_rate f`` for the holonomic rows.
+
+    ``dep_vel`` solves the velocity constraints (``f`` constant); the correction ``-A_dep^-1 [0, rate f]``
+    makes ``f`` decay along the run and vanishes on ``f = 0``.  Holonomic constraints hold no cyclic
+    coordinate, so only the kept rates are corrected.
+    """
+    rate = sp.sympify(spec.holonomic_rate)
+    out = {q: dep_vel[spec.velocity_of(q)] for q in spec.kept}
+    if spec.holonomic and rate != 0:
+        e = sp.Matrix([0] * len(spec.constraints) + [rate * f.subs(at) for f in spec.holonomic])
+        delta = -A_dep_inv * e
+        for k, q in enumerate(spec.dependent):
+            if q in out:
+                out[q] += delta[k]
+    return {q: tidy(e, variables) for q, e in out.items()}
 
 
 def _finite_positive(v) -> bool:
@@ -807,7 +848,7 @@ def derive(spec: ModelSpec) -> ReducedSystem:
         pose_rates=pose_rates,
         power=power,
         power_input=power_input,
-        dependent_rates={q: tidy(dep_vel[spec.velocity_of(q)], variables) for q in spec.kept},
+        dependent_rates=held_rates(spec, at, dep_vel, A_dep_inv, variables),
     )
     if spec.quasi_velocities:
         system = _with_quasi_velocities(system, at, dep_vel, dep_acc, general)

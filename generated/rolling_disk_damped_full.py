@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk_damped',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:c6b1c711e3d3fcb55f3719b798a00344a866841a1380e9bb23dd0ed86924b0f4
+SymPy 1.14.0; input hash sha256:8675f66c28a3752dfc0cec052adb1645dd956c729713deb84bf8f3e8973bdefd
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table, its rotation resisted by a viscous torque -c r^2 omega per unit mass (Rayleigh function c r^2 |omega|^2/2).
 
@@ -64,7 +64,7 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = True
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'c6b1c711e3d3fcb55f3719b798a00344a866841a1380e9bb23dd0ed86924b0f4'
+INPUT_HASH = '8675f66c28a3752dfc0cec052adb1645dd956c729713deb84bf8f3e8973bdefd'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -1537,4 +1537,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 3
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'e6536356780a8ae2d0856d399852ca900c45fe4eecc323e7cb172e8dc1dffac5'
+MODULE_SHA256 = 'c8f14105ad812c59865db8f93000e2072867a97b9b244357ce9cea392123a105'

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:74b41b4fe46f37a969284c83b8d2cbc949345fd46994a4e6205e46723e2e10be
+SymPy 1.14.0; input hash sha256:7fa0c456176a41ad0cbdcf7f4b983772ec963db24d30a32b7010f08cba3d2373
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -71,7 +71,7 @@ HAS_DISSIPATION = False
 EXPORTS = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy', 'log_A1_A2')
-INPUT_HASH = '74b41b4fe46f37a969284c83b8d2cbc949345fd46994a4e6205e46723e2e10be'
+INPUT_HASH = '7fa0c456176a41ad0cbdcf7f4b983772ec963db24d30a32b7010f08cba3d2373'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 24, 'constants': 14, 'rhs_q': 10, 'energy': 12, 'invariants': 19, 'frequencies': 12, 'growth_rates': 11, 'drive_rates': 12}
@@ -461,4 +461,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 5
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '9e71a71ef31d28a4468e0b6ccf441b23f169f721783fcf078c50c50f77b1a7a3'
+MODULE_SHA256 = 'ae47645bda22124634ad743f87473d4eed8f9cb90056064ad503fffe5f2d788b'

@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:6ff360f28bbced5a3ae3876ca014b9000df9e6daa9d57fee154a0f744b0d45d7
+SymPy 1.14.0; input hash sha256:4eff9c4c6afe67ba24663e319cc3feb7cc9b460d46bfa3a94ee46c7716ccc745
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -66,7 +66,7 @@ MULTIPLIER_NAMES = ('Const22', 'Const23')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '6ff360f28bbced5a3ae3876ca014b9000df9e6daa9d57fee154a0f744b0d45d7'
+INPUT_HASH = '4eff9c4c6afe67ba24663e319cc3feb7cc9b460d46bfa3a94ee46c7716ccc745'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -1475,4 +1475,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 5
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '43deb4edd7319065efd75212f0ee929fad0a7353de15b2f1b6d7b2419aade7e9'
+MODULE_SHA256 = '31e742562a8badf6baee2b7dada33bbbd8bcfb279bf391802b3ca5f9ed7ce963'
