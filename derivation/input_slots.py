@@ -104,7 +104,8 @@ def lowered(system):
     if kkt is not None:
         kkt = dataclasses.replace(kkt, mass=low_matrix(kkt.mass), forcing=low_matrix(kkt.forcing),
                                   constraint=low_matrix(kkt.constraint), bias=low_matrix(kkt.bias),
-                                  dependent_inverse=low_matrix(kkt.dependent_inverse))
+                                  constraint_general=low_matrix(kkt.constraint_general),
+                                  unreduced=tuple(low_matrix(sp.Matrix(m)) for m in kkt.unreduced))
     return dataclasses.replace(
         system, spec=spec2, mass_matrix=low_matrix(system.mass_matrix), forcing=low_matrix(system.forcing),
         explicit=low_matrix(system.explicit), multipliers=low_matrix(system.multipliers),
