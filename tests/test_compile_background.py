@@ -55,8 +55,9 @@ def _two_mode():
 
 
 @pytest.mark.xdist_group("dp54_tsit5")  # one worker compiles the DP54 and Tsit5 integrators for all such tests
-@pytest.mark.parametrize("method,output", [("DOP853", "every step"), ("DOP853", "t_eval"), ("RK45", "every step"),
-                                           pytest.param("RK45", "t_eval", marks=pytest.mark.slow)])
+@pytest.mark.parametrize("method,output", [("DOP853", "every step"), ("DOP853", "t_eval"),
+                                           *(pytest.param("RK45", out, marks=pytest.mark.slow)
+                                             for out in ("every step", "t_eval"))])
 def test_handover_takes_the_steps_of_the_compiled_run(background, method, output, capsys):
     """Two-mode knife edge (paper eqs_2modes, Fig. Numerical2), first reversal near t = 2396.7: the run
     begun by SciPy and finished by the kernel has the compiled run's steps, states and reversal."""

@@ -88,7 +88,8 @@ def _harmonic(method, rtol):
     return ys, ev_t[:n_ev], nfev
 
 
-@pytest.mark.parametrize("method,order", [("Tsit5", 5), ("DP54", 5), ("DOP853", 8)])
+@pytest.mark.parametrize("method,order", [pytest.param("Tsit5", 5, marks=pytest.mark.slow),
+                                          pytest.param("DP54", 5, marks=pytest.mark.slow), ("DOP853", 8)])
 @pytest.mark.xdist_group("dp54_tsit5")  # one worker compiles the DP54 and Tsit5 integrators for all such tests
 def test_adaptive_methods_converge_at_their_order(method, order):
     """Global error of q(10) = cos(20) against the number of evaluations: slope -order (within 30 %),
@@ -142,6 +143,7 @@ def test_fixed_step_methods_are_registered_data_checked_when_built():
         FixedMethod("bad", [[0.0, 0.0], [0.5, 0.0]], [0.5, 0.4], [0.0, 0.5], 2, "weights off")
 
 
+@pytest.mark.slow  # compiles a kernel for a tableau no other check uses
 def test_an_explicit_tableau_as_data_converges_at_its_order():
     """An explicit fixed-step method given only as its tableau (Kutta's 3/8 rule, order 4: E. Hairer, S. P.
     Norsett, G. Wanner, Solving ODEs I, Table II.1.2) runs through the kernel's general stage loops: on the stub
