@@ -12,8 +12,9 @@ The generated functions read each input from parameter slots appended to ``p``, 
 the time (``derivation/input_slots.py``: ``input_t0``, then ``<u>_value`` and ``<u>_rate`` per input).  A
 run with samples is therefore made of one run per interval between consecutive sample times (over which
 every input is affine): exact for the piecewise-linear input, with a restart of the integrator where the
-input's slope jumps (:func:`segments`).  Constants need one interval.  The compiled methods take numbers and
-samples; a function is refused there with the way out (sample it, or use a SciPy method).
+input's slope jumps (``knifeedge.simulate._run_segments``).  Constants need one interval.  The compiled
+methods take numbers and samples; a function is refused there with the way out (sample it, or use a SciPy
+method).
 """
 from __future__ import annotations
 
