@@ -343,12 +343,56 @@ def _symbols_ok(values, what: str, problems: list) -> bool:
 
 
 def _contract_problems(spec: ModelSpec) -> list:
-    """Every violation of the :class:`ModelSpec` contract, as sentences."""
-    problems: list = []
+    """Every violation of the :class:`ModelSpec` contract, as sentences.
+
+    Three stages, each stopping the list when it finds problems (the next one relies on it): the name and the
+    symbols with their counts; the declarations and equations on the coordinates; what refers to the closed state.
+    """
+    problems = _name_problems(spec)
+    symbols = _symbol_problems(spec)
+    if symbols is not None:
+        return problems + symbols
+    problems += _naming_problems(spec)
+    problems += _option_problems(spec)
+    problems += _text_problems(spec)
+    problems += _lagrangian_problems(spec)
+    problems += _constraint_problems(spec)
+    problems += _holonomic_problems(spec)
+    problems += _rate_problems(spec)
+    problems += _dependent_problems(spec)
+    problems += _cyclic_problems(spec)
+    problems += _small_and_pose_problems(spec)
+    problems += _param_domain_problems(spec)
+    if problems:
+        return problems
+    # the closed state and what refers to it
+    try:
+        natural = spec.natural_state
+    except Exception as exc:  # noqa: BLE001 -- reported with the others
+        problems.append(f"cannot form the closed state: {exc}")
+        return problems
+    state_names = [str(s) for s in natural]
+    problems += _state_order_and_unit_problems(spec, state_names)
+    problems += _event_problems(spec, natural, state_names)
+    problems += _default_problems(spec, state_names)
+    problems += _validity_problems(spec, state_names)
+    problems += _force_problems(spec)
+    problems += _export_problems(spec)
+    return problems
+
+
+def _name_problems(spec: ModelSpec) -> list:
+    """The model's ``name``: it names the generated modules, so an ASCII identifier and not a keyword."""
     if not isinstance(spec.name, str) or not spec.name.isidentifier() or not spec.name.isascii() \
             or keyword.iskeyword(spec.name):
-        problems.append(f"`name` must be an ASCII Python identifier and not a keyword (it names the generated "
-                        f"modules and their compiled code), got {spec.name!r}")
+        return [f"`name` must be an ASCII Python identifier and not a keyword (it names the generated "
+                f"modules and their compiled code), got {spec.name!r}"]
+    return []
+
+
+def _symbol_problems(spec: ModelSpec) -> list | None:
+    """The declared symbols and their counts; ``None`` when they are sound (the checks after rely on them)."""
+    problems: list = []
     ok = _symbols_ok(spec.coordinates, "coordinates", problems)
     ok &= _symbols_ok(spec.velocities, "velocities", problems)
     ok &= _symbols_ok(spec.params, "params", problems)
@@ -358,9 +402,14 @@ def _contract_problems(spec: ModelSpec) -> list:
         return problems
     n = len(spec.coordinates)
     if len(spec.velocities) != n or len(spec.accelerations) != n:
-        problems.append(f"`velocities` and `accelerations` need one entry per coordinate ({n}); got "
-                        f"{len(spec.velocities)} and {len(spec.accelerations)}")
-        return problems
+        return [f"`velocities` and `accelerations` need one entry per coordinate ({n}); got "
+                f"{len(spec.velocities)} and {len(spec.accelerations)}"]
+    return None
+
+
+def _naming_problems(spec: ModelSpec) -> list:
+    """Names used twice, names the generated code cannot take, and names of the inputs' parameter slots."""
+    problems: list = []
     names_ = [str(s) for s in spec.coordinates + spec.velocities + spec.params + tuple(u for u, _, _ in spec.quasi_velocities)
               + spec.inputs]
     clash = sorted({x for x in names_ if names_.count(x) > 1})
@@ -371,53 +420,89 @@ def _contract_problems(spec: ModelSpec) -> list:
     if taken:
         problems.append(f"the names {taken} are those of the inputs' parameter slots in the generated code; "
                         f"rename them")
+    return problems
+
+
+def _option_problems(spec: ModelSpec) -> list:
+    """The ``elimination`` option, and its combination with ``quasi_velocities``."""
     if spec.elimination not in ("auto", "symbolic", "numeric"):
-        problems.append(f"`elimination` must be 'auto', 'symbolic' or 'numeric', got {spec.elimination!r}")
-    elif spec.elimination == "numeric" and spec.quasi_velocities:
-        problems.append("`elimination='numeric'` does not take `quasi_velocities` (they are written in closed form); "
-                        "drop one of the two")
+        return [f"`elimination` must be 'auto', 'symbolic' or 'numeric', got {spec.elimination!r}"]
+    if spec.elimination == "numeric" and spec.quasi_velocities:
+        return ["`elimination='numeric'` does not take `quasi_velocities` (they are written in closed form); "
+                "drop one of the two"]
+    return []
+
+
+def _text_problems(spec: ModelSpec) -> list:
+    """Descriptions, labels and units the generated module's documentation cannot show."""
     texts = {"description": spec.description, "pose_description": spec.pose_description,
              **{f"label {x!r}": x for x in (*spec.constraint_labels, *spec.holonomic_labels)},
              **{f"unit of {k}": u for k, u in spec.units.items()}}
     bad = sorted(k for k, x in texts.items() if isinstance(x, str) and ('"""' in x or "\\" in x))
     if bad:
-        problems.append(f"the texts {bad} hold triple quotes or a backslash, which the generated module's "
-                        f"documentation cannot show; remove them")
-    declared = set(spec.coordinates) | set(spec.velocities) | set(spec.params) | {t}
-    driven = declared | set(spec.inputs)  # where the inputs may appear
+        return [f"the texts {bad} hold triple quotes or a backslash, which the generated module's "
+                f"documentation cannot show; remove them"]
+    return []
 
-    def undeclared(e, what, allowed=declared):
-        if not isinstance(e, sp.Basic):
-            problems.append(f"{what} must be a SymPy expression, got {type(e).__name__}")
-            return True
-        if allowed is declared and e.free_symbols & set(spec.inputs):
-            problems.append(f"{what} contains the inputs {sorted(map(str, e.free_symbols & set(spec.inputs)))}; "
-                            f"an input may appear in the `forces`, the `dissipation` and the `constraints` only "
-                            f"(write a potential that depends on it as a generalized force)")
-            return True
-        extra = e.free_symbols - allowed
-        if extra:
-            hint = ("; the time is `knifeedge.derive.t`" if "t" in map(str, extra) and t in allowed
-                    else "; only the right-hand side, the forces, the Lagrangian and the constraints may depend on "
-                         "the time" if t in e.free_symbols else "")
-            problems.append(f"{what} contains undeclared symbols {sorted(map(str, extra))} "
-                            f"(declare them as coordinates, velocities or params{hint})")
-            return True
-        if e.atoms(sp.Derivative) or any(isinstance(f, sp.core.function.AppliedUndef) for f in e.atoms(sp.Function)):
-            problems.append(f"{what} contains functions of time or derivatives; use plain symbols for q and q_dot")
-            return True
-        return False
 
-    qd = sp.Matrix(spec.velocities)
-    if not undeclared(spec.lagrangian, "the `lagrangian`") and _velocity_degree(spec.lagrangian,
-                                                                              set(spec.velocities)) > 2:
+def _declared(spec: ModelSpec) -> set:
+    """The symbols an equation may hold: the coordinates, velocities, parameters and the time."""
+    return set(spec.coordinates) | set(spec.velocities) | set(spec.params) | {t}
+
+
+def _driven(spec: ModelSpec) -> set:
+    """The symbols of the equations where the inputs may appear: :func:`_declared` and the inputs."""
+    return _declared(spec) | set(spec.inputs)
+
+
+def _expression_problem(spec: ModelSpec, e, what: str, allowed: set | None = None) -> str | None:
+    """The problem of expression ``e`` (named ``what``) holding symbols outside ``allowed``, or ``None``.
+
+    ``allowed`` defaults to :func:`_declared`, and then an input is refused with its own sentence.
+    """
+    check_inputs = allowed is None
+    if allowed is None:
+        allowed = _declared(spec)
+    if not isinstance(e, sp.Basic):
+        return f"{what} must be a SymPy expression, got {type(e).__name__}"
+    if check_inputs and e.free_symbols & set(spec.inputs):
+        return (f"{what} contains the inputs {sorted(map(str, e.free_symbols & set(spec.inputs)))}; "
+                f"an input may appear in the `forces`, the `dissipation` and the `constraints` only "
+                f"(write a potential that depends on it as a generalized force)")
+    extra = e.free_symbols - allowed
+    if extra:
+        hint = ("; the time is `knifeedge.derive.t`" if "t" in map(str, extra) and t in allowed
+                else "; only the right-hand side, the forces, the Lagrangian and the constraints may depend on "
+                     "the time" if t in e.free_symbols else "")
+        return (f"{what} contains undeclared symbols {sorted(map(str, extra))} "
+                f"(declare them as coordinates, velocities or params{hint})")
+    if e.atoms(sp.Derivative) or any(isinstance(f, sp.core.function.AppliedUndef) for f in e.atoms(sp.Function)):
+        return f"{what} contains functions of time or derivatives; use plain symbols for q and q_dot"
+    return None
+
+
+def _lagrangian_problems(spec: ModelSpec) -> list:
+    """The Lagrangian: declared symbols only, and at most quadratic in the velocities."""
+    bad = _expression_problem(spec, spec.lagrangian, "the `lagrangian`")
+    if bad is not None:
+        return [bad]
+    if _velocity_degree(spec.lagrangian, set(spec.velocities)) > 2:
         hess = [sp.diff(spec.lagrangian, v, w) for v in spec.velocities for w in spec.velocities]
         if any(sp.diff(e, v) != 0 for e in hess for v in spec.velocities):
-            problems.append("the `lagrangian` must be at most quadratic in the velocities "
-                            "(its mass matrix d2L/dq_dot2 may depend on the coordinates only)")
+            return ["the `lagrangian` must be at most quadratic in the velocities "
+                    "(its mass matrix d2L/dq_dot2 may depend on the coordinates only)"]
+    return []
+
+
+def _constraint_problems(spec: ModelSpec) -> list:
+    """The velocity constraints: affine in the velocities, one label each."""
+    problems: list = []
+    qd = sp.Matrix(spec.velocities)
     for j, c in enumerate(spec.constraints):
         label = spec.constraint_labels[j] if j < len(spec.constraint_labels) else f"c{j + 1}"
-        if undeclared(c, f"constraint {label!r}", allowed=driven):
+        bad = _expression_problem(spec, c, f"constraint {label!r}", allowed=_driven(spec))
+        if bad is not None:
+            problems.append(bad)
             continue
         lin = sp.Matrix([c]).jacobian(qd)
         if sp.expand(c - (lin * qd)[0]).free_symbols & set(spec.velocities) or any(
@@ -426,9 +511,17 @@ def _contract_problems(spec: ModelSpec) -> list:
                             f"got {c}")
     if len(spec.constraint_labels) != len(spec.constraints):
         problems.append(f"`constraint_labels` needs one label per constraint ({len(spec.constraints)})")
+    return problems
+
+
+def _holonomic_problems(spec: ModelSpec) -> list:
+    """The holonomic constraints: functions of the kept coordinates and the time, one label each."""
+    problems: list = []
     for j, f in enumerate(spec.holonomic):
         label = spec.holonomic_labels[j] if j < len(spec.holonomic_labels) else f"h{j + 1}"
-        if undeclared(f, f"holonomic constraint {label!r}"):
+        bad = _expression_problem(spec, f, f"holonomic constraint {label!r}")
+        if bad is not None:
+            problems.append(bad)
             continue
         if f.free_symbols & set(spec.velocities):
             problems.append(f"holonomic constraint {label!r} must be a function f(q, t) of the coordinates (and the "
@@ -439,24 +532,39 @@ def _contract_problems(spec: ModelSpec) -> list:
                             f"keep; remove them from `cyclic`")
     if len(spec.holonomic_labels) != len(spec.holonomic):
         problems.append(f"`holonomic_labels` needs one label per holonomic constraint ({len(spec.holonomic)})")
-    problems += _rate_problems(spec)
+    return problems
+
+
+def _dependent_problems(spec: ModelSpec) -> list:
+    """The ``dependent`` coordinates: coordinates, one per constraint, and at least one left independent."""
     not_coord = [q for q in spec.dependent if q not in spec.coordinates]
     if not_coord:
-        problems.append(f"`dependent` entries {not_coord} are not coordinates")
-    elif len(spec.dependent) != len(spec.constraints) + len(spec.holonomic):
-        problems.append(f"`dependent` must name one coordinate per constraint and holonomic constraint "
-                        f"({len(spec.constraints) + len(spec.holonomic)}), "
-                        f"got {len(spec.dependent)}")
-    elif not spec.independent:
-        problems.append(f"every velocity is constrained ({len(spec.constraints)} constraints on {n} coordinates, "
-                        f"all `dependent`): nothing is left to move; a model needs at least one independent "
-                        f"coordinate (fewer constraints than coordinates)")
+        return [f"`dependent` entries {not_coord} are not coordinates"]
+    if len(spec.dependent) != len(spec.constraints) + len(spec.holonomic):
+        return [f"`dependent` must name one coordinate per constraint and holonomic constraint "
+                f"({len(spec.constraints) + len(spec.holonomic)}), "
+                f"got {len(spec.dependent)}"]
+    if not spec.independent:
+        return [f"every velocity is constrained ({len(spec.constraints)} constraints on {len(spec.coordinates)} "
+                f"coordinates, all `dependent`): nothing is left to move; a model needs at least one independent "
+                f"coordinate (fewer constraints than coordinates)"]
+    return []
+
+
+def _cyclic_problems(spec: ModelSpec) -> list:
+    """The ``cyclic`` mapping: coordinates to their representative values."""
     if not isinstance(spec.cyclic, dict):
-        problems.append("`cyclic` must be a mapping {coordinate: representative value}")
-    else:
-        bad = [q for q in spec.cyclic if q not in spec.coordinates]
-        if bad:
-            problems.append(f"`cyclic` entries {bad} are not coordinates")
+        return ["`cyclic` must be a mapping {coordinate: representative value}"]
+    bad = [q for q in spec.cyclic if q not in spec.coordinates]
+    if bad:
+        return [f"`cyclic` entries {bad} are not coordinates"]
+    return []
+
+
+def _small_and_pose_problems(spec: ModelSpec) -> list:
+    """The ``small`` coordinates (time-independent equations, independent non-cyclic coordinates) and the
+    ``pose`` (cyclic coordinates)."""
+    problems: list = []
     timed = [what for what, e in (("lagrangian", spec.lagrangian), ("constraints", spec.velocity_constraints),
                                   ("forces", spec.forces), ("dissipation", spec.dissipation))
              if any(isinstance(x, sp.Basic) and x.has(t) for x in (e if isinstance(e, tuple) else (e,)))]
@@ -471,19 +579,22 @@ def _contract_problems(spec: ModelSpec) -> list:
     bad = [q for q in spec.pose if q not in spec.cyclic]
     if bad:
         problems.append(f"`pose` entries {bad} must be cyclic coordinates")
+    return problems
+
+
+def _param_domain_problems(spec: ModelSpec) -> list:
+    """The ``param_domains``: each one of :data:`PARAM_DOMAINS`."""
+    problems: list = []
     for q in spec.params:
         dom = spec.lookup(spec.param_domains, q)
         if dom is not None and dom not in PARAM_DOMAINS:
             problems.append(f"`param_domains` of {q} must be one of {PARAM_DOMAINS}, got {dom!r}")
-    if problems:
-        return problems
-    # the closed state and what refers to it
-    try:
-        natural = spec.natural_state
-    except Exception as exc:  # noqa: BLE001 -- reported with the others
-        problems.append(f"cannot form the closed state: {exc}")
-        return problems
-    state_names = [str(s) for s in natural]
+    return problems
+
+
+def _state_order_and_unit_problems(spec: ModelSpec, state_names: list) -> list:
+    """The ``state_order`` (a permutation of the closed state) and the ``units`` (strings, of known names)."""
+    problems: list = []
     if spec.state_order and sorted(map(str, spec.state_order)) != sorted(state_names):
         problems.append(f"`state_order` must be a permutation of the closed state {tuple(state_names)}, "
                         f"got {tuple(map(str, spec.state_order))}")
@@ -494,34 +605,55 @@ def _contract_problems(spec: ModelSpec) -> list:
     bad = [k for k, u in spec.units.items() if not isinstance(u, str)]
     if bad:
         problems.append(f"`units` must be strings; not for {bad}")
-    state_syms = set(natural)
+    return problems
+
+
+def _event_problems(spec: ModelSpec, natural, state_names: list) -> list:
+    """The ``events`` (functions of the closed state and the parameters) and the ``reversal_events``."""
+    problems: list = []
+    allowed = set(natural) | set(spec.params)
     for name, e in spec.events.items():
         if not str(name).isidentifier():
             problems.append(f"event name {name!r} must be an identifier")
-        undeclared(e, f"event {name!r}", allowed=state_syms | set(spec.params))
+        bad = _expression_problem(spec, e, f"event {name!r}", allowed=allowed)
+        if bad is not None:
+            problems.append(bad)
     for ev in spec.reversal_events:
         if str(ev) not in state_names and str(ev) not in map(str, spec.events):
             problems.append(f"`reversal_events` entry {ev} is neither a closed-state variable {tuple(state_names)} "
                             f"nor an event of `events`")
-    if spec.defaults:
-        p_names = [str(q) for q in spec.params]
-        bad = sorted(str(k) for k in spec.defaults if str(k) not in p_names + state_names)
-        if bad:
-            problems.append(f"`defaults` names {bad} that are neither parameters nor closed-state variables")
-        missing = [n_ for n_ in p_names if n_ not in map(str, spec.defaults)]
-        if missing:
-            problems.append(f"`defaults` lacks the parameters {missing}")
-        for k, v in spec.defaults.items():
-            try:
-                fv = float(v)
-            except (TypeError, ValueError):
-                problems.append(f"default of {k} must be a number, got {v!r}")
-                continue
-            if not math.isfinite(fv):
-                problems.append(f"default of {k} must be finite, got {v!r}")
-                continue
-            if str(k) in p_names and _param_domain(spec, sp.Symbol(str(k))) == "positive" and not fv > 0:
-                problems.append(f"default of {k} must be positive (its domain), got {v!r}")
+    return problems
+
+
+def _default_problems(spec: ModelSpec, state_names: list) -> list:
+    """The ``defaults``: of known names, every parameter, finite numbers, positive in a positive domain."""
+    if not spec.defaults:
+        return []
+    problems: list = []
+    p_names = [str(q) for q in spec.params]
+    bad = sorted(str(k) for k in spec.defaults if str(k) not in p_names + state_names)
+    if bad:
+        problems.append(f"`defaults` names {bad} that are neither parameters nor closed-state variables")
+    missing = [n_ for n_ in p_names if n_ not in map(str, spec.defaults)]
+    if missing:
+        problems.append(f"`defaults` lacks the parameters {missing}")
+    for k, v in spec.defaults.items():
+        try:
+            fv = float(v)
+        except (TypeError, ValueError):
+            problems.append(f"default of {k} must be a number, got {v!r}")
+            continue
+        if not math.isfinite(fv):
+            problems.append(f"default of {k} must be finite, got {v!r}")
+            continue
+        if str(k) in p_names and _param_domain(spec, sp.Symbol(str(k))) == "positive" and not fv > 0:
+            problems.append(f"default of {k} must be positive (its domain), got {v!r}")
+    return problems
+
+
+def _validity_problems(spec: ModelSpec, state_names: list) -> list:
+    """The ``validity`` bounds: per fidelity, finite positive bounds of closed-state variables."""
+    problems: list = []
     for fid, bounds in spec.validity.items():
         if fid not in _FIDELITY_NAMES:
             problems.append(f"`validity` key {fid!r} is not a fidelity {_FIDELITY_NAMES}")
@@ -533,13 +665,30 @@ def _contract_problems(spec: ModelSpec) -> list:
         if bad:
             problems.append(f"`validity[{fid!r}]` bounds of {bad} must be finite positive numbers (leave a state "
                             f"out for no bound)")
+    return problems
+
+
+def _force_problems(spec: ModelSpec) -> list:
+    """The ``dissipation`` function and the generalized ``forces`` (one per coordinate); both may hold inputs."""
+    problems: list = []
     if spec.dissipation is not None:
-        undeclared(spec.dissipation, "the `dissipation` function", allowed=driven)
+        bad = _expression_problem(spec, spec.dissipation, "the `dissipation` function", allowed=_driven(spec))
+        if bad is not None:
+            problems.append(bad)
     if spec.forces:
+        n = len(spec.coordinates)
         if len(spec.forces) != n:
             problems.append(f"`forces` needs one generalized force per coordinate ({n}), got {len(spec.forces)}")
         for q, f in zip(spec.coordinates, spec.forces):
-            undeclared(sp.sympify(f), f"the generalized force on {q}", allowed=driven)
+            bad = _expression_problem(spec, sp.sympify(f), f"the generalized force on {q}", allowed=_driven(spec))
+            if bad is not None:
+                problems.append(bad)
+    return problems
+
+
+def _export_problems(spec: ModelSpec) -> list:
+    """The ``exports``: helpers defined at the top level of ``extra_source``."""
+    problems: list = []
     if spec.exports and not spec.extra_source:
         problems.append("`exports` names helpers but `extra_source` is empty")
     for name in spec.exports:
@@ -772,73 +921,29 @@ def derive(spec: ModelSpec) -> ReducedSystem:
     if choose_elimination(spec, len(spec.independent), affine_terms(spec).subs(at)) == "numeric":
         return _numeric_system(spec, at, M, h, A, c)
     M, h, A, c = (X.subs(at) for X in (M, h, A, c))
-    dep, ind, A_dep, A_ind = _split(spec, A)
-    if A_dep.det() == 0:
-        raise ModelSpecError(spec.error_message(
-            f"the constraints do not determine the velocities of `dependent` {spec.dependent} at the representative "
-            f"point {at} (their block of the constraint matrix is singular); choose other dependent coordinates"))
-    A_dep_inv = A_dep.inv().applyfunc(sp.trigsimp)
-
-    qd_ind = sp.Matrix([spec.velocities[i] for i in ind])
+    dep, ind, A_dep_inv, A_ind = _dependent_block(spec, A, at)
     qdd_ind = sp.Matrix([spec.accelerations[i] for i in ind])
     b = affine_terms(spec).subs(at)
-    dep_vel = dict(zip((spec.velocities[i] for i in dep), sp.expand(
-        -A_dep_inv * A_ind * qd_ind if all(e == 0 for e in b) else -A_dep_inv * (A_ind * qd_ind + b))))
-    # dependent accelerations from the differentiated constraints
-    dep_acc = dict(
-        zip((spec.accelerations[i] for i in dep), sp.expand(-A_dep_inv * (A_ind * qdd_ind + c)))
-    )
-
-    qdd = sp.Matrix(spec.accelerations)
-    residual = (M * qdd + h).subs(dep_acc).subs(dep_vel)
-    residual = residual.applyfunc(sp.expand)
-    r_dep = sp.Matrix([residual[i] for i in dep])
-    r_ind = sp.Matrix([residual[i] for i in ind])
-    lam = (A_dep_inv.T * r_dep).applyfunc(sp.expand)  # multipliers, implicit in q_ddot_ind
-    reduced = (r_ind - A_ind.T * lam).applyfunc(sp.expand)
+    dep_vel, dep_acc = _dependent_motion(spec, dep, ind, A_dep_inv, A_ind, b, c)
+    lam, reduced = _reduced_equations(spec, M, h, dep, ind, A_dep_inv, A_ind, dep_vel, dep_acc)
 
     variables = list(spec.velocity_state)
-    mass = reduced.jacobian(qdd_ind).applyfunc(lambda e: tidy(e, variables))
-    forcing = (-reduced.subs({a: 0 for a in qdd_ind})).applyfunc(lambda e: tidy(e, variables))
-    leftover = set().union(*(e.free_symbols for e in reduced)) & (
-        set(spec.cyclic) | {spec.velocity_of(q) for q in spec.dependent}
-    )
-    if leftover:
-        raise ModelSpecError(spec.error_message(
-            f"the reduced equations do not close: they still contain {sorted(map(str, leftover))}; the coordinates "
-            f"declared `cyclic` are not all symmetries of the Lagrangian and constraints"))
+    mass, forcing = _mass_and_forcing(spec, reduced, qdd_ind, variables)
+    explicit, lam, multipliers = _explicit_accelerations(mass, forcing, lam, qdd_ind, variables)
 
-    det = tidy(mass.det(), variables)
-    adj = mass.adjugate()
-    explicit = sp.Matrix([tidy((adj.row(k) * forcing)[0] / det, variables) for k in range(len(ind))])
-    acc_sub = dict(zip(qdd_ind, explicit))
-    lam = lam.applyfunc(lambda e: tidy(e, variables + list(qdd_ind)))
-    multipliers = lam.subs(acc_sub).applyfunc(lambda e: tidy(e, variables))
-
-    # energy (Jacobi integral) on the constraint manifold
-    qd = sp.Matrix(spec.velocities)
     L = spec.lagrangian.subs(at)
-    energy = sum(v * sp.diff(L, v) for v in qd) - L
-    energy = tidy(energy.subs(dep_vel), variables)
-    dropped = _dropped_potential(spec, at)
-    if dropped != 0:
-        energy = energy + dropped
-    power = None
-    if spec.dissipative:
-        power = -(qd.T * _without_inputs(spec, generalized_forces(spec)).subs(at))[0]
-        power = tidy(sp.expand(power.subs(dep_vel)), variables)
+    energy = _energy(spec, at, L, dep_vel, variables)
+    power = _dissipated_power(spec, at, dep_vel, variables)
     power_input = _power_input(spec, L, b, multipliers, dep_vel, variables, at)
 
     # pose rates at a general pose
     general = dependent_velocities(spec)
     pose_rates = {q: general.get(spec.velocity_of(q), spec.velocity_of(q)) for q in spec.pose}
 
-    state = spec.state
-    accelerations = tuple(qdd_ind)
     system = ReducedSystem(
         spec=spec,
-        state=state,
-        accelerations=accelerations,
+        state=spec.state,
+        accelerations=tuple(qdd_ind),
         mass_matrix=mass,
         forcing=forcing,
         explicit=explicit,
@@ -853,6 +958,102 @@ def derive(spec: ModelSpec) -> ReducedSystem:
     if spec.quasi_velocities:
         system = _with_quasi_velocities(system, at, dep_vel, dep_acc, general)
     return system
+
+
+def _dependent_block(spec: ModelSpec, A: sp.Matrix, at: dict) -> tuple:
+    """``(dep, ind, A_dep_inv, A_ind)``: the indices of the dependent and independent coordinates, the inverse
+    of the constraint matrix's dependent block (trig-simplified) and its independent block, at ``at``.
+
+    Raises :class:`ModelSpecError` when the dependent block is singular at the representative point.
+    """
+    dep, ind, A_dep, A_ind = _split(spec, A)
+    if A_dep.det() == 0:
+        raise ModelSpecError(spec.error_message(
+            f"the constraints do not determine the velocities of `dependent` {spec.dependent} at the representative "
+            f"point {at} (their block of the constraint matrix is singular); choose other dependent coordinates"))
+    return dep, ind, A_dep.inv().applyfunc(sp.trigsimp), A_ind
+
+
+def _dependent_motion(spec: ModelSpec, dep: list, ind: list, A_dep_inv: sp.Matrix, A_ind: sp.Matrix,
+                      b: sp.Matrix, c: sp.Matrix) -> tuple:
+    """``(dep_vel, dep_acc)``: the dependent velocities from the constraints ``A q_dot + b = 0`` and the
+    dependent accelerations from the differentiated constraints (whose velocity terms are ``c``), each a
+    dict from the dependent symbol to its expression in the independent ones."""
+    qd_ind = sp.Matrix([spec.velocities[i] for i in ind])
+    qdd_ind = sp.Matrix([spec.accelerations[i] for i in ind])
+    dep_vel = dict(zip((spec.velocities[i] for i in dep), sp.expand(
+        -A_dep_inv * A_ind * qd_ind if all(e == 0 for e in b) else -A_dep_inv * (A_ind * qd_ind + b))))
+    dep_acc = dict(
+        zip((spec.accelerations[i] for i in dep), sp.expand(-A_dep_inv * (A_ind * qdd_ind + c)))
+    )
+    return dep_vel, dep_acc
+
+
+def _reduced_equations(spec: ModelSpec, M: sp.Matrix, h: sp.Matrix, dep: list, ind: list, A_dep_inv: sp.Matrix,
+                       A_ind: sp.Matrix, dep_vel: dict, dep_acc: dict) -> tuple:
+    """``(lam, reduced)``: the multipliers, implicit in the independent accelerations, from the dependent rows
+    of ``M q_ddot + h``, and the independent rows with the multipliers eliminated (both expanded)."""
+    qdd = sp.Matrix(spec.accelerations)
+    residual = (M * qdd + h).subs(dep_acc).subs(dep_vel)
+    residual = residual.applyfunc(sp.expand)
+    r_dep = sp.Matrix([residual[i] for i in dep])
+    r_ind = sp.Matrix([residual[i] for i in ind])
+    lam = (A_dep_inv.T * r_dep).applyfunc(sp.expand)  # multipliers, implicit in q_ddot_ind
+    reduced = (r_ind - A_ind.T * lam).applyfunc(sp.expand)
+    return lam, reduced
+
+
+def _mass_and_forcing(spec: ModelSpec, reduced: sp.Matrix, qdd_ind: sp.Matrix, variables: list) -> tuple:
+    """``(mass, forcing)`` of the reduced equations ``mass q_ddot_ind = forcing``, tidied.
+
+    Raises :class:`ModelSpecError` when the reduced equations still hold a cyclic coordinate or a dependent
+    velocity (the ``cyclic`` coordinates are then not all symmetries).
+    """
+    mass = reduced.jacobian(qdd_ind).applyfunc(lambda e: tidy(e, variables))
+    forcing = (-reduced.subs({a: 0 for a in qdd_ind})).applyfunc(lambda e: tidy(e, variables))
+    leftover = set().union(*(e.free_symbols for e in reduced)) & (
+        set(spec.cyclic) | {spec.velocity_of(q) for q in spec.dependent}
+    )
+    if leftover:
+        raise ModelSpecError(spec.error_message(
+            f"the reduced equations do not close: they still contain {sorted(map(str, leftover))}; the coordinates "
+            f"declared `cyclic` are not all symmetries of the Lagrangian and constraints"))
+    return mass, forcing
+
+
+def _explicit_accelerations(mass: sp.Matrix, forcing: sp.Matrix, lam: sp.Matrix, qdd_ind: sp.Matrix,
+                            variables: list) -> tuple:
+    """``(explicit, lam, multipliers)``: the independent accelerations by the adjugate over the determinant,
+    the implicit multipliers tidied, and the multipliers with the explicit accelerations put in."""
+    det = tidy(mass.det(), variables)
+    adj = mass.adjugate()
+    explicit = sp.Matrix([tidy((adj.row(k) * forcing)[0] / det, variables) for k in range(len(qdd_ind))])
+    acc_sub = dict(zip(qdd_ind, explicit))
+    lam = lam.applyfunc(lambda e: tidy(e, variables + list(qdd_ind)))
+    multipliers = lam.subs(acc_sub).applyfunc(lambda e: tidy(e, variables))
+    return explicit, lam, multipliers
+
+
+def _energy(spec: ModelSpec, at: dict, L: sp.Expr, dep_vel: dict, variables: list) -> sp.Expr:
+    """The energy (Jacobi integral) of the Lagrangian ``L`` on the constraint manifold, with the potential
+    dropped by the representative point added back."""
+    qd = sp.Matrix(spec.velocities)
+    energy = sum(v * sp.diff(L, v) for v in qd) - L
+    energy = tidy(energy.subs(dep_vel), variables)
+    dropped = _dropped_potential(spec, at)
+    if dropped != 0:
+        energy = energy + dropped
+    return energy
+
+
+def _dissipated_power(spec: ModelSpec, at: dict, dep_vel: dict, variables: list) -> sp.Expr | None:
+    """The power the generalized forces (the inputs left out) take from the system; ``None`` without
+    dissipation."""
+    if not spec.dissipative:
+        return None
+    qd = sp.Matrix(spec.velocities)
+    power = -(qd.T * _without_inputs(spec, generalized_forces(spec)).subs(at))[0]
+    return tidy(sp.expand(power.subs(dep_vel)), variables)
 
 
 #: ``elimination="auto"`` solves the multipliers numerically from this many independent accelerations on (measured

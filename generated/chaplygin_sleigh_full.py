@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/sleigh.py (model 'chaplygin_sleigh',
 constraints knife_edge) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:38d72285a8ffb64e88e937b5e4acb161b541955491f529f5f089f18cf2db5462
+SymPy 1.14.0; input hash sha256:64eecea6be796ada4659c656169517ff8570aa4c61397337d062f69596e1cae2
 
 Chaplygin sleigh: a rigid body on the plane with a knife edge at its rear contact point (x, y) that forbids sideways motion; heading phi, centre of mass at distance a ahead of the contact, radius of gyration k about the centre of mass; v is the speed along the axis.
 
@@ -60,7 +60,7 @@ MULTIPLIER_NAMES = ('knife_edge',)
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '38d72285a8ffb64e88e937b5e4acb161b541955491f529f5f089f18cf2db5462'
+INPUT_HASH = '64eecea6be796ada4659c656169517ff8570aa4c61397337d062f69596e1cae2'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -429,4 +429,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 2
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '506745d84c63843e77c274819bd6c478c42b56b813960cc89a31ffba432c2a61'
+MODULE_SHA256 = 'f35321241c4f82a5ba66ed3baa4fac715bf4f5ad6d567d548b08e143733c475c'

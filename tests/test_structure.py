@@ -18,8 +18,6 @@ LONG_FUNCTIONS_ALLOWED = {
     "src/knifeedge/simulate.py:_run_compiled",
     "src/knifeedge/simulate.py:_run_compiled.run",
     "src/knifeedge/simulate.py:_scipy_phase",
-    "derivation/engine.py:_contract_problems",
-    "derivation/engine.py:derive",
 }
 
 
