@@ -15,9 +15,6 @@ INTEGRATOR_CYCLE_IMPORTS: set = set()
 LONG_FUNCTIONS_ALLOWED = {
     "src/knifeedge/integrators/templates/erk.py:solve",
     "src/knifeedge/integrators/templates/fixed.py:solve",
-    "src/knifeedge/simulate.py:_run_compiled",
-    "src/knifeedge/simulate.py:_run_compiled.run",
-    "src/knifeedge/simulate.py:_scipy_phase",
 }
 
 

@@ -263,113 +263,176 @@ def _split_events(names: tuple, ev_t: np.ndarray, ev_k: np.ndarray) -> dict:
 
 
 def _run_compiled(name: str):
+    """The runner of compiled method ``name``: ``run(r)`` steps its kernel chunk by chunk (:class:`_CompiledRun`).
+
+    A SciPy twin steps the run meanwhile when the kernel compiles in the background (:func:`_while_compiling`).
+    """
     spec = COMPILED_METHODS[ALIASES.get(name, name)]
 
     def run(r: _Run):
-        model = r.model
-        solve = kernel(model, name)
-        names = _event_names(model, r.events)
-        events = np.array([_event_code(model, e) for e in names], dtype=np.int64)
-        every = r.t_eval is None
-        pair = _mode_pairs(model)
-        n = model.n_state
-        # each call of the kernel fills the rows of a buffer after those stored (a C-contiguous tail: the
-        # kernel's argument types stay those it was compiled for); a full buffer is followed by one sized from
-        # the pace of the run so far (nothing copied), and all are transposed into the result at the end
-        if every:
-            t_eval = np.empty(0)
-            most = min(r.max_steps, 2**62) + 1  # the start and at most one row per accepted step
-            cap = min(ROWS_FIRST, most)
-            used = 1
-        else:
-            t_eval = np.ascontiguousarray(r.t_eval)
-            cap = t_eval.size + 1  # every output time, and a spare row: a tail is never empty
-            used = int(np.searchsorted(t_eval, r.t0, side="right"))  # times at the start: the initial state
-        nfev = nacc = nrej = 0
-        t, y, f, carry = r.t0, r.y0, r.y0, 0.0
-        if spec.fixed_step:
-            n_steps = math.ceil((r.t1 - r.t0) / r.h)
-            h = (r.t1 - r.t0) / n_steps
-            comp, Z = np.zeros(n), np.empty((4, n))  # 4 >= stages of every fixed method
-            if every:  # the rows are known: n_steps + 1 (up to ROWS_AHEAD of them now)
-                cap = min(n_steps + 1, most, ROWS_AHEAD)
-        ts, ys = _rows_buffer(n, cap)
-        full, stored = [], 0  # the full buffers, their rows
-        if every:
-            ts[0], ys[0] = r.t0, r.y0
-        else:
-            ts[:used], ys[:used] = t_eval[:used], r.y0
-        per_step = EVENTS_PER_STEP * events.size  # most crossings one step records
-        room = max(EVENTS_FIRST, 4 * per_step)
-        ev_t, ev_k = np.empty(room), np.empty(room, dtype=np.int64)
-        n_ev = 0
+        c = _CompiledRun(r, spec, name)
         twin = SCIPY_TWINS.get(spec.name)
         if (twin and not spec.fixed_step and r.error_control == "component" and compile_mode() == "background"
-                and not kernel_compiled(model, name)):
-            ph = _while_compiling(r, spec, twin, names, events, pair)
+                and not kernel_compiled(r.model, name)):
+            ph = _while_compiling(r, spec, twin, c.names, c.events, c.pair)
             if ph.done:
-                pt, py = (np.array(ph.ts), np.array(ph.ys).reshape(-1, n)) if every else _joined(ph.ts, ph.ys, n)
-                found = {e: np.array(v, dtype=float) for e, v in ph.found.items()}
-                return pt, np.ascontiguousarray(py.T), found, ph.outcome, ph.nfev, ph.nsteps, 0
-            solve = kernel(model, name)
-            if every:  # the phase's rows (the start included) come first; the buffer takes the kernel's
-                full.append((np.array(ph.ts), np.array(ph.ys)))
-                stored, used = len(ph.ts), 0
-            else:
-                pt, py = _joined(ph.ts, ph.ys, n)
-                ts[:pt.size], ys[:pt.size] = pt, py
-                used = pt.size
-            pe_t = np.array([x for e in names for x in ph.found[e]], dtype=float)
-            pe_k = np.array([k for k, e in enumerate(names) for _ in ph.found[e]], dtype=np.int64)
-            if pe_t.size + per_step > ev_t.size:
-                ev_t, ev_k = np.empty(2 * (pe_t.size + per_step)), np.empty(2 * (pe_t.size + per_step), dtype=np.int64)
-            n_ev = pe_t.size
-            ev_t[:n_ev], ev_k[:n_ev] = pe_t, pe_k
-            nfev, nacc = ph.nfev, ph.nsteps
-            sv = ph.solver
-            t, y, f, carry = float(sv.t), np.array(sv.y, dtype=float), np.array(sv.f, dtype=float), float(sv.h_abs)
+                return _phase_result(ph, c.every, c.n)
+            c.continue_from(ph)
+        c.step_to_end()
+        return c.result()
+
+    return run
+
+
+def _phase_result(ph: "_Phase", every: bool, n: int) -> tuple:
+    """The result of a run that a SciPy phase took from start to end, as a compiled run returns it."""
+    pt, py = (np.array(ph.ts), np.array(ph.ys).reshape(-1, n)) if every else _joined(ph.ts, ph.ys, n)
+    found = {e: np.array(v, dtype=float) for e, v in ph.found.items()}
+    return pt, np.ascontiguousarray(py.T), found, ph.outcome, ph.nfev, ph.nsteps, 0
+
+
+def _call_kernel(solve, *args) -> tuple:
+    """``solve(*args)`` (repaired if its cache is stale); a Ctrl-C that arrived while numba called back into
+    Python is raised as the ``KeyboardInterrupt`` it is."""
+    try:
+        return call_repairing(solve, *args)
+    except SystemError as exc:  # Ctrl-C that arrived while numba called back into Python
+        cause = exc.__cause__
+        while cause is not None and not isinstance(cause, KeyboardInterrupt):
+            cause = cause.__cause__
+        if cause is not None:
+            raise KeyboardInterrupt from None
+        raise
+
+
+class _CompiledRun:
+    """One run of the compiled kernel of a method: its output and event buffers, counters and current step.
+
+    Each call of the kernel fills the rows of a buffer after those stored (a C-contiguous tail: the kernel's
+    argument types stay those it was compiled for); a full buffer is followed by one sized from the pace of the
+    run so far (nothing copied), and all are transposed into the result at the end.
+    """
+
+    def __init__(self, r: _Run, spec, name: str):
+        model = r.model
+        self.r, self.spec, self.name = r, spec, name
+        self.solve = kernel(model, name)
+        self.names = _event_names(model, r.events)
+        self.events = np.array([_event_code(model, e) for e in self.names], dtype=np.int64)
+        self.every = r.t_eval is None
+        self.pair = _mode_pairs(model)
+        self.n = model.n_state
+        self.nfev = self.nacc = self.nrej = 0
+        self.t, self.y, self.f, self.carry = r.t0, r.y0, r.y0, 0.0
+        self.code = None
+        self._start_rows()
+        self._start_events()
+
+    def _start_rows(self) -> None:
+        """The first output buffer, holding the initial state (once per output time at the start)."""
+        r, n, every = self.r, self.n, self.every
+        if every:
+            self.t_eval = np.empty(0)
+            self.most = min(r.max_steps, 2**62) + 1  # the start and at most one row per accepted step
+            cap = min(ROWS_FIRST, self.most)
+            self.used = 1
+        else:
+            self.t_eval = np.ascontiguousarray(r.t_eval)
+            cap = self.t_eval.size + 1  # every output time, and a spare row: a tail is never empty
+            self.used = int(np.searchsorted(self.t_eval, r.t0, side="right"))  # times at the start: the initial state
+        if self.spec.fixed_step:
+            self.n_steps = math.ceil((r.t1 - r.t0) / r.h)
+            self.h = (r.t1 - r.t0) / self.n_steps
+            self.comp, self.Z = np.zeros(n), np.empty((4, n))  # 4 >= stages of every fixed method
+            if every:  # the rows are known: n_steps + 1 (up to ROWS_AHEAD of them now)
+                cap = min(self.n_steps + 1, self.most, ROWS_AHEAD)
+        self.ts, self.ys = _rows_buffer(n, cap)
+        self.full, self.stored = [], 0  # the full buffers, their rows
+        if every:
+            self.ts[0], self.ys[0] = r.t0, r.y0
+        else:
+            self.ts[:self.used], self.ys[:self.used] = self.t_eval[:self.used], r.y0
+
+    def _start_events(self) -> None:
+        """The event buffers, with room for several steps' crossings."""
+        self.per_step = EVENTS_PER_STEP * self.events.size  # most crossings one step records
+        room = max(EVENTS_FIRST, 4 * self.per_step)
+        self.ev_t, self.ev_k = np.empty(room), np.empty(room, dtype=np.int64)
+        self.n_ev = 0
+
+    def continue_from(self, ph: "_Phase") -> None:
+        """Take over the rows, crossings, counters and solver state of the SciPy phase ``ph`` that stepped the
+        run while the kernel compiled."""
+        n = self.n
+        self.solve = kernel(self.r.model, self.name)
+        if self.every:  # the phase's rows (the start included) come first; the buffer takes the kernel's
+            self.full.append((np.array(ph.ts), np.array(ph.ys)))
+            self.stored, self.used = len(ph.ts), 0
+        else:
+            pt, py = _joined(ph.ts, ph.ys, n)
+            self.ts[:pt.size], self.ys[:pt.size] = pt, py
+            self.used = pt.size
+        pe_t = np.array([x for e in self.names for x in ph.found[e]], dtype=float)
+        pe_k = np.array([k for k, e in enumerate(self.names) for _ in ph.found[e]], dtype=np.int64)
+        per_step = self.per_step
+        if pe_t.size + per_step > self.ev_t.size:
+            self.ev_t = np.empty(2 * (pe_t.size + per_step))
+            self.ev_k = np.empty(2 * (pe_t.size + per_step), dtype=np.int64)
+        self.n_ev = pe_t.size
+        self.ev_t[:self.n_ev], self.ev_k[:self.n_ev] = pe_t, pe_k
+        self.nfev, self.nacc = ph.nfev, ph.nsteps
+        sv = ph.solver
+        self.t, self.y = float(sv.t), np.array(sv.y, dtype=float)
+        self.f, self.carry = np.array(sv.f, dtype=float), float(sv.h_abs)
+
+    def _kernel_args(self, left: int, chunk: int) -> tuple:
+        """The kernel's arguments before its output tails, for at most ``chunk`` of ``left`` steps."""
+        r = self.r
+        ahead = self.t_eval if self.every else self.t_eval[self.used:]
+        if self.spec.fixed_step:
+            return (r.t0, r.t1, self.y, self.f, r.p, self.h, self.n_steps, int(self.carry), r.atol, ahead,
+                    self.every, self.events, left, self.pair, chunk, self.comp, self.Z)
+        return (self.t, r.t1, self.y, self.f, r.p, r.rtol, r.atol, self.carry, r.max_step, ahead, self.every,
+                self.events, left, self.pair, r.error_control == "mode", chunk)
+
+    def step_to_end(self) -> None:
+        """Call the kernel chunk by chunk until it stops for a reason other than a pause (``code`` 1)."""
         while True:
-            left = min(r.max_steps - nacc, 2**62)
+            left = min(self.r.max_steps - self.nacc, 2**62)
             chunk = min(CHUNK_STEPS, left)
-            tails = (ts[used:], ys[used:], ev_t[n_ev:], ev_k[n_ev:])
-            ahead = t_eval if every else t_eval[used:]
-            if spec.fixed_step:
-                args = (r.t0, r.t1, y, f, r.p, h, n_steps, int(carry), r.atol, ahead, every, events, left, pair,
-                        chunk, comp, Z)
-            else:
-                args = (t, r.t1, y, f, r.p, r.rtol, r.atol, carry, r.max_step, ahead, every, events, left, pair,
-                        r.error_control == "mode", chunk)
-            try:
-                n_out, n_new, code, nf, na, nr, t, y, f, carry = call_repairing(solve, *args, *tails)
-            except SystemError as exc:  # Ctrl-C that arrived while numba called back into Python
-                cause = exc.__cause__
-                while cause is not None and not isinstance(cause, KeyboardInterrupt):
-                    cause = cause.__cause__
-                if cause is not None:
-                    raise KeyboardInterrupt from None
-                raise
-            used, n_ev = used + n_out, n_ev + n_new
-            nfev, nacc, nrej = nfev + nf, nacc + na, nrej + nr
+            tails = (self.ts[self.used:], self.ys[self.used:], self.ev_t[self.n_ev:], self.ev_k[self.n_ev:])
+            n_out, n_new, code, nf, na, nr, self.t, self.y, self.f, self.carry = _call_kernel(
+                self.solve, *self._kernel_args(left, chunk), *tails)
+            self.used, self.n_ev = self.used + n_out, self.n_ev + n_new
+            self.nfev, self.nacc, self.nrej = self.nfev + nf, self.nacc + na, self.nrej + nr
+            self.code = code
             if code != 1:
-                break
-            if every and used == ts.size:  # paused with the rows full: the next buffer
-                full.append((ts, ys))
-                stored += used
-                size = _rows_ahead(stored, r.t0, t, r.t1, most)
-                ts, ys, used = np.empty(size), np.empty((size, n)), 0
-            if n_ev + per_step > ev_t.size:  # paused with the event buffers nearly full: double them
-                ev_t, ev_k = _grown(ev_t, n_ev, 2 * ev_t.size), _grown(ev_k, n_ev, 2 * ev_k.size)
-        t_out, y_out = _assembled(full + [(ts[:used], ys[:used])], n)
+                return
+            self._make_room()
+
+    def _make_room(self) -> None:
+        """After a pause: a new row buffer if the rows are full, the event buffers doubled if nearly full."""
+        if self.every and self.used == self.ts.size:  # paused with the rows full: the next buffer
+            self.full.append((self.ts, self.ys))
+            self.stored += self.used
+            size = _rows_ahead(self.stored, self.r.t0, self.t, self.r.t1, self.most)
+            self.ts, self.ys, self.used = np.empty(size), np.empty((size, self.n)), 0
+        if self.n_ev + self.per_step > self.ev_t.size:  # paused with the event buffers nearly full: double them
+            self.ev_t = _grown(self.ev_t, self.n_ev, 2 * self.ev_t.size)
+            self.ev_k = _grown(self.ev_k, self.n_ev, 2 * self.ev_k.size)
+
+    def result(self) -> tuple:
+        """``(t, y (n, m), events, status, nfev, nacc, nrej)``, the rows assembled from the buffers."""
+        ts, ys, used = self.ts, self.ys, self.used
+        t_out, y_out = _assembled(self.full + [(ts[:used], ys[:used])], self.n)
         # the largest buffer small enough is kept for the next run; the times are copied if it is theirs, or
         # if much of it is spare (a result keeps only what it shows)
-        biggest = max(full + [(ts, ys)], key=lambda b: b[0].size)
+        biggest = max(self.full + [(ts, ys)], key=lambda b: b[0].size)
         kept = _keep_rows(*biggest)
         if t_out.base is ts and ((kept and biggest[0] is ts) or 8 * (ts.size - used) > ts.size):
             t_out = t_out.copy()
-        events_out = _split_events(names, ev_t[:n_ev], ev_k[:n_ev])
-        return t_out, y_out, events_out, from_code(code), nfev, nacc, nrej
-
-    return run
+        events_out = _split_events(self.names, self.ev_t[:self.n_ev], self.ev_k[:self.n_ev])
+        return t_out, y_out, events_out, from_code(self.code), self.nfev, self.nacc, self.nrej
 
 
 #: the SciPy solver with the tableau, initial step, error norm and step-size control of a compiled method
@@ -456,53 +519,19 @@ def _scipy_phase(r: _Run, scipy_method: str, fun, event_values, stop=None, jac=N
     import time
 
     from scipy import integrate  # imported on use: it adds ~0.3 s to the start-up
-    from scipy.optimize import brentq
-
-    from .integrators import common
-
-    SAMPLES, screen = common.SAMPLES, common.screen.py_func
 
     solver_class = getattr(integrate, scipy_method)
     model = r.model
     names = _event_names(model, r.events)
     codes = [_event_code(model, e) for e in names]
-
-    def values(y, f, h):
-        """Each event's value and rate times ``h`` at a state ``y`` with derivative ``f``."""
-        g, s = np.empty(len(codes)), np.empty(len(codes))
-        fun_v = fun_w = None
-        if any(c < 0 for c in codes):
-            fun_v = event_values(y)
-            fun_w = event_values(y + 1e-7 * h * f)
-        for k, c in enumerate(codes):
-            if c >= 0:
-                g[k], s[k] = y[c], h * f[c]
-            else:
-                g[k], s[k] = fun_v[-1 - c], (fun_w[-1 - c] - fun_v[-1 - c]) / 1e-7
-        return g, s
-
-    def at(sol, c, t):
-        y = sol(t)
-        return y[c] if c >= 0 else event_values(y)[-1 - c]
-
     options = {"jac": jac} if jac is not None else {}
     solver = solver_class(fun, r.t0, r.y0, r.t1, rtol=r.rtol, atol=r.atol, max_step=r.max_step, **options)
     every = r.t_eval is None
     ts, ys = ([r.t0], [r.y0.copy()]) if every else ([], [])
     i_eval = 0
-    found = {e: [] for e in names}
     outcome = Status.SUCCESS
     nsteps = 0
-    eps4 = 4 * np.finfo(float).eps
-
-    def rate(solver):  # the derivative at the solver's current point (RK methods keep it)
-        f = getattr(solver, "f", None)
-        return np.array(f if f is not None else fun(solver.t, solver.y), dtype=float)
-
-    f_old = rate(solver) if codes else None
-    # the screen's flags and Hermite extrema, as the kernels keep them
-    crit, n_crit, flag = np.zeros((len(codes), 2)), np.zeros(len(codes), dtype=np.int64), np.zeros(len(codes), dtype=np.int64)
-    y_prev = r.y0.copy()
+    crossings = _StepCrossings(names, codes, fun, event_values, solver, r.y0)
     next_ask = time.perf_counter() + 0.05
     done = True
     while solver.status == "running":
@@ -518,48 +547,117 @@ def _scipy_phase(r: _Run, scipy_method: str, fun, event_values, stop=None, jac=N
         if solver.status == "failed":
             outcome = Status.STEP_SIZE_UNDERFLOW
             break
-        t_old, t, y = solver.t_old, solver.t, solver.y
-        if not np.isfinite(y).all():
+        if not np.isfinite(solver.y).all():
             outcome = Status.NON_FINITE
             break
         nsteps += 1
+        sol = crossings.after_step(solver)
+        if every:
+            ts.append(solver.t)
+            ys.append(solver.y.copy())
+        else:
+            i_eval = _rows_at_t_eval(r.t_eval, solver, sol, i_eval, ts, ys)
+    return _Phase(ts, ys, crossings.found, outcome, solver.nfev, nsteps, solver, done)
+
+
+def _rows_at_t_eval(t_eval: np.ndarray, solver, sol, i_eval: int, ts: list, ys: list) -> int:
+    """Append the output times of ``t_eval`` that the solver's last step passed, and the states there from its
+    dense output (``sol`` if already made), to ``ts`` and ``ys``; the index of the next output time."""
+    i_new = int(np.searchsorted(t_eval, solver.t, side="right"))
+    if i_new > i_eval:
+        sol = sol or solver.dense_output()
+        step_t = t_eval[i_eval:i_new]
+        ts.append(step_t)
+        ys.append(sol(step_t).T)
+        i_eval = i_new
+    return i_eval
+
+
+class _StepCrossings:
+    """The zero crossings of the events of a SciPy phase, found step by step by the compiled kernels' rule.
+
+    Each step is screened with the events' values and rates at its ends
+    (``common.screen``, run by Python: nothing to compile); a suspected
+    step is sampled on the dense output, and each bracket refined by
+    ``brentq`` to 4 machine epsilons.  ``found``: ``{name: [times]}``.
+    """
+
+    def __init__(self, names: tuple, codes: list, fun, event_values, solver, y0: np.ndarray):
+        from .integrators import common
+
+        self.names, self.codes, self.fun, self.event_values = names, codes, fun, event_values
+        self.samples, self.screen = common.SAMPLES, common.screen.py_func
+        self.found = {e: [] for e in names}
+        self.f_old = self._rate(solver) if codes else None
+        # the screen's flags and Hermite extrema, as the kernels keep them
+        self.crit = np.zeros((len(codes), 2))
+        self.n_crit, self.flag = np.zeros(len(codes), dtype=np.int64), np.zeros(len(codes), dtype=np.int64)
+        self.y_prev = y0.copy()
+
+    def _rate(self, solver) -> np.ndarray:
+        """The derivative at the solver's current point (RK methods keep it)."""
+        f = getattr(solver, "f", None)
+        return np.array(f if f is not None else self.fun(solver.t, solver.y), dtype=float)
+
+    def _values(self, y, f, h) -> tuple:
+        """Each event's value and rate times ``h`` at a state ``y`` with derivative ``f``."""
+        codes, event_values = self.codes, self.event_values
+        g, s = np.empty(len(codes)), np.empty(len(codes))
+        fun_v = fun_w = None
+        if any(c < 0 for c in codes):
+            fun_v = event_values(y)
+            fun_w = event_values(y + 1e-7 * h * f)
+        for k, c in enumerate(codes):
+            if c >= 0:
+                g[k], s[k] = y[c], h * f[c]
+            else:
+                g[k], s[k] = fun_v[-1 - c], (fun_w[-1 - c] - fun_v[-1 - c]) / 1e-7
+        return g, s
+
+    def _at(self, sol, c: int, t: float) -> float:
+        """The value of the event numbered ``c`` at time ``t`` on the dense output ``sol``."""
+        y = sol(t)
+        return y[c] if c >= 0 else self.event_values(y)[-1 - c]
+
+    def after_step(self, solver):
+        """Record the crossings inside the step the solver just took; its dense output if one was made, else
+        ``None``."""
         sol = None
-        if codes:
+        if self.codes:
+            t_old, t, y = solver.t_old, solver.t, solver.y
             h = t - t_old
-            f_new = rate(solver)
-            ga, sa = values(y_prev, f_old, h)
-            gb, sb = values(y, f_new, h)
-            screen(ga, gb, sa, sb, crit, n_crit, flag)  # the kernels' rule, run here by Python: nothing to compile
-            for k, (e, c) in enumerate(zip(names, codes)):
-                if not flag[k]:
+            f_new = self._rate(solver)
+            ga, sa = self._values(self.y_prev, self.f_old, h)
+            gb, sb = self._values(y, f_new, h)
+            self.screen(ga, gb, sa, sb, self.crit, self.n_crit, self.flag)
+            for k, (e, c) in enumerate(zip(self.names, self.codes)):
+                if not self.flag[k]:
                     continue
                 sol = sol or solver.dense_output()
-                extrema = set(crit[k, :n_crit[k]].tolist())
-                xs = [0.0] + (sorted({m / SAMPLES for m in range(1, SAMPLES)} | extrema) if flag[k] == 2 else [])
-                gs = [ga[k]] + [at(sol, c, t_old + x * h) for x in xs[1:]]
-                xs.append(1.0)
-                gs.append(gb[k])
-                for m in range(1, len(xs)):
-                    fa, fb = gs[m - 1], gs[m]
-                    if fa == 0.0 or not (fb == 0.0 or (fa > 0.0) != (fb > 0.0)):
-                        continue
-                    a, b = t_old + xs[m - 1] * h, (t if m == len(xs) - 1 else t_old + xs[m] * h)
-                    found[e].append(b if fb == 0.0 else
-                                    brentq(lambda s, c=c: at(sol, c, s), a, b, xtol=eps4, rtol=eps4))
-            f_old = f_new
-        y_prev = y.copy()
-        if every:
-            ts.append(t)
-            ys.append(y.copy())
-        else:
-            i_new = int(np.searchsorted(r.t_eval, t, side="right"))
-            if i_new > i_eval:
-                sol = sol or solver.dense_output()
-                step_t = r.t_eval[i_eval:i_new]
-                ts.append(step_t)
-                ys.append(sol(step_t).T)
-                i_eval = i_new
-    return _Phase(ts, ys, found, outcome, solver.nfev, nsteps, solver, done)
+                self._refine(k, e, c, sol, t_old, t, ga[k], gb[k])
+            self.f_old = f_new
+        self.y_prev = solver.y.copy()
+        return sol
+
+    def _refine(self, k: int, e: str, c: int, sol, t_old: float, t: float, ga: float, gb: float) -> None:
+        """The crossings of event ``e`` (number ``c``, ``k``-th) between ``t_old`` and ``t``: the step sampled on
+        ``sol`` (when the screen flagged two or more), each sign change refined by ``brentq``."""
+        from scipy.optimize import brentq
+
+        eps4 = 4 * np.finfo(float).eps
+        samples, h = self.samples, t - t_old
+        extrema = set(self.crit[k, :self.n_crit[k]].tolist())
+        xs = [0.0] + (sorted({m / samples for m in range(1, samples)} | extrema) if self.flag[k] == 2 else [])
+        gs = [ga] + [self._at(sol, c, t_old + x * h) for x in xs[1:]]
+        xs.append(1.0)
+        gs.append(gb)
+        for m in range(1, len(xs)):
+            fa, fb = gs[m - 1], gs[m]
+            if fa == 0.0 or not (fb == 0.0 or (fa > 0.0) != (fb > 0.0)):
+                continue
+            a, b = t_old + xs[m - 1] * h, (t if m == len(xs) - 1 else t_old + xs[m] * h)
+            self.found[e].append(b if fb == 0.0 else
+                                 brentq(lambda s, c=c: self._at(sol, c, s), a, b, xtol=eps4, rtol=eps4))
 
 
 def _scipy_jacobian(model: Model, p: np.ndarray, inputs=None):
