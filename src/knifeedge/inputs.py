@@ -59,10 +59,7 @@ class Inputs:
             if kind == "constant":
                 out[:, 1 + 2 * i], out[:, 2 + 2 * i] = data, 0.0
             elif kind == "samples":
-                ts, us = data
-                j = np.clip(np.searchsorted(ts, starts, side="right") - 1, 0, ts.size - 2)
-                rate = (us[j + 1] - us[j]) / (ts[j + 1] - ts[j])
-                out[:, 1 + 2 * i], out[:, 2 + 2 * i] = us[j] + rate * (starts - ts[j]), rate
+                out[:, 1 + 2 * i], out[:, 2 + 2 * i] = _interpolated(data, starts)
             else:
                 raise ValueError("a function input has no slots over an interval")  # simulate never asks
         return out
@@ -75,10 +72,8 @@ class Inputs:
             if kind == "constant":
                 out += [data, 0.0]
             elif kind == "samples":
-                ts, us = data
-                j = min(max(int(np.searchsorted(ts, t, side="right")) - 1, 0), ts.size - 2)
-                rate = (us[j + 1] - us[j]) / (ts[j + 1] - ts[j])
-                out += [us[j] + rate * (t - ts[j]), rate]
+                value, rate = _interpolated(data, np.array([t]))
+                out += [value[0], rate[0]]
             else:
                 out += [_call(data, t, name), _rate(data, t, name) if name in self.rates_read else 0.0]
         return np.array(out)
@@ -96,6 +91,15 @@ class Inputs:
             if kind == "samples" and (data[0][0] > t0 or data[0][-1] < t1):
                 raise ValueError(f"`inputs[{name!r}]`: its samples cover [{data[0][0]:g}, {data[0][-1]:g}], "
                                  f"{what} needs [{t0:g}, {t1:g}]; give samples over the whole interval")
+
+
+def _interpolated(samples: tuple, times: np.ndarray) -> tuple:
+    """``(u, du/dt)`` of the piecewise-linear interpolant of ``samples = (t, u)`` at ``times`` (the rate of the
+    interval that starts at each time)."""
+    ts, us = samples
+    j = np.clip(np.searchsorted(ts, times, side="right") - 1, 0, ts.size - 2)
+    rate = (us[j + 1] - us[j]) / (ts[j + 1] - ts[j])
+    return us[j] + rate * (times - ts[j]), rate
 
 
 def _call(f, t: float, name: str) -> float:
