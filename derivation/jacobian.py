@@ -18,7 +18,7 @@ from __future__ import annotations
 import sympy as sp
 
 from . import names
-from .codegen import code as _code, unpack as _unpack
+from .codegen import Function, code as _code, hoist_parameters, unpack as _unpack
 
 
 def _gradients(exprs, variables):
@@ -133,6 +133,15 @@ def {name}({args}):
 ''', int(ops)
 
 
+def _power_partial(c: sp.Symbol, e: sp.Expr, x: sp.Symbol) -> sp.Expr:
+    """``d e / d x`` of the line ``c = e``: a reciprocal's or a root's derivative written with the line's value
+    ``c`` (``d(1/u) = -c^2 du``, ``d(u^a) = a c / u du``), not with a power of ``u`` again; :func:`partial` else."""
+    if not (e.is_Pow and e.exp.is_Number) or (e.exp.is_Integer and e.exp > 0):
+        return partial(e, x)
+    factor = -c * c if e.exp == -1 else e.exp * c / e.base
+    return factor * partial(e.base, x)
+
+
 def program_tangent(subs, outputs, seeds: dict) -> tuple:
     """Forward mode along one direction: ``(lines, tangents)``, the program's lines each followed by its
     derivative ``_t<k>`` along ``seeds`` ({variable: symbol of its tangent component}), and the derivative of
@@ -140,20 +149,20 @@ def program_tangent(subs, outputs, seeds: dict) -> tuple:
     tangent: dict = {}
     assigns = []
 
-    def dot(e):
+    def dot(e, c=None):
         terms = []
         for x in sorted(e.free_symbols, key=str):
             tx = seeds.get(x, tangent.get(x))
             if tx is None:
                 continue
-            dx = partial(e, x)
+            dx = _power_partial(c, e, x) if c is not None else partial(e, x)
             if dx != 0:
                 terms.append(dx * tx)
         return sp.Add(*terms)
 
     for c, e in subs:
         assigns.append((c, e))
-        d = dot(e)
+        d = dot(e, c)
         if d != 0:
             tangent[c] = d if d.is_Atom else names.Own(f"_t{str(c)[2:]}")
             if not d.is_Atom:
@@ -211,6 +220,53 @@ def {name}({args}):
 ''', ops * k
 
 
+def jvp_source(program, rates, state, params) -> tuple[str, int, int]:
+    """Source of ``jvp_into(s, p, V, out)`` (``out = J(s) V`` for the ``k`` columns of ``V``, both ``(n, k)``),
+    its operations once per call and per column.
+
+    ``rates`` bound by the straight-line ``program`` (pairs ``(symbol, expression)``: a closed form's CSE, or the
+    numeric elimination's program) are differentiated in forward mode along a direction (:func:`program_tangent`):
+    the lines that do not depend on the direction (the program itself, and the partial derivatives of each line,
+    hoisted out of the products and sums of the tangent lines) are written once, before a loop over the columns
+    that holds only the tangent lines, each a short sum of products.
+    """
+    seeds = {x: names.Own(f"_v{j}") for j, x in enumerate(state)}
+    lines, tangents = program_tangent(program, rates, seeds)
+    along = set(seeds.values())  # the symbols that depend on the direction
+    primal, tangent = [], []
+    for sym, e in lines:
+        if e.free_symbols & along:
+            along.add(sym)
+            tangent.append((sym, e))
+        else:
+            primal.append((sym, e))
+    fixed = set(state) | set(params) | {names.t} | {sym for sym, _ in primal}
+    hoisted, moved = hoist_parameters([e for _, e in tangent] + list(tangents), fixed)
+    subs, reduced = sp.cse([e for _, e in hoisted], symbols=sp.numbered_symbols("_p", cls=names.Own),
+                           order="canonical")
+    once = primal + subs + [(k, e) for (k, _), e in zip(hoisted, reduced)]
+    loop = [(sym, e) for (sym, _), e in zip(tangent, moved)]
+    outputs = moved[len(tangent):]
+    ops_once = int(sum(sp.count_ops(e) for _, e in once))
+    ops_column = int(sum(sp.count_ops(e) for _, e in loop) + sum(sp.count_ops(e) for e in outputs))
+    used = set().union(set(), *(e.free_symbols for _, e in once + loop), *(e.free_symbols for e in outputs))
+    unpack = [ln for ln, x in zip(_unpack([str(x) for x in state], "s"), state) if x in used]
+    unpack += [ln for ln, x in zip(_unpack([str(x) for x in params], "p"), params) if x in used]
+    seed_lines = [f"        {v} = V[{j}, _j]" for j, v in enumerate(seeds.values()) if v in used]
+    timed = names.t in set().union(set(), *(e.free_symbols for _, e in program), *(e.free_symbols for e in rates))
+    nl = "\n"
+    body = ("\n".join(unpack), nl.join(f"    {sym} = {_code(e)}" for sym, e in once),
+            "    for _j in range(V.shape[1]):", nl.join(seed_lines),
+            nl.join([f"        {sym} = {_code(e)}" for sym, e in loop]
+                    + [f"        out[{i}, _j] = {_code(e)}" for i, e in enumerate(outputs)]))
+    n = len(state)
+    doc = (f"Write ``J(s) V`` into ``out``, both ``(n, k)`` with n = {n}: the derivative of the rates along each "
+           f"column of ``V``, forward mode through the right-hand side ({ops_once} operations once, {ops_column} "
+           f"per column).")
+    fn = Function("jvp_into", "s, p, t, V, out" if timed else "s, p, V, out", doc, tuple(b for b in body if b))
+    return "\n\n" + fn.source(), ops_once, ops_column
+
+
 def program_block_source(program, rates, state, params) -> str:
     """:func:`block_source` of the rates ``rates`` bound by the straight-line ``program`` (the numeric
     elimination's, :mod:`.kkt_emit`): the program differentiated in forward mode, line by line."""
@@ -220,8 +276,11 @@ def program_block_source(program, rates, state, params) -> str:
                                      f"d(state rate)/d(state): J[i, j] = d rhs_i / d s_j, shape ({n}, {n})")
     src_p, ops_p = _tangent_function("jacobian_p", program, rates, params, state, params,
                                      f"d(state rate)/d(parameters): J[i, j] = d rhs_i / d p_j, shape ({n}, {k})")
-    return (f"\n\n#: operation counts of the Jacobians (derivation/jacobian.py, forward mode through the program of "
-            f"derivation/kkt_emit.py)\nOP_COUNTS.update(jacobian={ops_s}, jacobian_p={ops_p})" + src_s + src_p)
+    src_v, once, column = jvp_source(program, rates, state, params)
+    return (f"\n\n#: operation counts of the Jacobians and of the Jacobian-vector product, once and per column "
+            f"(derivation/jacobian.py, forward mode through the program of derivation/kkt_emit.py)\n"
+            f"OP_COUNTS.update(jacobian={ops_s}, jacobian_p={ops_p}, jvp_once={once}, jvp_column={column})"
+            + src_s + src_p + src_v)
 
 
 def block_source(rates, state, params) -> str:
@@ -239,5 +298,9 @@ def block_source(rates, state, params) -> str:
                              f"d(state rate)/d(state): J[i, j] = d rhs_i / d s_j, shape ({n}, {n})")
     src_p, ops_p = _function("jacobian_p", rates, params, state, params, f"({n}, {k})",
                              f"d(state rate)/d(parameters): J[i, j] = d rhs_i / d p_j, shape ({n}, {k})")
-    return (f"\n\n#: operation counts of the Jacobians (derivation/jacobian.py)\n"
-            f"OP_COUNTS.update(jacobian={ops_s}, jacobian_p={ops_p})" + src_s + src_p)
+    subs, reduced = sp.cse(rates, symbols=sp.numbered_symbols("_c", cls=names.Own), order="canonical")
+    src_v, once, column = jvp_source(subs, reduced, state, params)
+    return (f"\n\n#: operation counts of the Jacobians and of the Jacobian-vector product, once and per column "
+            f"(derivation/jacobian.py)\n"
+            f"OP_COUNTS.update(jacobian={ops_s}, jacobian_p={ops_p}, jvp_once={once}, jvp_column={column})"
+            + src_s + src_p + src_v)

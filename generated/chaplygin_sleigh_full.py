@@ -265,8 +265,8 @@ def body_outlines(s, p, uu):
     return out
 
 
-#: operation counts of the Jacobians (derivation/jacobian.py)
-OP_COUNTS.update(jacobian=14, jacobian_p=25)
+#: operation counts of the Jacobians and of the Jacobian-vector product, once and per column (derivation/jacobian.py)
+OP_COUNTS.update(jacobian=14, jacobian_p=25, jvp_once=11, jvp_column=4)
 
 @njit(cache=True)
 def jacobian(s, p):
@@ -294,6 +294,25 @@ def jacobian_p(s, p):
     out[1, 0] = 2*(a*a)*phi_dot*v/(((a*a) + (k*k))*((a*a) + (k*k))) - phi_dot*v/((a*a) + (k*k))
     out[1, 1] = 2*a*k*phi_dot*v/(((a*a) + (k*k))*((a*a) + (k*k)))
     return out
+
+
+@njit(cache=True)
+def jvp_into(s, p, V, out):
+    """Write ``J(s) V`` into ``out``, both ``(n, k)`` with n = 2: the derivative of the rates along each column of ``V``, forward mode through the right-hand side (11 operations once, 4 per column)."""
+    v = s[0]
+    phi_dot = s[1]
+    a = p[0]
+    k = p[1]
+    _p0 = a*phi_dot
+    _p1 = 1/((a*a) + (k*k))
+    _k0 = 2*_p0
+    _k1 = -_p0*_p1
+    _k2 = -_p1*a*v
+    for _j in range(V.shape[1]):
+        _v0 = V[0, _j]
+        _v1 = V[1, _j]
+        out[0, _j] = _k0*_v1
+        out[1, _j] = _k1*_v0 + _k2*_v1
 
 
 
@@ -429,4 +448,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 2
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'f35321241c4f82a5ba66ed3baa4fac715bf4f5ad6d567d548b08e143733c475c'
+MODULE_SHA256 = 'b940280581f225cd0e231ad0822d220f95de8fb6b50847052ce097729e583777'

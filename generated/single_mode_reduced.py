@@ -326,8 +326,8 @@ def frequencies(p):
     return out
 
 
-#: operation counts of the Jacobians (derivation/jacobian.py)
-OP_COUNTS.update(jacobian=12, jacobian_p=27)
+#: operation counts of the Jacobians and of the Jacobian-vector product, once and per column (derivation/jacobian.py)
+OP_COUNTS.update(jacobian=12, jacobian_p=27, jvp_once=12, jvp_column=6)
 
 @njit(cache=True)
 def jacobian(s, p):
@@ -366,6 +366,31 @@ def jacobian_p(s, p):
     out[2, 2] = 2*D*g*(theta*theta)/(L*L*L)
     out[2, 3] = -g*(theta*theta)/(L*L)
     return out
+
+
+@njit(cache=True)
+def jvp_into(s, p, V, out):
+    """Write ``J(s) V`` into ``out``, both ``(n, k)`` with n = 3: the derivative of the rates along each column of ``V``, forward mode through the right-hand side (12 operations once, 6 per column)."""
+    theta = s[0]
+    theta_dot = s[1]
+    phi_dot = s[2]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    _p0 = 1/ell
+    _p1 = D*_p0
+    _k0 = -_p0*g
+    _k1 = _p1*phi_dot
+    _k2 = _p1*theta_dot
+    _k3 = -2*D*g*theta/(L*L)
+    for _j in range(V.shape[1]):
+        _v0 = V[0, _j]
+        _v1 = V[1, _j]
+        _v2 = V[2, _j]
+        out[0, _j] = _v1
+        out[1, _j] = _k0*_v0 + _k1*_v1 + _k2*_v2
+        out[2, _j] = _k3*_v0
 
 
 
@@ -559,4 +584,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 4
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '629e7fe2fa47cb8f845e59c80e0cad2c09d85acbad43c1c72b43920b12bdc9df'
+MODULE_SHA256 = 'e9c85b39a890db5d01789f245d2fcbad0f3238a77261575f765e77d06de9fcb0'
