@@ -1,9 +1,10 @@
 """Lyapunov exponents of the physical phase space by the Benettin/QR method on the emitted variational equations.
 
 The state and ``k`` tangent vectors are stepped together by the classical fourth-order Runge-Kutta method in one
-compiled loop (the generated ``rhs_into`` and ``jacobian``; no Python call per step); every ``tau`` of time the
-tangent vectors are re-orthonormalized (modified Gram-Schmidt, the QR of ChaosTools.jl's ``lyapunovspectrum``)
-and the logarithms of the diagonal of R are summed.  The tangent vectors start orthogonal to the gradients of the
+compiled loop (the generated ``rhs_into`` and ``jvp_into``, the Jacobian-vector product ``J(y) Q`` of the ``k``
+tangent vectors at once; no Python call per step); every ``tau`` of time the tangent vectors are
+re-orthonormalized (modified Gram-Schmidt, the QR of ChaosTools.jl's ``lyapunovspectrum``) and the logarithms of
+the diagonal of R are summed.  The tangent vectors start orthogonal to the gradients of the
 closed state's invariants (``STATE_INVARIANTS``), so they span the physical phase space, which the tangent flow
 keeps (the round-off that leaks out of it is projected away before each re-orthonormalization).
 """
@@ -17,17 +18,6 @@ from numba import njit, types
 
 from .integrators.rk_tableaus import DP54_A, DP54_B, DP54_E
 from .models import Model
-
-@njit(cache=True)
-def _times(J, Q, out):
-    n, k = Q.shape
-    for i in range(n):
-        for j in range(k):
-            acc = 0.0
-            for m in range(n):
-                acc += J[i, m] * Q[m, j]
-            out[i, j] = acc
-
 
 @njit(cache=True)
 def _orthonormalize(Q, sums):
@@ -88,19 +78,20 @@ def _rk4_update(x, h, d1, d2, d3, d4):
         x[i] += h / 6.0 * (d1[i] + 2.0 * d2[i] + 2.0 * d3[i] + d4[i])
 
 
-#: the first-class function types of a generated module's ``rhs_into(t, s, p, ds)``, ``jacobian(s, p)`` and
-#: ``invariant_gradients(s, p)``: the loop below is compiled for these types, not for one module's functions, so
-#: one compiled loop (in numba's cache, once per machine) serves every model and calls them through their addresses
+#: the first-class function types of a generated module's ``rhs_into(t, s, p, ds)``, ``jvp_into(s, p, V, out)``
+#: (``out = J(s) V``) and ``invariant_gradients(s, p)``: the loop below is compiled for these types, not for one
+#: module's functions, so one compiled loop (in numba's cache, once per machine) serves every model and calls them
+#: through their addresses
 _VECTOR = types.float64[::1]
 _MATRIX = types.float64[:, ::1]
 _RHS = types.FunctionType(types.none(types.float64, _VECTOR, _VECTOR, _VECTOR))
+_JVP = types.FunctionType(types.none(_VECTOR, _VECTOR, _MATRIX, _MATRIX))
 _MATRIX_OF_STATE = types.FunctionType(_MATRIX(_VECTOR, _VECTOR))
-_SIGNATURE = (_RHS, _MATRIX_OF_STATE, _MATRIX_OF_STATE, _VECTOR, _MATRIX, _VECTOR, types.float64, types.int64,
-              types.int64)
+_SIGNATURE = (_RHS, _JVP, _MATRIX_OF_STATE, _VECTOR, _MATRIX, _VECTOR, types.float64, types.int64, types.int64)
 
 
 @njit(cache=True)
-def _benettin(rhs_into, jacobian, gradients, y, Q, p, h, n_blocks, steps_per_block):
+def _benettin(rhs_into, jvp_into, gradients, y, Q, p, h, n_blocks, steps_per_block):
     """RK4 on the state ``y`` and the tangent vectors ``Q`` (n x k) for ``n_blocks`` blocks of ``steps_per_block``
     steps of ``h``, re-orthonormalized after each block; returns the final y, Q, the sums of log |R_jj|, and the
     times and running estimates of the re-orthonormalizations (from time 0)."""
@@ -116,19 +107,19 @@ def _benettin(rhs_into, jacobian, gradients, y, Q, p, h, n_blocks, steps_per_blo
     for b in range(n_blocks):
         for _ in range(steps_per_block):
             rhs_into(0.0, y, p, k1)
-            _times(jacobian(y, p), Q, K1)
+            jvp_into(y, p, Q, K1)
             _shifted(yt, y, 0.5 * h, k1)
             _shifted(qt, q, 0.5 * h, q1)
             rhs_into(0.0, yt, p, k2)
-            _times(jacobian(yt, p), Qt, K2)
+            jvp_into(yt, p, Qt, K2)
             _shifted(yt, y, 0.5 * h, k2)
             _shifted(qt, q, 0.5 * h, q2)
             rhs_into(0.0, yt, p, k3)
-            _times(jacobian(yt, p), Qt, K3)
+            jvp_into(yt, p, Qt, K3)
             _shifted(yt, y, h, k3)
             _shifted(qt, q, h, q3)
             rhs_into(0.0, yt, p, k4)
-            _times(jacobian(yt, p), Qt, K4)
+            jvp_into(yt, p, Qt, K4)
             _rk4_update(y, h, k1, k2, k3, k4)
             _rk4_update(q, h, q1, q2, q3, q4)
         # round-off leaks into the invariants' directions (rate 0), which would outgrow decaying directions
@@ -153,7 +144,7 @@ _A = np.zeros((7, 6))
 _A[:6, :5] = DP54_A
 _A[6] = DP54_B
 _E = DP54_E
-_ADAPTIVE_SIGNATURE = (_RHS, _MATRIX_OF_STATE, _MATRIX_OF_STATE, _VECTOR, _MATRIX, _VECTOR, types.float64,
+_ADAPTIVE_SIGNATURE = (_RHS, _JVP, _MATRIX_OF_STATE, _VECTOR, _MATRIX, _VECTOR, types.float64,
                        types.int64, types.float64, types.float64, types.float64, types.int64)
 
 
@@ -182,7 +173,7 @@ def _error_squares(x, x_new, K, h, rtol, atol):
 
 
 @njit(cache=True)
-def _benettin_adaptive(rhs_into, jacobian, gradients, y, Q, p, tau, n_blocks, rtol, atol, h, max_steps):
+def _benettin_adaptive(rhs_into, jvp_into, gradients, y, Q, p, tau, n_blocks, rtol, atol, h, max_steps):
     """As :func:`_benettin`, stepped by Dormand-Prince 5(4) with the errors of the state and the tangent vectors
     controlled to ``rtol``, ``atol`` (steps end on the re-orthonormalization times ``b tau``); also returns the numbers of accepted and
     rejected steps (``max_steps`` reached: accepted = -1)."""
@@ -195,18 +186,18 @@ def _benettin_adaptive(rhs_into, jacobian, gradients, y, Q, p, tau, n_blocks, rt
     for b in range(n_blocks):
         t_end = (b + 1) * tau
         rhs_into(0.0, y, p, K[0])
-        _times(jacobian(y, p), Q, KQ[0].reshape((n, k)))
+        jvp_into(y, p, Q, KQ[0].reshape((n, k)))
         while t_end - t > 1e-12 * tau:
             step = min(h, t_end - t)
             for s in range(1, 6):
                 _stage_point(yt, y, step, K, s)
                 _stage_point(qt, q, step, KQ, s)
                 rhs_into(0.0, yt, p, K[s])
-                _times(jacobian(yt, p), qt.reshape((n, k)), KQ[s].reshape((n, k)))
+                jvp_into(yt, p, qt.reshape((n, k)), KQ[s].reshape((n, k)))
             _stage_point(y_new, y, step, K, 6)
             _stage_point(q_new, q, step, KQ, 6)
             rhs_into(0.0, y_new, p, K[6])
-            _times(jacobian(y_new, p), q_new.reshape((n, k)), KQ[6].reshape((n, k)))
+            jvp_into(y_new, p, q_new.reshape((n, k)), KQ[6].reshape((n, k)))
             # the tangent vectors are controlled too (at an equilibrium the state alone would let the step grow
             # past the stability of the tangent dynamics), relative to their unit length after each QR: atol = rtol
             err = math.sqrt((_error_squares(y, y_new, K, step, rtol, atol)
@@ -262,6 +253,14 @@ class LyapunovResult:
     method: str = "RK4"
 
 
+def _jacobian(mod, y: np.ndarray, p: np.ndarray) -> np.ndarray:
+    """``J(y)``, the Jacobian-vector product of the identity: the loop's own compiled function (the module's full
+    ``jacobian``, slower to compile, is not needed)."""
+    out = np.empty((y.size, y.size))
+    mod.jvp_into(y, p, np.eye(y.size), out)
+    return out
+
+
 def _physical_basis(m: Model, y: np.ndarray, p: np.ndarray, k: int | None) -> np.ndarray:
     from .stability import _basis
 
@@ -296,15 +295,18 @@ def lyapunov(m: Model, y0, p, t_end: float, k: int | None = None, h: float | Non
     if not (isinstance(t_end, (int, float)) and math.isfinite(t_end) and t_end > t0):
         raise ValueError(f"`t_end` must be a finite time after `t0` = {t0}, got {t_end!r}")
     span = float(t_end) - float(t0)
+    mod = m.module
+    if not hasattr(mod, "jvp_into"):
+        raise ValueError(f"the module of {m.name} ({m.fidelity}) was written without a Jacobian-vector product by an "
+                         f"older knifeedge: regenerate it (make derive, or knifeedge derive)")
+    p = np.ascontiguousarray(p, dtype=float)
     if h is None:
-        rho = float(np.max(np.abs(np.linalg.eigvals(m.jacobian(y, p)))))
+        rho = float(np.max(np.abs(np.linalg.eigvals(_jacobian(mod, y, p)))))
         h = min(2 * math.pi / rho / 50 if rho > 0 else span / 1e4, span / 100)
     if not (isinstance(h, (int, float)) and math.isfinite(h) and 0 < h <= span):
         raise ValueError(f"`h` must be a positive step no longer than the span, got {h!r}")
     Q = _physical_basis(m, y, p, k)
-    mod = m.module
-    functions = (mod.rhs_into, mod.jacobian, mod.invariant_gradients)
-    p = np.ascontiguousarray(p, dtype=float)
+    functions = (mod.rhs_into, mod.jvp_into, mod.invariant_gradients)
     if rtol is not None:
         return _adaptive(functions, y, Q, p, span, float(t0), h, tau, rtol, atol, max_steps)
     if atol is not None:
