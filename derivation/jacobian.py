@@ -220,9 +220,29 @@ def {name}({args}):
 ''', ops * k
 
 
+def _primal_and_tangent(program, rates, seeds: dict) -> tuple[list, list, list]:
+    """``(primal, tangent, tangents)``: the lines of ``program`` the rates or their derivatives along ``seeds``
+    need that do not depend on the direction (in program order), the tangent lines (:func:`program_tangent`) and
+    the derivatives of the rates."""
+    lines, tangents = program_tangent(program, rates, seeds)
+    along = set(seeds.values())  # the symbols that depend on the direction
+    tangent, needed = [], set().union(set(), *(sp.sympify(e).free_symbols for e in rates))
+    for sym, e in lines:
+        if e.free_symbols & along:
+            along.add(sym)
+            tangent.append((sym, e))
+        else:
+            needed.add(sym)
+    for sym, e in reversed(program):  # and what those need
+        if sym in needed:
+            needed |= e.free_symbols
+    return [(sym, e) for sym, e in program if sym in needed], tangent, tangents
+
+
 def jvp_source(program, rates, state, params) -> tuple[str, int, int]:
-    """Source of ``jvp_into(s, p, V, out)`` (``out = J(s) V`` for the ``k`` columns of ``V``, both ``(n, k)``),
-    its operations once per call and per column.
+    """Source of ``jvp_into(s, p, V, ds, out)``: the rates ``ds`` (as ``rhs_into``) and their derivatives along
+    the ``k`` columns of ``V``, ``out = J(s) V`` (both ``(n, k)``), as JAX's ``jvp`` returns the value with the
+    derivative; with the operations once per call and per column.
 
     ``rates`` bound by the straight-line ``program`` (pairs ``(symbol, expression)``: a closed form's CSE, or the
     numeric elimination's program) are differentiated in forward mode along a direction (:func:`program_tangent`):
@@ -231,40 +251,31 @@ def jvp_source(program, rates, state, params) -> tuple[str, int, int]:
     that holds only the tangent lines, each a short sum of products.
     """
     seeds = {x: names.Own(f"_v{j}") for j, x in enumerate(state)}
-    lines, tangents = program_tangent(program, rates, seeds)
-    along = set(seeds.values())  # the symbols that depend on the direction
-    primal, tangent = [], []
-    for sym, e in lines:
-        if e.free_symbols & along:
-            along.add(sym)
-            tangent.append((sym, e))
-        else:
-            primal.append((sym, e))
+    primal, tangent, tangents = _primal_and_tangent(program, rates, seeds)
     fixed = set(state) | set(params) | {names.t} | {sym for sym, _ in primal}
     hoisted, moved = hoist_parameters([e for _, e in tangent] + list(tangents), fixed)
     subs, reduced = sp.cse([e for _, e in hoisted], symbols=sp.numbered_symbols("_p", cls=names.Own),
                            order="canonical")
     once = primal + subs + [(k, e) for (k, _), e in zip(hoisted, reduced)]
-    loop = [(sym, e) for (sym, _), e in zip(tangent, moved)]
-    outputs = moved[len(tangent):]
-    ops_once = int(sum(sp.count_ops(e) for _, e in once))
-    ops_column = int(sum(sp.count_ops(e) for _, e in loop) + sum(sp.count_ops(e) for e in outputs))
-    used = set().union(set(), *(e.free_symbols for _, e in once + loop), *(e.free_symbols for e in outputs))
+    values = [(f"ds[{i}]", sp.sympify(e)) for i, e in enumerate(rates)]
+    loop = [(sym, e) for (sym, _), e in zip(tangent, moved)] + [(f"out[{i}, _j]", e)
+                                                                 for i, e in enumerate(moved[len(tangent):])]
+    ops_once = int(sum(sp.count_ops(e) for _, e in once + values))
+    ops_column = int(sum(sp.count_ops(e) for _, e in loop))
+    used = set().union(set(), *(e.free_symbols for _, e in once + values + loop))
     unpack = [ln for ln, x in zip(_unpack([str(x) for x in state], "s"), state) if x in used]
     unpack += [ln for ln, x in zip(_unpack([str(x) for x in params], "p"), params) if x in used]
-    seed_lines = [f"        {v} = V[{j}, _j]" for j, v in enumerate(seeds.values()) if v in used]
-    timed = names.t in set().union(set(), *(e.free_symbols for _, e in program), *(e.free_symbols for e in rates))
+    timed = names.t in set().union(set(), *(e.free_symbols for _, e in program), *(e.free_symbols for _, e in values))
     nl = "\n"
-    body = ("\n".join(unpack), nl.join(f"    {sym} = {_code(e)}" for sym, e in once),
-            "    for _j in range(V.shape[1]):", nl.join(seed_lines),
-            nl.join([f"        {sym} = {_code(e)}" for sym, e in loop]
-                    + [f"        out[{i}, _j] = {_code(e)}" for i, e in enumerate(outputs)]))
-    n = len(state)
-    doc = (f"Write ``J(s) V`` into ``out``, both ``(n, k)`` with n = {n}: the derivative of the rates along each "
-           f"column of ``V``, forward mode through the right-hand side ({ops_once} operations once, {ops_column} "
-           f"per column).")
-    fn = Function("jvp_into", "s, p, t, V, out" if timed else "s, p, V, out", doc, tuple(b for b in body if b))
-    return "\n\n" + fn.source(), ops_once, ops_column
+    body = (nl.join(unpack), nl.join(f"    {sym} = {_code(e)}" for sym, e in once + values),
+            "    for _j in range(V.shape[1]):",
+            nl.join(f"        {v} = V[{j}, _j]" for j, v in enumerate(seeds.values()) if v in used),
+            nl.join(f"        {sym} = {_code(e)}" for sym, e in loop))
+    doc = (f"Write d(state)/dt into ``ds`` and ``J(s) V`` into ``out`` (``V``, ``out``: ({len(state)}, k)), the "
+           f"derivatives of the rates along the columns of ``V`` by forward mode through the right-hand side "
+           f"({ops_once} operations once, {ops_column} per column).")
+    args = "s, p, t, V, ds, out" if timed else "s, p, V, ds, out"
+    return "\n\n" + Function("jvp_into", args, doc, tuple(b for b in body if b)).source(), ops_once, ops_column
 
 
 def program_block_source(program, rates, state, params) -> str:

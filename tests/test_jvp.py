@@ -1,7 +1,7 @@
-"""The emitted Jacobian-vector product ``jvp_into(s, p, V, out)`` (``derivation/jacobian.py::jvp_source``).
+"""The emitted Jacobian-vector product ``jvp_into(s, p, V, ds, out)`` (``derivation/jacobian.py::jvp_source``).
 
-Every generated module (iterated from the registry) writes ``J(s) V`` for the columns of ``V``, one forward pass
-through the right-hand side's common subexpressions per column.  The reference is the emitted full Jacobian
+Every generated module (iterated from the registry) writes the rates ``ds`` and ``J(s) V`` for the columns of
+``V``, one forward pass through the right-hand side's common subexpressions per column.  The reference is the emitted full Jacobian
 times ``V``: a separate derivation (gradients of every subexpression, ``derivation/jacobian.py::_gradients``),
 itself checked against eighth-order central differences of the right-hand side (tests/test_jacobian.py).  The
 default tier runs the Python bodies (``py_func``: nothing to compile).
@@ -12,10 +12,17 @@ import pytest
 from test_jacobian import KEYS, _module, _point
 
 
-def _jvp(mod, y, p, V):
+def _jvp(mod, y, p, V, rates=None):
     out = np.full(V.shape, np.nan)  # every entry must be written
-    mod.jvp_into.py_func(y, p, V, out)
+    ds = np.full(len(y), np.nan) if rates is None else rates
+    mod.jvp_into.py_func(y, p, V, ds, out)
     return out
+
+
+def _rhs(mod, y, p):
+    ds = np.empty(len(y))
+    mod.rhs_into.py_func(0.0, y, p, ds)
+    return ds
 
 
 @pytest.mark.parametrize("key", KEYS)
@@ -26,9 +33,11 @@ def test_jvp_is_the_jacobian_times_the_columns(key):
         y, p = _point(mod, rng)
         V = rng.standard_normal((len(y), k))
         want = mod.jacobian.py_func(y, p) @ V
-        got = _jvp(mod, y, p, V)
+        rates = np.full(len(y), np.nan)
+        got = _jvp(mod, y, p, V, rates)
         scale = max(1.0, float(np.abs(want).max()))
         assert got.shape == want.shape and np.abs(got - want).max() <= 1e-12 * scale, key
+        np.testing.assert_allclose(rates, _rhs(mod, y, p), rtol=1e-14, atol=1e-14)  # the value with the derivative
 
 
 def test_a_wrong_column_is_caught():

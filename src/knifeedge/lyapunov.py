@@ -1,8 +1,8 @@
 """Lyapunov exponents of the physical phase space by the Benettin/QR method on the emitted variational equations.
 
 The state and ``k`` tangent vectors are stepped together by the classical fourth-order Runge-Kutta method in one
-compiled loop (the generated ``rhs_into`` and ``jvp_into``, the Jacobian-vector product ``J(y) Q`` of the ``k``
-tangent vectors at once; no Python call per step); every ``tau`` of time the tangent vectors are
+compiled loop (the generated ``jvp_into``: the rates and the Jacobian-vector product ``J(y) Q`` of the ``k``
+tangent vectors in one call; no Python call per step); every ``tau`` of time the tangent vectors are
 re-orthonormalized (modified Gram-Schmidt, the QR of ChaosTools.jl's ``lyapunovspectrum``) and the logarithms of
 the diagonal of R are summed.  The tangent vectors start orthogonal to the gradients of the
 closed state's invariants (``STATE_INVARIANTS``), so they span the physical phase space, which the tangent flow
@@ -78,20 +78,19 @@ def _rk4_update(x, h, d1, d2, d3, d4):
         x[i] += h / 6.0 * (d1[i] + 2.0 * d2[i] + 2.0 * d3[i] + d4[i])
 
 
-#: the first-class function types of a generated module's ``rhs_into(t, s, p, ds)``, ``jvp_into(s, p, V, out)``
-#: (``out = J(s) V``) and ``invariant_gradients(s, p)``: the loop below is compiled for these types, not for one
+#: the first-class function types of a generated module's ``jvp_into(s, p, V, ds, out)`` (the rates ``ds`` and
+#: ``out = J(s) V``) and ``invariant_gradients(s, p)``: the loop below is compiled for these types, not for one
 #: module's functions, so one compiled loop (in numba's cache, once per machine) serves every model and calls them
 #: through their addresses
 _VECTOR = types.float64[::1]
 _MATRIX = types.float64[:, ::1]
-_RHS = types.FunctionType(types.none(types.float64, _VECTOR, _VECTOR, _VECTOR))
-_JVP = types.FunctionType(types.none(_VECTOR, _VECTOR, _MATRIX, _MATRIX))
+_JVP = types.FunctionType(types.none(_VECTOR, _VECTOR, _MATRIX, _VECTOR, _MATRIX))
 _MATRIX_OF_STATE = types.FunctionType(_MATRIX(_VECTOR, _VECTOR))
-_SIGNATURE = (_RHS, _JVP, _MATRIX_OF_STATE, _VECTOR, _MATRIX, _VECTOR, types.float64, types.int64, types.int64)
+_SIGNATURE = (_JVP, _MATRIX_OF_STATE, _VECTOR, _MATRIX, _VECTOR, types.float64, types.int64, types.int64)
 
 
 @njit(cache=True)
-def _benettin(rhs_into, jvp_into, gradients, y, Q, p, h, n_blocks, steps_per_block):
+def _benettin(jvp_into, gradients, y, Q, p, h, n_blocks, steps_per_block):
     """RK4 on the state ``y`` and the tangent vectors ``Q`` (n x k) for ``n_blocks`` blocks of ``steps_per_block``
     steps of ``h``, re-orthonormalized after each block; returns the final y, Q, the sums of log |R_jj|, and the
     times and running estimates of the re-orthonormalizations (from time 0)."""
@@ -106,20 +105,16 @@ def _benettin(rhs_into, jvp_into, gradients, y, Q, p, h, n_blocks, steps_per_blo
     q, q1, q2, q3, q4, qt = Q.ravel(), K1.ravel(), K2.ravel(), K3.ravel(), K4.ravel(), Qt.ravel()
     for b in range(n_blocks):
         for _ in range(steps_per_block):
-            rhs_into(0.0, y, p, k1)
-            jvp_into(y, p, Q, K1)
+            jvp_into(y, p, Q, k1, K1)
             _shifted(yt, y, 0.5 * h, k1)
             _shifted(qt, q, 0.5 * h, q1)
-            rhs_into(0.0, yt, p, k2)
-            jvp_into(yt, p, Qt, K2)
+            jvp_into(yt, p, Qt, k2, K2)
             _shifted(yt, y, 0.5 * h, k2)
             _shifted(qt, q, 0.5 * h, q2)
-            rhs_into(0.0, yt, p, k3)
-            jvp_into(yt, p, Qt, K3)
+            jvp_into(yt, p, Qt, k3, K3)
             _shifted(yt, y, h, k3)
             _shifted(qt, q, h, q3)
-            rhs_into(0.0, yt, p, k4)
-            jvp_into(yt, p, Qt, K4)
+            jvp_into(yt, p, Qt, k4, K4)
             _rk4_update(y, h, k1, k2, k3, k4)
             _rk4_update(q, h, q1, q2, q3, q4)
         # round-off leaks into the invariants' directions (rate 0), which would outgrow decaying directions
@@ -144,8 +139,8 @@ _A = np.zeros((7, 6))
 _A[:6, :5] = DP54_A
 _A[6] = DP54_B
 _E = DP54_E
-_ADAPTIVE_SIGNATURE = (_RHS, _JVP, _MATRIX_OF_STATE, _VECTOR, _MATRIX, _VECTOR, types.float64,
-                       types.int64, types.float64, types.float64, types.float64, types.int64)
+_ADAPTIVE_SIGNATURE = (_JVP, _MATRIX_OF_STATE, _VECTOR, _MATRIX, _VECTOR, types.float64,
+                       types.int64, types.float64, types.float64, types.float64, types.float64, types.int64)
 
 
 @njit(cache=True)
@@ -173,10 +168,11 @@ def _error_squares(x, x_new, K, h, rtol, atol):
 
 
 @njit(cache=True)
-def _benettin_adaptive(rhs_into, jvp_into, gradients, y, Q, p, tau, n_blocks, rtol, atol, h, max_steps):
+def _benettin_adaptive(jvp_into, gradients, y, Q, p, tau, n_blocks, rtol, atol, tangent_tol, h, max_steps):
     """As :func:`_benettin`, stepped by Dormand-Prince 5(4) with the errors of the state and the tangent vectors
-    controlled to ``rtol``, ``atol`` (steps end on the re-orthonormalization times ``b tau``); also returns the numbers of accepted and
-    rejected steps (``max_steps`` reached: accepted = -1)."""
+    controlled, the state's to ``rtol``, ``atol``, the tangent vectors' to ``tangent_tol`` (steps end on the
+    re-orthonormalization times ``b tau``); also returns the numbers of accepted and rejected steps (``max_steps``
+    reached: accepted = -1)."""
     n, k = Q.shape
     sums, hist, hist_t = np.zeros(k), np.empty((n_blocks, k)), np.empty(n_blocks)
     K, KQ = np.empty((7, n)), np.empty((7, n * k))
@@ -185,23 +181,20 @@ def _benettin_adaptive(rhs_into, jvp_into, gradients, y, Q, p, tau, n_blocks, rt
     t, accepted, rejected = 0.0, 0, 0
     for b in range(n_blocks):
         t_end = (b + 1) * tau
-        rhs_into(0.0, y, p, K[0])
-        jvp_into(y, p, Q, KQ[0].reshape((n, k)))
+        jvp_into(y, p, Q, K[0], KQ[0].reshape((n, k)))
         while t_end - t > 1e-12 * tau:
             step = min(h, t_end - t)
             for s in range(1, 6):
                 _stage_point(yt, y, step, K, s)
                 _stage_point(qt, q, step, KQ, s)
-                rhs_into(0.0, yt, p, K[s])
-                jvp_into(yt, p, qt.reshape((n, k)), KQ[s].reshape((n, k)))
+                jvp_into(yt, p, qt.reshape((n, k)), K[s], KQ[s].reshape((n, k)))
             _stage_point(y_new, y, step, K, 6)
             _stage_point(q_new, q, step, KQ, 6)
-            rhs_into(0.0, y_new, p, K[6])
-            jvp_into(y_new, p, q_new.reshape((n, k)), KQ[6].reshape((n, k)))
+            jvp_into(y_new, p, q_new.reshape((n, k)), K[6], KQ[6].reshape((n, k)))
             # the tangent vectors are controlled too (at an equilibrium the state alone would let the step grow
-            # past the stability of the tangent dynamics), relative to their unit length after each QR: atol = rtol
+            # past the stability of the tangent dynamics), relative to their unit length after each QR
             err = math.sqrt((_error_squares(y, y_new, K, step, rtol, atol)
-                             + _error_squares(q, q_new, KQ, step, rtol, rtol)) / (n + n * k))
+                             + _error_squares(q, q_new, KQ, step, tangent_tol, tangent_tol)) / (n + n * k))
             if err <= 1.0:
                 t = t_end if step == t_end - t else t + step
                 y[:] = y_new
@@ -257,7 +250,7 @@ def _jacobian(mod, y: np.ndarray, p: np.ndarray) -> np.ndarray:
     """``J(y)``, the Jacobian-vector product of the identity: the loop's own compiled function (the module's full
     ``jacobian``, slower to compile, is not needed)."""
     out = np.empty((y.size, y.size))
-    mod.jvp_into(y, p, np.eye(y.size), out)
+    mod.jvp_into(y, p, np.eye(y.size), np.empty(y.size), out)
     return out
 
 
@@ -276,7 +269,7 @@ def _physical_basis(m: Model, y: np.ndarray, p: np.ndarray, k: int | None) -> np
 
 def lyapunov(m: Model, y0, p, t_end: float, k: int | None = None, h: float | None = None,
              tau: float | None = None, t0: float = 0.0, rtol: float | None = None, atol: float | None = None,
-             max_steps: int = 10**8) -> LyapunovResult:
+             max_steps: int = 10**8, tangent_rtol: float | None = None) -> LyapunovResult:
     """The ``k`` largest Lyapunov exponents (default: all, of the physical phase space) from ``y0`` over
     ``(t0, t_end)``.
 
@@ -306,9 +299,9 @@ def lyapunov(m: Model, y0, p, t_end: float, k: int | None = None, h: float | Non
     if not (isinstance(h, (int, float)) and math.isfinite(h) and 0 < h <= span):
         raise ValueError(f"`h` must be a positive step no longer than the span, got {h!r}")
     Q = _physical_basis(m, y, p, k)
-    functions = (mod.rhs_into, mod.jvp_into, mod.invariant_gradients)
+    functions = (mod.jvp_into, mod.invariant_gradients)
     if rtol is not None:
-        return _adaptive(functions, y, Q, p, span, float(t0), h, tau, rtol, atol, max_steps)
+        return _adaptive(functions, y, Q, p, span, float(t0), h, tau, rtol, atol, max_steps, tangent_rtol)
     if atol is not None:
         raise ValueError("`atol` needs `rtol` (the adaptive method); with a fixed step `h` leave both out")
     tau = 10 * h if tau is None else tau
@@ -321,9 +314,10 @@ def lyapunov(m: Model, y0, p, t_end: float, k: int | None = None, h: float | Non
     return _result(y, hist_t + float(t0), hist, h, steps_per_block * h, n_blocks * steps_per_block, "RK4")
 
 
-def _adaptive(functions, y, Q, p, span, t0, h, tau, rtol, atol, max_steps) -> LyapunovResult:
+def _adaptive(functions, y, Q, p, span, t0, h, tau, rtol, atol, max_steps, tangent_rtol) -> LyapunovResult:
     atol = rtol * 1e-2 if atol is None else atol
-    for name, v in (("rtol", rtol), ("atol", atol)):
+    tangent_rtol = rtol if tangent_rtol is None else tangent_rtol
+    for name, v in (("rtol", rtol), ("atol", atol), ("tangent_rtol", tangent_rtol)):
         if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
             raise ValueError(f"`{name}` must be a positive tolerance, got {v!r}")
     tau = span / 1000 if tau is None else tau
@@ -334,7 +328,7 @@ def _adaptive(functions, y, Q, p, span, t0, h, tau, rtol, atol, max_steps) -> Ly
     n_blocks = max(1, int(round(span / tau)))
     tau = span / n_blocks
     y, Q, sums, hist_t, hist, accepted, rejected = _adaptive_kernel()(*functions, y, Q, p, tau, n_blocks,
-                                                                      float(rtol), float(atol), min(h, tau),
+                                                                      float(rtol), float(atol), float(tangent_rtol), min(h, tau),
                                                                       max_steps)
     if accepted < 0:
         raise RuntimeError(f"the variational equations needed more than `max_steps` = {max_steps} steps; raise it "
