@@ -1,10 +1,11 @@
 """The emitted Jacobian-vector product ``jvp_into(s, p, V, ds, out)`` (``derivation/jacobian.py::jvp_source``).
 
 Every generated module (iterated from the registry) writes the rates ``ds`` and ``J(s) V`` for the columns of
-``V``, one forward pass through the right-hand side's common subexpressions per column.  The reference is the emitted full Jacobian
-times ``V``: a separate derivation (gradients of every subexpression, ``derivation/jacobian.py::_gradients``),
-itself checked against eighth-order central differences of the right-hand side (tests/test_jacobian.py).  The
-default tier runs the Python bodies (``py_func``: nothing to compile).
+``V``, one forward pass through the right-hand side's common subexpressions per column.  The reference is the
+emitted full Jacobian times ``V``: a separate derivation (gradients of every subexpression,
+``derivation/jacobian.py::_gradients``), itself checked against eighth-order central differences of the
+right-hand side (tests/test_jacobian.py).  The default tier runs the Python bodies (``py_func``: nothing to
+compile).
 """
 import numpy as np
 import pytest

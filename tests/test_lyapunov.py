@@ -65,9 +65,31 @@ def test_step_control_gives_the_fixed_steps_exponents():
         ke.lyapunov(m, y0, p, 40.0, tau=0.5, rtol=1e-11, max_steps=10)
 
 
+def test_a_looser_tangent_tolerance_takes_fewer_steps_for_nearly_the_same_exponents():
+    """``tangent_rtol`` weighs the tangent vectors' errors apart from the state's: looser, fewer steps, and the
+    exponents move by about the looser tolerance (not by the exponents' size, as controlling the state alone did);
+    the re-orthonormalizations fall at the ends of the steps at or past each multiple of ``tau``, the last at the
+    end of the span."""
+    m = ke.load("two_mode")
+    p = m.params(m.default_params)
+    y0 = m.state(theta1=0.02, theta2=0.01, theta1_dot=0.0, theta2_dot=0.0, phi_dot=0.3)
+    tight = ke.lyapunov(m, y0, p, 40.0, tau=0.5, rtol=1e-10)
+    loose = ke.lyapunov(m, y0, p, 40.0, tau=0.5, rtol=1e-10, tangent_rtol=1e-6)
+    assert loose.steps < tight.steps
+    np.testing.assert_allclose(loose.exponents, tight.exponents, rtol=0, atol=1e-5)
+    assert np.abs(loose.exponents - tight.exponents).max() > 1e-12  # the tangents' steps did change
+    t = tight.history_t
+    assert t[-1] == 40.0 and np.all(np.diff(t) > 0) and len(t) <= 80
+    assert np.all(np.floor(t[:-1] / 0.5 + 1e-9) < np.floor(t[1:] / 0.5 + 1e-9))  # one per multiple of tau passed
+    with pytest.raises(ValueError, match="`tangent_rtol`"):
+        ke.lyapunov(m, y0, p, 1.0, rtol=1e-8, tangent_rtol=0.0)
+    with pytest.raises(ValueError, match="`tangent_rtol` need `rtol`"):
+        ke.lyapunov(m, y0, p, 1.0, h=0.01, tangent_rtol=1e-6)
+
+
 def test_one_compiled_loop_serves_every_model():
-    """The Benettin loop is compiled for the first-class function types of ``rhs_into``/``jacobian``, not for one
-    module's functions: a second model adds no compilation, and numba can keep the loop in its disk cache (a
+    """The Benettin loop is compiled for the first-class function types of ``jvp_into``/``invariant_gradients``, not
+    for one module's functions: a second model adds no compilation, and numba can keep the loop in its disk cache (a
     closure per module, the earlier design, compiled again in every process)."""
     ly = importlib.import_module("knifeedge.lyapunov")
     for name in ("single_mode", "two_mode"):

@@ -169,50 +169,55 @@ def _error_squares(x, x_new, K, h, rtol, atol):
 
 @njit(cache=True)
 def _benettin_adaptive(jvp_into, gradients, y, Q, p, tau, n_blocks, rtol, atol, tangent_tol, h, max_steps):
-    """As :func:`_benettin`, stepped by Dormand-Prince 5(4) with the errors of the state and the tangent vectors
-    controlled, the state's to ``rtol``, ``atol``, the tangent vectors' to ``tangent_tol`` (steps end on the
-    re-orthonormalization times ``b tau``); also returns the numbers of accepted and rejected steps (``max_steps``
-    reached: accepted = -1)."""
+    """As :func:`_benettin`, stepped by Dormand-Prince 5(4) over ``n_blocks tau`` with the errors of the state and
+    the tangent vectors controlled, the state's to ``rtol``, ``atol``, the tangent vectors' to ``tangent_tol``.
+    The tangent vectors are re-orthonormalized at the end of the first step at or past each multiple of ``tau``
+    (the steps are not cut there: the sums of log |R_jj| do not depend on when); returns the times and running
+    estimates of the re-orthonormalizations (at most ``n_blocks``, the last at the end), and the numbers of
+    accepted and rejected steps (``max_steps`` reached: accepted = -1)."""
     n, k = Q.shape
     sums, hist, hist_t = np.zeros(k), np.empty((n_blocks, k)), np.empty(n_blocks)
-    K, KQ = np.empty((7, n)), np.empty((7, n * k))
-    yt, qt, y_new, q_new = np.empty(n), np.empty(n * k), np.empty(n), np.empty(n * k)
-    q = Q.ravel()
-    t, accepted, rejected = 0.0, 0, 0
-    for b in range(n_blocks):
-        t_end = (b + 1) * tau
-        jvp_into(y, p, Q, K[0], KQ[0].reshape((n, k)))
-        while t_end - t > 1e-12 * tau:
-            step = min(h, t_end - t)
-            for s in range(1, 6):
-                _stage_point(yt, y, step, K, s)
-                _stage_point(qt, q, step, KQ, s)
-                jvp_into(yt, p, qt.reshape((n, k)), K[s], KQ[s].reshape((n, k)))
-            _stage_point(y_new, y, step, K, 6)
-            _stage_point(q_new, q, step, KQ, 6)
-            jvp_into(y_new, p, q_new.reshape((n, k)), K[6], KQ[6].reshape((n, k)))
-            # the tangent vectors are controlled too (at an equilibrium the state alone would let the step grow
-            # past the stability of the tangent dynamics), relative to their unit length after each QR
-            err = math.sqrt((_error_squares(y, y_new, K, step, rtol, atol)
-                             + _error_squares(q, q_new, KQ, step, tangent_tol, tangent_tol)) / (n + n * k))
-            if err <= 1.0:
-                t = t_end if step == t_end - t else t + step
-                y[:] = y_new
-                q[:] = q_new
-                K[0] = K[6]
-                KQ[0] = KQ[6]
-                accepted += 1
-            else:
-                rejected += 1
-            factor = 10.0 if err == 0.0 else min(10.0, max(0.2, 0.9 * err ** -0.2))
-            h = step * factor if (err > 1.0 or step == h) else max(h, step * factor)
-            if accepted + rejected >= max_steps:
-                return y, Q, sums, hist_t, hist, -1, rejected
-        _project_out(gradients(y, p), Q)
-        _orthonormalize(Q, sums)
-        hist_t[b] = t_end
-        hist[b] = sums / t_end
-    return y, Q, sums, hist_t, hist, accepted, rejected
+    K, KQ = np.empty((7, n)), np.empty((7, n, k))
+    yt, y_new, Qt, Q_new = np.empty(n), np.empty(n), np.empty((n, k)), np.empty((n, k))
+    # flat views of the tangent vectors, so that one loop over a vector serves the state and the tangents
+    KQf, q, qt, q_new = KQ.reshape((7, n * k)), Q.ravel(), Qt.ravel(), Q_new.ravel()
+    t, t_final, t_qr, b, accepted, rejected = 0.0, n_blocks * tau, tau, 0, 0, 0
+    jvp_into(y, p, Q, K[0], KQ[0])
+    while t_final - t > 1e-12 * tau:
+        step = min(h, t_final - t)
+        for s in range(1, 6):
+            _stage_point(yt, y, step, K, s)
+            _stage_point(qt, q, step, KQf, s)
+            jvp_into(yt, p, Qt, K[s], KQ[s])
+        _stage_point(y_new, y, step, K, 6)
+        _stage_point(q_new, q, step, KQf, 6)
+        jvp_into(y_new, p, Q_new, K[6], KQ[6])
+        # the tangent vectors are controlled too (at an equilibrium the state alone would let the step grow past
+        # the stability of the tangent dynamics), relative to their unit length after each QR
+        err = math.sqrt((_error_squares(y, y_new, K, step, rtol, atol)
+                         + _error_squares(q, q_new, KQf, step, tangent_tol, tangent_tol)) / (n + n * k))
+        if err <= 1.0:
+            t = t_final if step == t_final - t else t + step
+            y[:] = y_new
+            q[:] = q_new
+            K[0] = K[6]
+            KQ[0] = KQ[6]
+            accepted += 1
+            if t >= t_qr - 1e-12 * tau:
+                _project_out(gradients(y, p), Q)
+                _orthonormalize(Q, sums)
+                hist_t[b] = t
+                hist[b] = sums / t
+                b += 1
+                t_qr = min(t_final, (math.floor(t / tau + 1e-9) + 1) * tau)
+                jvp_into(y, p, Q, K[0], KQ[0])  # the derivatives of the new tangent vectors
+        else:
+            rejected += 1
+        factor = 10.0 if err == 0.0 else min(10.0, max(0.2, 0.9 * err ** -0.2))
+        h = step * factor if (err > 1.0 or step == h) else max(h, step * factor)
+        if accepted + rejected >= max_steps:
+            return y, Q, sums, hist_t[:b], hist[:b], -1, rejected
+    return y, Q, sums, hist_t[:b], hist[:b], accepted, rejected
 
 
 def _adaptive_kernel():
@@ -277,8 +282,12 @@ def lyapunov(m: Model, y0, p, t_end: float, k: int | None = None, h: float | Non
     linear mode at ``y0``); ``tau``: the time between re-orthonormalizations (default ``10 h``), rounded to a whole
     number of steps.  With ``rtol`` (and ``atol``, default ``rtol * 1e-2``): Dormand-Prince 5(4) with the errors of
     the state and of the tangent vectors controlled as in ``simulate(method="DP54")`` (the tangent vectors, of unit
-    length after each re-orthonormalization, with ``atol = rtol``), ``h`` the first step, ``tau`` (default ``span / 1000``)
-    rounded to divide the span; ``max_steps`` bounds the steps.
+    length after each re-orthonormalization, to ``tangent_rtol``, default ``rtol``, relative and absolute), ``h``
+    the first step; the tangent vectors are re-orthonormalized at the end of the first step at or past each
+    multiple of ``tau`` (default ``span / 1000``, rounded to divide the span), the last time at ``t_end``;
+    ``max_steps`` bounds the steps.  A looser ``tangent_rtol`` takes fewer steps where the tangent vectors
+    oscillate faster than the state moves (a settled spin); the exponents then move by about that tolerance
+    (docs/performance.md, "Lyapunov exponents").
     """
     p = m.check_params(p)
     y = m._closed(y0).copy()
@@ -302,8 +311,9 @@ def lyapunov(m: Model, y0, p, t_end: float, k: int | None = None, h: float | Non
     functions = (mod.jvp_into, mod.invariant_gradients)
     if rtol is not None:
         return _adaptive(functions, y, Q, p, span, float(t0), h, tau, rtol, atol, max_steps, tangent_rtol)
-    if atol is not None:
-        raise ValueError("`atol` needs `rtol` (the adaptive method); with a fixed step `h` leave both out")
+    if atol is not None or tangent_rtol is not None:
+        raise ValueError("`atol` and `tangent_rtol` need `rtol` (the adaptive method); with a fixed step `h` leave "
+                         "them out")
     tau = 10 * h if tau is None else tau
     if not (isinstance(tau, (int, float)) and math.isfinite(tau) and h <= tau <= span):
         raise ValueError(f"`tau` must lie between the step `h` = {h} and the span, got {tau!r}")
@@ -327,14 +337,14 @@ def _adaptive(functions, y, Q, p, span, t0, h, tau, rtol, atol, max_steps, tange
         raise ValueError(f"`max_steps` must be a positive integer, got {max_steps!r}")
     n_blocks = max(1, int(round(span / tau)))
     tau = span / n_blocks
+    tolerances = float(rtol), float(atol), float(tangent_rtol)
     y, Q, sums, hist_t, hist, accepted, rejected = _adaptive_kernel()(*functions, y, Q, p, tau, n_blocks,
-                                                                      float(rtol), float(atol), float(tangent_rtol), min(h, tau),
-                                                                      max_steps)
+                                                                      *tolerances, min(h, tau), max_steps)
     if accepted < 0:
         raise RuntimeError(f"the variational equations needed more than `max_steps` = {max_steps} steps; raise it "
                            f"or loosen `rtol`")
-    return _result(y, hist_t + t0, hist, span / accepted, tau, accepted, f"DP54 rtol {rtol:g} atol {atol:g}",
-                   rejected)
+    method = f"DP54 rtol {rtol:g} atol {atol:g}" + (f" tangent_rtol {tangent_rtol:g}" if tangent_rtol != rtol else "")
+    return _result(y, hist_t + t0, hist, span / accepted, tau, accepted, method, rejected)
 
 
 def _result(y, hist_t, hist, h, tau, steps, method, rejected=0) -> LyapunovResult:
