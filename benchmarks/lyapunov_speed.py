@@ -11,8 +11,9 @@ The celt (Schoemer's set, undamped) from a slightly tilted spin at -2 rad/s (it 
   corresponds to".
 * **cost**, median of ``--repeats``, interleaved in one process (warm): a plain RK4 run with the same step (the
   same method and step), a plain DOP853 run at the matching tolerance, the largest exponent (``k=1``) and
-  the full spectrum (5 exponents of the physical phase space).  The issue's bars: largest <= 3x, full <= 10x a
-  plain run at the same accuracy.
+  the full spectrum (5 exponents of the physical phase space), step-controlled (the tangent vectors to ``rtol``,
+  and to ``--tangent-rtol``, looser) and fixed-step; the steps of each.  The issue's bars: largest <= 3x, full
+  <= 10x a plain run at the same accuracy.
 * **jitcode** (optional peer, ``pip install jitcode``; skipped with a note when absent): ``jitcode_lyap`` on the
   same equations -- ``M(n) domega/dt = f(n, omega)``, ``dn/dt = n x omega`` from ``derivation.rigid.equations``
   (the derivation the generated module comes from), fed to jitcode as common subexpressions (``helpers``, from
@@ -46,8 +47,12 @@ def setup():
     return m, p, y0
 
 
+def _run(m, y0, p, span, **kw):
+    return ke.simulate(m, y0, (0.0, span), p, t_eval=np.array([span]), max_steps=10**9, **kw)
+
+
 def _end(m, y0, p, span, **kw):
-    return ke.simulate(m, y0, (0.0, span), p, t_eval=np.array([span]), max_steps=10**9, **kw).y[:, -1]
+    return _run(m, y0, p, span, **kw).y[:, -1]
 
 
 def accuracy(m, p, y0, rtol: float, h: float, span: float) -> dict:
@@ -67,15 +72,18 @@ def accuracy(m, p, y0, rtol: float, h: float, span: float) -> dict:
             "dop853_rtol_matching_rk4": rk4_matching}
 
 
-def costs(m, p, y0, span: float, rtol: float, rtol853: float, h: float, repeats: int) -> dict:
+def costs(m, p, y0, span: float, rtol: float, rtol853: float, h: float, repeats: int, tangent_rtol: float) -> dict:
     """Median wall times (warm, interleaved) of the plain runs and the variational loops over ``span``."""
     atol = rtol * 1e-2
     runs = {
-        "plain_dp54": lambda: _end(m, y0, p, span, method="DP54", rtol=rtol, atol=atol),
-        "plain_dop853": lambda: _end(m, y0, p, span, rtol=rtol853, atol=rtol853 * 1e-2),
-        "plain_rk4": lambda: _end(m, y0, p, span, method="RK4", h=h),
+        "plain_dp54": lambda: _run(m, y0, p, span, method="DP54", rtol=rtol, atol=atol),
+        "plain_dop853": lambda: _run(m, y0, p, span, rtol=rtol853, atol=rtol853 * 1e-2),
+        "plain_rk4": lambda: _run(m, y0, p, span, method="RK4", h=h),
         "largest": lambda: ke.lyapunov(m, y0, p, span, k=1, tau=TAU, rtol=rtol, atol=atol),
         "full": lambda: ke.lyapunov(m, y0, p, span, tau=TAU, rtol=rtol, atol=atol),
+        "largest_loose": lambda: ke.lyapunov(m, y0, p, span, k=1, tau=TAU, rtol=rtol, atol=atol,
+                                             tangent_rtol=tangent_rtol),
+        "full_loose": lambda: ke.lyapunov(m, y0, p, span, tau=TAU, rtol=rtol, atol=atol, tangent_rtol=tangent_rtol),
         "largest_rk4": lambda: ke.lyapunov(m, y0, p, span, k=1, h=h, tau=TAU),
         "full_rk4": lambda: ke.lyapunov(m, y0, p, span, h=h, tau=TAU),
     }
@@ -95,9 +103,12 @@ def costs(m, p, y0, span: float, rtol: float, rtol853: float, h: float, repeats:
     med = {k: statistics.median(v) for k, v in samples.items()}
     e0 = float(m.energy(y0, p))
     drift = lambda y: abs(float(m.energy(y, p)) - e0) / abs(e0)  # noqa: E731
+    steps = {k: (r.nsteps if k.startswith("plain") else r.steps) for k, r in out.items()}
     return {
-        "seconds": med, "samples": samples,
+        "seconds": med, "samples": samples, "steps": steps, "tangent_rtol": tangent_rtol,
         "ratio_largest_vs_dp54": med["largest"] / med["plain_dp54"], "ratio_full_vs_dp54": med["full"] / med["plain_dp54"],
+        "ratio_largest_loose_vs_dp54": med["largest_loose"] / med["plain_dp54"],
+        "ratio_full_loose_vs_dp54": med["full_loose"] / med["plain_dp54"],
         "ratio_largest_vs_dop853": med["largest"] / med["plain_dop853"],
         "ratio_full_vs_dop853": med["full"] / med["plain_dop853"],
         "ratio_largest_rk4_vs_rk4": med["largest_rk4"] / med["plain_rk4"],
@@ -105,9 +116,10 @@ def costs(m, p, y0, span: float, rtol: float, rtol853: float, h: float, repeats:
         "steps_dp54_loop": out["full"].steps, "rejected_dp54_loop": out["full"].rejected,
         "exponents": [float(x) for x in out["full"].exponents], "uncertainty": [float(x) for x in out["full"].uncertainty],
         "exponents_rk4": [float(x) for x in out["full_rk4"].exponents],
+        "exponents_loose": [float(x) for x in out["full_loose"].exponents],
         "largest": float(out["largest"].exponents[0]),
-        "energy_drift": {"dp54_loop": drift(out["full"].y), "plain_dp54": drift(out["plain_dp54"]),
-                         "plain_dop853": drift(out["plain_dop853"]), "rk4_loop": drift(out["full_rk4"].y)},
+        "energy_drift": {"dp54_loop": drift(out["full"].y), "plain_dp54": drift(out["plain_dp54"].y[:, -1]),
+                         "plain_dop853": drift(out["plain_dop853"].y[:, -1]), "rk4_loop": drift(out["full_rk4"].y)},
     }
 
 
@@ -117,6 +129,7 @@ def main(argv=None) -> int:
     ap.add_argument("--accuracy-span", type=float, default=100.0)
     ap.add_argument("--rtol", type=float, default=1e-8, help="tolerance of the adaptive loop and the plain DP54 run")
     ap.add_argument("--h", type=float, default=None, help="RK4 step (default: ke.lyapunov's)")
+    ap.add_argument("--tangent-rtol", type=float, default=1e-6, help="the looser tolerance of the tangent vectors")
     ap.add_argument("--repeats", type=int, default=3)
     ap.add_argument("--no-jitcode", action="store_true")
     ap.add_argument("--jitcode-span", type=float, default=None, help="span of the jitcode run (default --span)")
@@ -130,7 +143,8 @@ def main(argv=None) -> int:
     print(f"after {args.accuracy_span:g} s: DP54 rtol {args.rtol:g} error {acc['dp54_error']:.2e}, RK4 h = {h:.3g} "
           f"{acc['rk4_error']:.2e}; DOP853 {acc['dop853_error']}; DOP853 matching DP54: rtol "
           f"{acc['dop853_matching_rtol']:.0e}, matching RK4: {acc['dop853_rtol_matching_rk4']:.0e}", flush=True)
-    res["costs"] = c = costs(m, p, y0, args.span, args.rtol, acc["dop853_matching_rtol"], h, args.repeats)
+    res["costs"] = c = costs(m, p, y0, args.span, args.rtol, acc["dop853_matching_rtol"], h, args.repeats,
+                             args.tangent_rtol)
     print(json.dumps({k: c[k] for k in c if k != "samples"}, indent=1), flush=True)
     if not args.no_jitcode:
         from . import lyapunov_jitcode
