@@ -4,9 +4,11 @@
 ``jacobian_p(s, p)`` is ``d rhs / d p``, shape ``(n, n_params)``.  Both are
 derived exactly and printed with shared subexpressions, like the right-hand
 side (SymForce emits Jacobians beside values; jitcode derives the variational
-equations the same way).  An emitter appends :func:`block_source` to its
-module; the block also adds the two functions' operation counts to the
-module's ``OP_COUNTS``.
+equations the same way).  ``jvp_into(s, p, V, ds, out)`` writes the rates and
+the Jacobian-vector product ``J(s) V`` of the columns of ``V`` (what the
+Lyapunov loop steps its tangent vectors with; :func:`jvp_source`).  An emitter
+appends :func:`block_source` to its module; the block also adds the functions'
+operation counts to the module's ``OP_COUNTS``.
 
 The derivatives are taken through the right-hand side's own common
 subexpressions (forward mode: each intermediate ``c_k = f(...)`` gets its
