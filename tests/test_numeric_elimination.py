@@ -72,6 +72,22 @@ def test_numeric_jacobians_equal_the_closed_forms(disks):
             assert np.allclose(b, a, rtol=1e-11, atol=1e-11 * np.max(np.abs(a)))
 
 
+@pytest.mark.slow  # derives the disk twice (about 15 s of a worker): the slow tier
+def test_numeric_jvp_is_the_closed_forms_jacobian_times_the_columns(disks):
+    """``jvp_into`` of the numeric model (forward mode through the solve's program) writes the closed form's rates
+    and its Jacobian times the columns of ``V``."""
+    symbolic, numeric, _ = disks
+    rng = np.random.default_rng(5)
+    p = symbolic.params(g=9.81, r=0.13)
+    for _ in range(10):
+        s = rng.uniform(-1.2, 1.2, 4) * np.array([1.0, 5.0, 5.0, 20.0])
+        V, ds, out = rng.standard_normal((4, 3)), np.empty(4), np.empty((4, 3))
+        numeric.module.jvp_into.py_func(s, p, V, ds, out)
+        want = symbolic.jacobian(s, p) @ V
+        assert np.allclose(out, want, rtol=1e-11, atol=1e-11 * np.max(np.abs(want)))
+        assert np.allclose(ds, symbolic.module.rhs(0.0, s, p), rtol=1e-12, atol=1e-12 * np.max(np.abs(ds)))
+
+
 @pytest.mark.slow  # derives the two-body model (6-12 s) and compiles it: the slow tier
 def test_disk_pendulum_jacobian_against_central_differences(disk_pendulum):
     """The pendulum on the disk (numeric elimination): the exact Jacobian against 8th-order central differences."""
