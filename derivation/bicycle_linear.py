@@ -154,7 +154,8 @@ def build(work: Path) -> str:
 
 
 def main(argv=None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m knifeedge.derive.bicycle_linear", description=__doc__.split("\n")[0])
+    parser = argparse.ArgumentParser(prog="python -m knifeedge.derive.bicycle_linear",
+                                     description=__doc__.split("\n")[0])
     parser.add_argument("--check", action="store_true",
                         help=f"derive in a temporary folder and compare with {OUT.relative_to(ROOT)} (never written)")
     args = parser.parse_args(argv)
