@@ -2,11 +2,19 @@
 PYTHON ?= python
 export PYTHONHASHSEED = 0
 
-.PHONY: derive test test-all demo bench figures check-generated
+.PHONY: derive bicycle-linear check-bicycle-linear test test-all demo bench figures check-generated
 
 ## derive: regenerate generated/ from the Lagrangians (SymPy; deterministic)
 derive:
 	$(PYTHON) -m knifeedge.derive --out generated
+
+## bicycle-linear: the Whipple bicycle's lean/steer coefficients from its derived Jacobian (generated/linear/;
+## about a minute: not part of derive); check-bicycle-linear: fail if they differ from a fresh derivation
+bicycle-linear:
+	$(PYTHON) -m knifeedge.derive.bicycle_linear
+
+check-bicycle-linear:
+	$(PYTHON) -m knifeedge.derive.bicycle_linear --check
 
 ## check-generated: fail if generated/ differs from a fresh derivation (made in a temporary folder;
 ## generated/ is never written, so a hand edit is reported, not erased)

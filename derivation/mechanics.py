@@ -162,16 +162,23 @@ def _name(q) -> str:
 
 
 def _fixed_point(point: Point, frame: ReferenceFrame, given: Point | None = None) -> Point:
-    """A point fixed in ``frame`` (its velocity set to zero there) to which ``point`` is located."""
-    seen, todo = {point}, [point]
+    """A point fixed in ``frame`` (its velocity set to zero there) to which ``point`` is located: ``given``, else
+    of those the farthest from ``point`` (the origin the positions are built from; a nearer one is a body's
+    material point at a contact whose velocity the author set to zero because it does not slip, as PyDy's
+    rattleback example sets its contact point's)."""
+    seen, todo, found = {point}, [point], []
     while todo:
         p = todo.pop(0)
-        if p is given or (given is None and frame in p._vel_dict and p._vel_dict[frame] == 0):
+        if p is given:
             return p
+        if given is None and frame in p._vel_dict and p._vel_dict[frame] == 0:
+            found.append(p)
         for other in p._pos_dict:
             if other not in seen:
                 seen.add(other)
                 todo.append(other)
+    if found:
+        return found[-1]
     raise MechanicsConversionError(
         f"the point {point} is located relative to no point fixed in the inertial frame {frame}: set the velocity "
         f"of an origin to zero (`O.set_vel({frame}, 0)`) and locate the bodies from it")

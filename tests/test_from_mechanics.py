@@ -299,3 +299,19 @@ def test_a_system_is_converted_like_its_kanes_method():
     assert sp.simplify(spec.lagrangian - kane.lagrangian) == 0 and spec.constraints == kane.constraints
     XD, PHID = sp.symbols("x_dot phi_dot", real=True)
     assert sp.simplify(derive(spec).explicit[1] + m * a * XD * PHID / (I + m * a**2)) == 0
+
+
+def test_the_origin_is_the_fixed_point_not_a_contact_point_set_at_rest():
+    """PyDy's rattleback example sets its contact point's velocity to zero (the material point does not slip)
+    while the point moves on the ground; the positions are those from the origin fixed in N, beyond it."""
+    from knifeedge.derive.mechanics import _fixed_point
+
+    x = dynamicsymbols("x")
+    N = ReferenceFrame("N")
+    origin = Point("origin")
+    origin.set_vel(N, 0)
+    contact = origin.locatenew("contact", x * N.x)
+    contact.set_vel(N, 0)
+    centre = contact.locatenew("centre", N.z)
+    assert _fixed_point(centre, N) is origin
+    assert _fixed_point(centre, N, contact) is contact  # a System's fixed_point is taken as given

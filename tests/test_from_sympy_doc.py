@@ -45,3 +45,14 @@ def test_the_doc_runs_from_an_empty_folder(tmp_path, monkeypatch):
             exec(compile(code, str(DOC), "exec"), namespace)
         _check_printed(code, out.getvalue())
     assert (tmp_path / "disc.png").exists()
+
+
+def test_the_docs_stability_chart_runs(tmp_path, monkeypatch):
+    """Section 7's ``python chart`` block (the scene ``bicycle_stability``) as written, in an empty folder."""
+    monkeypatch.chdir(tmp_path)
+    (code,) = _blocks("python chart")
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out):
+        exec(compile(code, str(DOC), "exec"), {})
+    _check_printed(code, out.getvalue())
+    assert (tmp_path / "bicycle_stability.png").exists()

@@ -185,3 +185,15 @@ def test_nonlinear_run_matches_sympys_lagranges_method(bicycle):
     ours = r.y[[bicycle.state_names.index(n) for n in ("q2", "q5", "q4", "q2_dot", "q5_dot", "q3_dot")], -1]
     np.testing.assert_allclose(ours, theirs, rtol=0, atol=1e-9)
     assert abs(theirs[0]) > 1e-3  # it leaned
+
+
+@pytest.mark.slow
+def test_the_linear_module_is_this_derivations(bicycle):
+    """generated/linear/whipple_bicycle.py (``make bicycle-linear``, the scene ``bicycle_stability``'s model) holds
+    the lean/steer block of this derivation's Jacobian: the coefficients taken again from the fixture's module."""
+    from knifeedge.derive import bicycle_linear
+    from knifeedge.generated.linear import whipple_bicycle as checked_in
+
+    blocks = bicycle_linear.jacobian_blocks(Path(bicycle.module.__file__), bicycle_linear.SPEEDS)
+    for fresh, name in zip(bicycle_linear.coefficients(blocks), ("A0", "A1", "A2")):
+        np.testing.assert_allclose(fresh, getattr(checked_in, name), rtol=0, atol=1e-12, err_msg=name)

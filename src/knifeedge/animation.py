@@ -185,7 +185,7 @@ def _run_spec_of(source):
     if isinstance(source, SceneResult):
         source = source.scene
     if isinstance(source, Scene):
-        return source.run, f"scene {source.name}"
+        return source.main_run(), f"scene {source.name}"
     if isinstance(source, RunSpec):
         return source, "run"
     if isinstance(source, SimulationResult):

@@ -422,7 +422,7 @@ def scene_cmd(args) -> int:
     if args.list:
         for n in SCENE_NAMES:
             s = get_scene(n)
-            print(f"{n:15s} {s.title}\n{'':15s} model: {s.run.describe()}\n{'':15s} why: {s.why}")
+            print(f"{n:15s} {s.title}\n{'':15s} model: {s.describe_model()}\n{'':15s} why: {s.why}")
         return 0
     if not args.name:
         raise ValueError(f"give a scene NAME ({', '.join(SCENE_NAMES)}) or --list")

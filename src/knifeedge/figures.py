@@ -264,7 +264,7 @@ def index_markdown(records: list) -> str:
                        f"(made in {anim['seconds']:.1f} s)", ""] if anim["ok"]
                       else [f"**The animation failed:** {anim['error']}", ""])
         lines += [f"**Paper's caption.** {scene.caption}", "",
-                  f"**Model.** {scene.run.describe()}  ", f"**Why this model.** {scene.why}", ""]
+                  f"**Model.** {scene.describe_model()}  ", f"**Why this model.** {scene.why}", ""]
         if rec["claims"]:
             lines += ["| the paper says | verdict | evidence |", "|---|---|---|"]
             lines += [f"| {_md(c)} | {_verdict_mark(v)} | {_md(e)} |" for c, v, e in rec["claims"]]
@@ -306,7 +306,7 @@ def index_html(records: list) -> str:
             f"<div class='scene' id='{e(rec['name'])}'><div class='fig'>{fig}</div><div class='text'>"
             f"<h2>{e(rec['name'])}: {e(scene.title)}</h2>"
             f"<p><b>Paper's caption.</b> {e(scene.caption)}</p>"
-            f"<p><b>Model.</b> {e(scene.run.describe())}<br><b>Why this model.</b> {e(scene.why)}</p>"
+            f"<p><b>Model.</b> {e(scene.describe_model())}<br><b>Why this model.</b> {e(scene.why)}</p>"
             + (f"<table><tr><th>the paper says</th><th>verdict</th><th>evidence</th></tr>{claims}</table>" if claims else "")
             + (f"<p></p><table><tr><th>number</th><th>value</th></tr>{numbers}</table>" if numbers else "")
             + f"<p><i>computed in {rec['seconds']:.1f} s</i></p></div></div>")

@@ -234,8 +234,15 @@ def stability_boundaries(m: Model, p, family: str, interval, n_grid: int = 400) 
     if not isinstance(n_grid, int) or n_grid < 2:
         raise ValueError(f"`n_grid` must be an integer >= 2, got {n_grid!r}")
     _family_index(m, family)
+    return growth_boundaries(lambda v: _growth(m, p, family, v), lo, hi, n_grid)
+
+
+def growth_boundaries(growth, lo: float, hi: float, n_grid: int = 400) -> np.ndarray:
+    """Every value in ``(lo, hi)`` where ``growth(v) = (largest physical real part, threshold of zero)`` changes
+    sign: tabulated on ``n_grid`` points, each change refined as :func:`stability_boundaries` says (the search
+    behind it, also for linear models given as matrices, e.g. the scene ``bicycle_stability``)."""
     grid = np.linspace(lo, hi, n_grid)
-    state = [_growth(m, p, family, v) for v in grid]
+    state = [growth(v) for v in grid]
     unstable = [g > thr for g, thr in state]
     out = []
     xtol = 1e-13 * max(abs(lo), abs(hi))
@@ -245,12 +252,12 @@ def stability_boundaries(m: Model, p, family: str, interval, n_grid: int = 400) 
         (ga, ta), (gb, tb) = state[i], state[i + 1]
         a, b = grid[i], grid[i + 1]
         if min(abs(ga) - ta, abs(gb) - tb) > 0 and (ga > 0) != (gb > 0):
-            out.append(brentq(lambda v: _growth(m, p, family, v)[0], a, b, xtol=xtol, rtol=1e-15))
+            out.append(brentq(lambda v: growth(v)[0], a, b, xtol=xtol, rtol=1e-15))
             continue
         ua = unstable[i]
         while b - a > max(xtol, 1e-15 * abs(a + b)):
             mid = 0.5 * (a + b)
-            g, thr = _growth(m, p, family, mid)
+            g, thr = growth(mid)
             if (g > thr) == ua:
                 a = mid
             else:

@@ -277,7 +277,7 @@ def _base_run(target, params, y0, t_span, method, rtol, atol) -> RunSpec:
     if isinstance(target, str):
         target = get_scene(target)
     if isinstance(target, Scene):
-        run = target.run
+        run = target.main_run()
     elif isinstance(target, RunSpec):
         run = target
     elif isinstance(target, Model):

@@ -2,7 +2,7 @@
 
 >>> import knifeedge as ke
 >>> ke.scene_names()
-('numerical', 'amplitudes', 'ellipses', 'numerical2', 'tinversion', 'table_path', 'model_fidelity', 'rolling_disk', 'celt', 'celt_schoemer', 'knife_edge_rigid', 'knife_edge_vs_celt', 'celt_stability', 'predictability', 'celt_chaos')
+('numerical', 'amplitudes', 'ellipses', 'numerical2', 'tinversion', 'table_path', 'model_fidelity', 'rolling_disk', 'celt', 'celt_schoemer', 'knife_edge_rigid', 'knife_edge_vs_celt', 'celt_stability', 'predictability', 'celt_chaos', 'bicycle_stability')
 >>> s = ke.scene("numerical")          # the paper's Fig. 'numerical'
 >>> s.run.model, s.run.fidelity
 ('single_mode', 'reduced')
@@ -17,7 +17,7 @@ from .base import RUN_SETTINGS, RunSpec, Scene, SceneResult
 #: scene names, the paper's figures in its order, then the others; each is a module of this package defining ``SCENE``
 SCENE_NAMES = ("numerical", "amplitudes", "ellipses", "numerical2", "tinversion", "table_path", "model_fidelity",
                "rolling_disk", "celt", "celt_schoemer", "knife_edge_rigid", "knife_edge_vs_celt", "celt_stability",
-               "predictability", "celt_chaos")
+               "predictability", "celt_chaos", "bicycle_stability")
 
 
 def scene_names() -> tuple:

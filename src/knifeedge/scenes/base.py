@@ -70,7 +70,7 @@ class SceneResult:
 
     def summary(self) -> str:
         """Plain-text summary: model, numbers, claims."""
-        lines = [f"scene {self.scene.name}: {self.scene.title}", f"  model: {self.scene.run.describe()}",
+        lines = [f"scene {self.scene.name}: {self.scene.title}", f"  model: {self.scene.describe_model()}",
                  f"  why: {self.scene.why}"]
         for k, v in self.numbers.items():
             lines.append(f"  {k} = {format_number(v)}")
@@ -102,7 +102,8 @@ class Scene:
     caption : the paper's caption (or the issue's description for figures
         the paper does not have).
     why : one line: why this model, fidelity and state answer the question.
-    run : the main integration (the base point of scans).
+    run : the main integration (the base point of scans); ``None`` for a scene that integrates nothing
+        (its model is named in ``why``; it cannot be swept or animated).
     plots : what the figure shows.
     reports : names of the numbers :attr:`SceneResult.numbers` holds.
     compute : ``compute(scene, progress) -> SceneResult``.
@@ -116,7 +117,7 @@ class Scene:
     title: str
     caption: str
     why: str
-    run: RunSpec
+    run: RunSpec | None
     plots: str
     reports: tuple[str, ...]
     compute: Callable = field(repr=False)
@@ -126,12 +127,23 @@ class Scene:
     uses: tuple = ()
 
     def __post_init__(self):
-        if not self.uses:
+        if not self.uses and self.run is not None:
             object.__setattr__(self, "uses", ((self.run.model, self.run.fidelity, self.run.pose),))
 
     def with_(self, **changes: Any) -> "Scene":
         """A copy whose main run has some values changed (see :meth:`RunSpec.with_`)."""
-        return dataclasses.replace(self, run=self.run.with_(**changes))
+        return dataclasses.replace(self, run=self.main_run().with_(**changes))
+
+    def main_run(self) -> RunSpec:
+        """The main run; ``ValueError`` for a scene that integrates nothing."""
+        if self.run is None:
+            raise ValueError(f"scene {self.name!r} integrates nothing (its model: {self.why}); it has no run to "
+                             f"change, sweep or animate")
+        return self.run
+
+    def describe_model(self) -> str:
+        """One line: the main run, or for a scene without one, that it integrates nothing."""
+        return self.run.describe() if self.run is not None else "no integration (see why)"
 
     def __call__(self, progress: Callable[[str], None] | None = None) -> SceneResult:
         """Run the scene: ``result = scene()``."""

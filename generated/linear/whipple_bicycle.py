@@ -1,0 +1,23 @@
+"""whipple_bicycle: the lean/steer equations about straight running, A(v) = A0 + v A1 + v^2 A2.
+
+GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make bicycle-linear`` to regenerate.
+Produced by derivation/bicycle_linear.py from tests/models/whipple_bicycle.py: the lean/steer block of the derived bicycle's
+generated Jacobian at straight running at v = 0, 1, 2 m/s, at the benchmark's
+parameters (Meijaard et al. 2007, Table 1).  SymPy 1.14.0; input hash sha256:9c00c1c333fcbf60e3083854ba3897e38ccd067f2b8dc26a0ea0b45dbc67ffa7
+"""
+#: the linear state: lean q2, steer q5 [rad], their rates [rad/s]
+STATE_NAMES = ('q2', 'q5', 'q2_dot', 'q5_dot')
+#: forward speeds [m/s] whose Jacobians gave the coefficients
+SPEEDS = (0.0, 1.0, 2.0)
+#: A(v) = A0 + v A1 + v^2 A2 (rows: rates of STATE_NAMES; columns: STATE_NAMES)
+A0 = ((0.0, 0.0, 1.0, 0.0), (0.0, 0.0, 0.0, 1.0), (9.489774446773554, -0.5715231737292452, 0.0, 0.0), (11.719476871963305, 30.908753393240694, 0.0, 0.0))
+A1 = ((0.0, 0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 0.0), (0.0, -4.440892098500626e-16, -0.10552244980569092, -0.3305153989923107), (0.0, 5.329070518200751e-15, 3.676805233321525, -3.084865527433112))
+A2 = ((0.0, 0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 0.0), (0.0, -0.891197738059089, 0.0, 0.0), (0.0, -1.9717150849997207, 0.0, 0.0))
+CHECK_SPEEDS = (5.0, 10.0)
+#: largest |A(v) - polynomial| at CHECK_SPEEDS (the polynomial is exact)
+FIT_RESIDUAL = 2.8421709430404007e-13
+#: SHA-256 of tests/models/whipple_bicycle.py and derivation/bicycle_linear.py
+INPUT_HASH = '9c00c1c333fcbf60e3083854ba3897e38ccd067f2b8dc26a0ea0b45dbc67ffa7'
+SYMPY_VERSION = '1.14.0'
+#: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
+MODULE_SHA256 = '302accc6207caa34e3b30821aea01b27383b0ec091cb9fbfa244c31d85d1b279'
