@@ -83,8 +83,8 @@ def kernel(model, method: str):
 
 
 def kernel_module(model, method: str):
-    """The kernel module of ``method`` for ``model`` (written and imported, compiled or not: its ``solve``
-    compiles at its first call unless the cache holds it, see :func:`kernel_compiled`)."""
+    """The kernel of ``method`` for ``model`` (:func:`load_kernel`, compiled or not: its ``solve`` compiles at
+    its first call unless the cache holds it, see :func:`kernel_compiled`)."""
     spec, rhs_name, _ = _identity(model, method)
     return load_kernel(spec.template, spec.variant, model.module, rhs_name, model.n_state)
 

@@ -218,11 +218,10 @@ def is_cached(dispatcher) -> bool:
     return dispatcher._cache.index_path().is_file()
 
 
-def will_load(py_func, label: str) -> bool:
-    """Whether :func:`compiled_cfunc` of ``py_func`` and ``label`` would load its machine code from the cache."""
-    abiflags = getattr(sys, "abiflags", "")
-    name = f"{label}-{stamp(py_func)}.py{sys.version_info[0]}{sys.version_info[1]}{abiflags}.nbi"
-    return (cache_dir() / "kernels" / name).is_file()
+def index_path(py_func, label: str) -> Path:
+    """The index file of :func:`compiled_cfunc` of ``py_func`` and ``label`` (it exists: the cache holds it)."""
+    tag = f"py{sys.version_info[0]}{sys.version_info[1]}{getattr(sys, 'abiflags', '')}"
+    return cache_dir() / "kernels" / f"{label}-{stamp(py_func)}.{tag}.nbi"
 
 
 #: the first bytes of the kernels' cache files, written by :class:`CheckedCacheFile`

@@ -32,7 +32,7 @@ from . import common as _c
 from . import fnptr as _fnptr
 from . import irparts as _irparts
 from . import tableau as _tableau
-from .cache import cache_dir, compiled, compiled_cfunc, digest, is_cached, will_load
+from .cache import cache_dir, compiled, compiled_cfunc, digest, index_path, is_cached
 from .common import SAMPLES
 from .fnptr import call_f8, call_void
 
@@ -284,6 +284,7 @@ class AdaptiveKernel:
         stem = digest(tableau, _tableau.erk_arrays(tableau), self._rhs, n_state, self.NQ)
         self.path = cache_dir() / "kernels" / f"erk-{tableau}-{model_module.__name__.rsplit('.', 1)[-1]}-{stem}"
         self.driver = driver(tableau)
+        self._events_index = index_path(self._events_py(), f"{self.path.name}-events") if self.NV else None
         self._parts = None
 
     def _rhs_cfunc(self):
@@ -347,7 +348,7 @@ class AdaptiveKernel:
         """Whether the cache holds the compiled parts and the integrator (later calls load them)."""
         if not _irparts.cache_file(self.path).is_file() or not is_cached(self.driver):
             return False
-        return not self.NV or will_load(self._events_py(), f"{self.path.name}-events")
+        return self._events_index is None or self._events_index.is_file()
 
     def arguments(self, t0, t1, y0, f0, p, *rest) -> tuple:
         """The integrator's arguments for the arguments of :meth:`solve`."""

@@ -375,8 +375,9 @@ def _load(path: Path, names: tuple):
 
 def load_or_compile(kernel_path, tableau: str, n: int, nq: int, model, rhs_name: str, rhs_cfunc) -> tuple:
     """``(library, addresses)`` of the parts of the kernel ``kernel_path`` (``AdaptiveKernel.path``, a name in
-    the cache folder), loaded from :func:`cache_file`, or compiled from :func:`module_ir` and saved there; ``addresses`` are those of :func:`symbols` (0 for
-    ``constants`` and its count where the model has no IR of it).
+    the cache folder), loaded from :func:`cache_file`, or compiled from :func:`module_ir` and saved there;
+    ``addresses`` are those of :func:`symbols` (0 for ``constants`` and its count where the model has no IR of
+    it).
 
     The right-hand side ``rhs_name`` and ``constants`` are the IR the generated ``model`` carries
     (``model.LLVM_IR``, written at derive time by ``derivation/ir_emit.py``); a right-hand side it does not
