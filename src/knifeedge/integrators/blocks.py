@@ -1,21 +1,26 @@
-"""Output and event location shared by the kernels (:mod:`.fixed`, :mod:`.erk`).
+"""Event location shared by the kernels (:mod:`.fixed`, :mod:`.erk`), and how it works.
 
-The block functions (:func:`alloc`, :func:`ends`, :func:`suspect`,
-:func:`output`) are inlined by numba into the kernel that calls them (a
-block of the kernel is cheaper to compile than a call to a helper of its
-own, and its loops run over the kernel's constant state size).
-:func:`event_functions` makes the helpers of the models' event functions
-for one kernel.  The interpolant of a step is ``F`` (``dense_rows`` x n,
-rows alternating as ``alt`` says) about ``y``, see :mod:`.common`.
+:func:`alloc` (inlined by numba into the kernel) makes the events' workspace;
+:func:`event_functions` makes the helpers of a model's event functions for
+one kernel.  The per-step moves below (the events' values at the ends of a
+step, the ``suspect`` bound, the output rows) are written out in each
+kernel's loop: as functions, inlined by numba or called, they cost the
+kernels 1.5-4x per evaluation (numba counts the references to every array
+passed to them, at every step).  The interpolant of a step is ``F``
+(``dense_rows`` x n, rows alternating as ``alt`` says) about ``y``, see
+:mod:`.common`.
 
 An event is a state component (``events[k] = c >= 0``) or an event function
 of the model (``events[k] = -1 - j``: ``event_values(s, p)[j]``).  Its zero
 crossings are found in three moves (:mod:`knifeedge.integrators.common`):
 
-1. ``ends``: its value ``g`` and rate ``h dg/dt`` at both ends of the step
+1. the ends: its value ``g`` and rate ``h dg/dt`` at both ends of the step
    (a component's rate is its derivative; an event function's is a forward
    difference over 1e-7 of the step);
-2. ``screen`` (called only when the bound ``suspect`` computes leaves doubt,
+2. ``screen`` (called only when the bound ``suspect`` leaves doubt: the Hermite
+   cubic differs from the chord by at most x (1 - x) max(|s0 - d|, |s1 - d|) <= dev
+   (d = g1 - g0), so ends of one sign whose smaller magnitude exceeds dev + NEAR
+   times the larger one leave nothing to screen,
    which for an event far from zero is almost never): a crossing is
    certain when the signs at the ends differ; a
    pair of crossings inside the step (same signs at both ends) is suspected
@@ -29,14 +34,13 @@ crossings are found in three moves (:mod:`knifeedge.integrators.common`):
    few ulps of the step); a plain crossing is refined on the whole step.
 
 A zero at the start of a bracket is not a crossing (it was counted as the
-end of the previous one).  ``output``: the rows of an accepted step, every
+end of the previous one).  The output: the rows of an accepted step, every
 step or the requested times ``t_eval`` inside it (on the interpolant).
 """
 import numpy as np
 from numba import njit
 
-from . import common as _c
-from .common import MAX_ITER, NEAR, SAMPLES
+from .common import MAX_ITER, SAMPLES
 
 _EPS = np.finfo(np.float64).eps
 _BLOCK = {"inline": "always", "error_model": "numpy"}
@@ -60,94 +64,6 @@ def alloc(events):
     xs = np.empty(SAMPLES + 3)
     gs = np.empty(SAMPLES + 3)
     return ne, n_fun, ga, gb, sa, sb, crit, n_crit, flag, xs, gs
-
-
-@njit(**_BLOCK)
-def ends(events, ne, y, y_new, fa, fb, h, ga, gb, sa, sb):
-    """Values and rates (times ``h``) of the state components among the events at the ends of a step."""
-    for k in range(ne):
-        c = events[k]
-        if c >= 0:
-            ga[k] = y[c]
-            gb[k] = y_new[c]
-            sa[k] = h * fa[c]
-            sb[k] = h * fb[c]
-
-
-@njit(**_BLOCK)
-def suspect(ne, ga, gb, sa, sb):
-    """Whether the screen may flag any event: the Hermite cubic differs from the chord by at most
-    x (1 - x) max(|s0 - d|, |s1 - d|) <= dev (d = g1 - g0), so ends of one sign whose smaller magnitude
-    exceeds dev + NEAR * the larger one leave nothing to screen (the usual step: no call)."""
-    doubt = False
-    for k in range(ne):
-        g0 = ga[k]
-        g1 = gb[k]
-        if g0 == 0.0 or g1 == 0.0 or (g0 > 0.0) != (g1 > 0.0):
-            doubt = True
-        else:
-            d = g1 - g0
-            dev = 0.25 * max(abs(sa[k] - d), abs(sb[k] - d))
-            if min(abs(g0), abs(g1)) - dev <= NEAR * max(abs(g0), abs(g1)):
-                doubt = True
-    return doubt
-
-
-@njit(**_BLOCK)
-def output(every, ts, ys, n_out, t_new, y_new, t_eval, ie, t, h, F, y, n, dense_rows, alt):
-    """Store the rows of an accepted step; returns ``n_out, ie`` (rows stored, next output time)."""
-    if every:  # the common case: a row per step
-        ts[n_out] = t_new
-        for i in range(n):
-            ys[n_out, i] = y_new[i]
-        n_out += 1
-    while not every and ie < t_eval.size and t_eval[ie] <= t_new:
-        te = t_eval[ie]
-        ts[n_out] = te
-        x = (te - t) / h
-        xm = 1.0 - x
-        for i in range(n):
-            if te == t_new:
-                ys[n_out, i] = y_new[i]
-            else:
-                v = 0.0
-                for r in range(dense_rows - 1, -1, -1):
-                    v = (v + F[r, i]) * (xm if alt[r] else x)
-                ys[n_out, i] = y[i] + v
-        n_out += 1
-        ie += 1
-    return n_out, ie
-
-
-def step_events(function_ends, locate_functions, HAS_FUN: bool, ALT):
-    """``(screen_step, record_step)`` of a kernel (inlined into it): the events' screen of an accepted step
-    and the location of the crossings it flagged, the model's event functions by ``function_ends`` and
-    ``locate_functions`` (:func:`event_functions`; left out where ``HAS_FUN`` is false)."""
-
-    def screen_step(events, work_ev, y, y_new, fa, fb, h, p, ev, work):
-        """Whether any event may cross zero in the step (the screen's flags and extrema in ``work_ev``)."""
-        ne, n_fun, ga, gb, sa, sb, crit, n_crit, flag, xs, gs = work_ev
-        if ne == 0:
-            return False
-        ends(events, ne, y, y_new, fa, fb, h, ga, gb, sa, sb)
-        if HAS_FUN:
-            if n_fun > 0:
-                function_ends(events, y, y_new, fa, fb, h, p, ev, work, ga, gb, sa, sb)
-        if suspect(ne, ga, gb, sa, sb):
-            return _c.screen(ga, gb, sa, sb, crit, n_crit, flag)
-        return False
-
-    def record_step(events, work_ev, F, y, t, h, p, ev, work, ev_t, ev_k, n_ev):
-        """The crossings of the flagged events on the step's interpolant ``F``, appended; returns ``n_ev``."""
-        ne, n_fun, ga, gb, sa, sb, crit, n_crit, flag, xs, gs = work_ev
-        n_ev = _c.locate(events, F, y, ALT, t, h, ga, gb, crit, n_crit, flag, xs, gs, ev_t, ev_k, n_ev)
-        if HAS_FUN:
-            if n_fun > 0:
-                n_ev = locate_functions(events, F, y, t, h, p, ev, work, ga, gb, crit, n_crit, flag, xs, gs, ev_t,
-                                        ev_k, n_ev)
-        return n_ev
-
-    return njit(**_BLOCK)(screen_step), njit(**_BLOCK)(record_step)
 
 
 def event_functions(values, dense_rows: int, alt):

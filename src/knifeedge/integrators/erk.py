@@ -33,7 +33,7 @@ from . import fnptr as _fnptr
 from . import irparts as _irparts
 from . import tableau as _tableau
 from .cache import cache_dir, compiled, compiled_cfunc, digest, index_path, is_cached
-from .common import SAMPLES
+from .common import NEAR, SAMPLES
 from .fnptr import call_f8, call_void
 
 SAFETY = 0.9
@@ -98,58 +98,6 @@ def _initial_step_closure(ERROR_ORDER: int):
     return njit(error_model="numpy")(initial_step)
 
 
-def _step_closure(N_STAGES: int, ERROR_ORDER: int):
-    """``step``: the attempts of one step until one is accepted (SciPy's controller), inlined into the
-    integrator; returns ``status`` (0, or -1: the step size underflowed), ``t_new``, ``h``, the next ``h_abs``,
-    the right-hand-side evaluations and the rejected attempts."""
-    ERROR_EXPONENT = -1.0 / (ERROR_ORDER + 1)
-    EIGHTH = ERROR_ORDER == 7  # err ** (-1/8) as three square roots, cheaper than pow (DOP853)
-
-    def step(attempt, t, t1, h_abs, max_step, rtol, ms, ws, nq, atol, pair):
-        # SciPy's smallest step is 10 ulps of t; nextafter is called only near it (10 ulps <= 10 eps |t|)
-        near = 10.0 * _EPS * abs(t) + 1e-300
-        if h_abs > max_step:
-            h_abs = max_step
-        elif h_abs < near and h_abs < 10.0 * abs(np.nextafter(t, np.inf) - t):
-            h_abs = 10.0 * abs(np.nextafter(t, np.inf) - t)
-        rejected = False
-        n_rej = 0
-        nfev = 0
-        t_new = t
-        h = 0.0
-        while True:
-            if h_abs < near and h_abs < 10.0 * abs(np.nextafter(t, np.inf) - t):
-                return -1, t_new, h, h_abs, nfev, n_rej
-            t_new = t + h_abs
-            if t_new > t1:
-                t_new = t1
-            h = t_new - t
-            h_abs = abs(h)
-            # the stages, y_new, K[N_STAGES] and the scaled error norm: the model's part
-            err = call_f8(attempt, (t, h, t_new, rtol, ms, ws, nq, atol, pair))
-            nfev += N_STAGES
-            if err < 1.0:
-                if err == 0.0:
-                    factor = MAX_FACTOR
-                elif EIGHTH:
-                    factor = min(MAX_FACTOR, SAFETY * (1.0 / np.sqrt(np.sqrt(np.sqrt(err)))))
-                else:
-                    factor = min(MAX_FACTOR, SAFETY * err ** ERROR_EXPONENT)
-                if rejected:
-                    factor = min(1.0, factor)
-                return 0, t_new, h, h_abs * factor, nfev, n_rej
-            if not np.isfinite(err):
-                h_abs *= MIN_FACTOR
-            elif EIGHTH:
-                h_abs *= max(MIN_FACTOR, SAFETY * (1.0 / np.sqrt(np.sqrt(np.sqrt(err)))))
-            else:
-                h_abs *= max(MIN_FACTOR, SAFETY * err ** ERROR_EXPONENT)
-            rejected = True
-            n_rej += 1
-
-    return njit(inline="always", error_model="numpy")(step)
-
-
 def _workspace_closure(N_EXT: int, DENSE_ROWS: int):
     """``workspace(y0, q)``: the integrator's one array laid out as the parts read it (K, y, y_new, work,
     scale, F, then q; the parts take their arrays at fixed offsets of one pointer, so the compiler can tell
@@ -175,10 +123,10 @@ def _driver_closure(tableau: str):
     """The integrator of ``tableau`` as a Python closure over its sizes and helpers."""
     (_, _, _, _, _, _, _, N_STAGES, N_EXT, DENSE_ROWS, ALT, ERROR_ORDER) = _tableau.erk_arrays(tableau)
     DENSE_NFEV = N_EXT - N_STAGES - 1  # evaluations of the interpolant beyond the step's (DOP853: 3)
-    screen_step, record_step = _b.step_events(*_b.event_functions(njit(error_model="numpy")(_values_), DENSE_ROWS,
-                                                                    ALT), True, ALT)
-    initial_step, step = _initial_step_closure(ERROR_ORDER), _step_closure(N_STAGES, ERROR_ORDER)
-    workspace = _workspace_closure(N_EXT, DENSE_ROWS)
+    function_ends, locate_functions = _b.event_functions(njit(error_model="numpy")(_values_), DENSE_ROWS, ALT)
+    initial_step, workspace = _initial_step_closure(ERROR_ORDER), _workspace_closure(N_EXT, DENSE_ROWS)
+    ERROR_EXPONENT = -1.0 / (ERROR_ORDER + 1)
+    EIGHTH = ERROR_ORDER == 7  # err ** (-1/8) as three square roots, cheaper than pow (DOP853)
 
     def solve(fns, t0, t1, y0, f0, q, p, rtol, atol, h_init, max_step, t_eval, every, events, max_steps, pair,
               mode_scaled, chunk, ts, ys, ev_t, ev_k):
@@ -216,7 +164,7 @@ def _driver_closure(tableau: str):
         ms, nq = np.int64(1 if mode_scaled else 0), np.int64(q.size)
         ws, K, y, y_new, work, F = workspace(y0, q)
         fa, fb = K[0], K[N_STAGES]  # the derivatives at the ends of a step (views of the first and last stages)
-        work_ev = _b.alloc(events)
+        ne, n_fun, ga, gb, sa, sb, crit, n_crit, flag, xs, gs = _b.alloc(events)
         # counters start as int64, not as the literal 0 (numba would type them twice)
         n_out, ie, n_ev, nfev = np.int64(0), np.int64(0), np.int64(0), np.int64(0)
         t = t0
@@ -227,23 +175,91 @@ def _driver_closure(tableau: str):
             if n_acc >= max_steps:
                 status = -2
                 break
-            if n_acc >= chunk or (every and n_out == ts.size) or n_ev + work_ev[0] * (SAMPLES + 2) > ev_t.size:
+            if n_acc >= chunk or (every and n_out == ts.size) or n_ev + ne * (SAMPLES + 2) > ev_t.size:
                 status = 1
                 break
-            status, t_new, h, h_abs, calls, rejected = step(attempt, t, t1, h_abs, max_step, rtol, ms, ws, nq, atol,
-                                                            pair)
-            nfev += calls
-            n_rej += rejected
+            # the attempts of a step, the events' screen, their crossings and the output, written out (blocks.py
+            # says what they do: as calls, inlined or not, they cost the kernels 1.5-4x per evaluation)
+            # SciPy's smallest step is 10 ulps of t; nextafter is called only near it (10 ulps <= 10 eps |t|)
+            near = 10.0 * _EPS * abs(t) + 1e-300
+            if h_abs > max_step:
+                h_abs = max_step
+            elif h_abs < near and h_abs < 10.0 * abs(np.nextafter(t, np.inf) - t):
+                h_abs = 10.0 * abs(np.nextafter(t, np.inf) - t)
+            rejected = False
+            while True:
+                if h_abs < near and h_abs < 10.0 * abs(np.nextafter(t, np.inf) - t):
+                    status = -1
+                    break
+                t_new = t + h_abs
+                if t_new > t1:
+                    t_new = t1
+                h = t_new - t
+                h_abs = abs(h)
+                # the stages, y_new, K[N_STAGES] and the scaled error norm: the model's part
+                err = call_f8(attempt, (t, h, t_new, rtol, ms, ws, nq, atol, pair))
+                nfev += N_STAGES
+                if err < 1.0:
+                    if err == 0.0:
+                        factor = MAX_FACTOR
+                    elif EIGHTH:
+                        factor = min(MAX_FACTOR, SAFETY * (1.0 / np.sqrt(np.sqrt(np.sqrt(err)))))
+                    else:
+                        factor = min(MAX_FACTOR, SAFETY * err ** ERROR_EXPONENT)
+                    h_abs *= min(1.0, factor) if rejected else factor
+                    break
+                if not np.isfinite(err):
+                    h_abs *= MIN_FACTOR
+                elif EIGHTH:
+                    h_abs *= max(MIN_FACTOR, SAFETY * (1.0 / np.sqrt(np.sqrt(np.sqrt(err)))))
+                else:
+                    h_abs *= max(MIN_FACTOR, SAFETY * err ** ERROR_EXPONENT)
+                rejected = True
+                n_rej += 1
             if status != 0:
                 break
             n_acc += 1
-            any_flag = screen_step(events, work_ev, y, y_new, fa, fb, h, p, ev, work)
+            any_flag = False
+            if ne > 0:
+                for k in range(ne):
+                    c = events[k]
+                    if c >= 0:
+                        ga[k], gb[k], sa[k], sb[k] = y[c], y_new[c], h * fa[c], h * fb[c]
+                if n_fun > 0:
+                    function_ends(events, y, y_new, fa, fb, h, p, ev, work, ga, gb, sa, sb)
+                suspect = False  # whether the screen may flag any event (the bound of blocks.py)
+                for k in range(ne):
+                    g0, g1 = ga[k], gb[k]
+                    if g0 == 0.0 or g1 == 0.0 or (g0 > 0.0) != (g1 > 0.0):
+                        suspect = True
+                    else:
+                        d = g1 - g0
+                        dev = 0.25 * max(abs(sa[k] - d), abs(sb[k] - d))
+                        if min(abs(g0), abs(g1)) - dev <= NEAR * max(abs(g0), abs(g1)):
+                            suspect = True
+                if suspect:
+                    any_flag = _c.screen(ga, gb, sa, sb, crit, n_crit, flag)
             if any_flag or (ie < t_eval.size and t_eval[ie] < t_new):
                 call_void(dense, (t, h, ws, nq))  # the interpolant of the step: F (DENSE_ROWS x N)
                 nfev += DENSE_NFEV
             if any_flag:
-                n_ev = record_step(events, work_ev, F, y, t, h, p, ev, work, ev_t, ev_k, n_ev)
-            n_out, ie = _b.output(every, ts, ys, n_out, t_new, y_new, t_eval, ie, t, h, F, y, N, DENSE_ROWS, ALT)
+                n_ev = _c.locate(events, F, y, ALT, t, h, ga, gb, crit, n_crit, flag, xs, gs, ev_t, ev_k, n_ev)
+                if n_fun > 0:
+                    n_ev = locate_functions(events, F, y, t, h, p, ev, work, ga, gb, crit, n_crit, flag, xs, gs, ev_t,
+                                            ev_k, n_ev)
+            if every:  # the common case: a row per step
+                ts[n_out] = t_new
+                for i in range(N):
+                    ys[n_out, i] = y_new[i]
+                n_out += 1
+            while not every and ie < t_eval.size and t_eval[ie] <= t_new:
+                te = t_eval[ie]
+                ts[n_out] = te
+                x = (te - t) / h
+                for i in range(N):
+                    ys[n_out, i] = y_new[i] if te == t_new else _c.interpolate(F, y, ALT, x, i)
+                n_out += 1
+                ie += 1
             for i in range(N):
                 y[i] = y_new[i]
                 K[0, i] = K[N_STAGES, i]

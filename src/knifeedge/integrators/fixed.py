@@ -23,7 +23,7 @@ from numba import njit
 from . import blocks as _b
 from . import common as _c
 from .cache import compiled, is_cached
-from .common import SAMPLES
+from .common import NEAR, SAMPLES
 from .fixed_methods import FIXED_METHODS
 
 MAX_STAGE_ITER = 100
@@ -160,31 +160,17 @@ def make_solve(method: str, model_module, rhs_name: str, N: int):
             return event_values(s, p)
 
         function_ends, locate_functions = _b.event_functions(njit(**_OPTIONS)(values_), DENSE_ROWS, ALT)
-    events = _b.step_events(function_ends, locate_functions, bool(names), ALT)
-    py = _solve_closure(FIXED_METHODS[method], N, rhs, constants, _increments(method, N, rhs), *events)
+    py = _solve_closure(FIXED_METHODS[method], N, rhs, constants, _increments(method, N, rhs), bool(names),
+                        function_ends, locate_functions)
     label = f"fixed-{method}-{model_module.__name__.rsplit('.', 1)[-1]}-{rhs_name}"
     return compiled(py, label)
 
 
-def _step_closure(m, N: int, rhs, increments):
-    """``(start, increment, extrapolate)`` of the method ``m`` on ``N`` states, inlined into the kernel:
-    ``start(...)`` the derivative at the start, ``increment(...)`` the step's ``dy`` (returns the
-    right-hand-side calls and whether the stage equations converged), ``extrapolate(Z, Znew)`` the start of
-    the next stage iteration of an implicit method from this step's collocation polynomial."""
-    rk4_increment, explicit_increment, gauss_increment, solver_scale = increments
-    IMPLICIT, CLASSICAL_RK4, S, EXTRAP = m.implicit, m.is_classical_rk4, m.stages, m.extrapolation
-
-    def increment(t, y, h, q, f_old, K, work, dy, scale, Z, Znew, atol, pair):
-        if IMPLICIT:  # constants numba prunes on: only the method's branch is compiled in
-            solver_scale(y, atol, pair, scale)
-            return gauss_increment(t, y, h, q, scale, Z, Znew, work, dy)
-        elif CLASSICAL_RK4:
-            return rk4_increment(t, y, h, q, f_old, K, work, dy), True
-        return explicit_increment(t, y, h, q, f_old, K, work, dy), True
+def _start_closure(N: int, S: int, rhs):
+    """``start(...)``, inlined into the kernel: the derivative at the start, ``f_old`` (and the stages ``Z``
+    from it), of a run; of a continued run ``f0``; returns the right-hand-side calls."""
 
     def start(t, y, q, f0, f_old, Z, first):
-        """The derivative at the start, ``f_old`` (and the stages ``Z`` from it), of a run; of a continued run
-        ``f0``; returns the right-hand-side calls."""
         if first == 0:
             rhs(t, y, q, f_old)
             for k in range(S):
@@ -195,19 +181,7 @@ def _step_closure(m, N: int, rhs, increments):
             f_old[i] = f0[i]
         return 0
 
-    def extrapolate(Z, Znew):
-        if IMPLICIT:
-            for k in range(S):
-                for i in range(N):
-                    acc = 0.0
-                    for j in range(S):
-                        acc += EXTRAP[k, j] * Z[j, i]
-                    Znew[k, i] = acc
-            for k in range(S):
-                for i in range(N):
-                    Z[k, i] = Znew[k, i]
-
-    return tuple(njit(inline="always", **_OPTIONS)(f) for f in (start, increment, extrapolate))
+    return njit(inline="always", **_OPTIONS)(start)
 
 
 def _buffers_closure(N: int, S: int):
@@ -223,10 +197,11 @@ def _buffers_closure(N: int, S: int):
     return njit(inline="always", **_OPTIONS)(buffers)
 
 
-def _solve_closure(m, N: int, rhs, constants, increments, screen_step, record_step):
+def _solve_closure(m, N: int, rhs, constants, increments, HAS_FUN, function_ends, locate_functions):
     """The kernel as a Python closure over the method ``m``, the state size, the model's functions."""
-    start, increment, extrapolate = _step_closure(m, N, rhs, increments)
-    buffers, S = _buffers_closure(N, m.stages), m.stages
+    rk4_increment, explicit_increment, gauss_increment, solver_scale = increments
+    IMPLICIT, CLASSICAL_RK4, S, EXTRAP = m.implicit, m.is_classical_rk4, m.stages, m.extrapolation
+    start, buffers = _start_closure(N, S, rhs), _buffers_closure(N, S)
     NO_EV = np.zeros(2, dtype=np.int64)  # the event functions are the model's own (the adaptive kernel's ``ev``)
 
     def solve(t0, t1, y0, f0, p, h_fixed, n_steps, first, atol, t_eval, every, events, max_steps, pair, chunk,
@@ -249,7 +224,7 @@ def _solve_closure(m, N: int, rhs, constants, increments, screen_step, record_st
             raise ValueError("the initial state does not have the size this kernel was specialized to")
         q = constants(p)
         y, y_new, dy, comp_trial, scale, work, f_old, f_new, K, Znew, F = buffers(y0)
-        work_ev = _b.alloc(events)
+        ne, n_fun, ga, gb, sa, sb, crit, n_crit, flag, xs, gs = _b.alloc(events)
         # counters start as int64, not as the literal 0 (numba would compile the callees for both types)
         n_out, ie, n_ev, nfev = np.int64(0), np.int64(0), np.int64(0), np.int64(0)
         t = t0 if first == 0 else t0 + first * h_fixed
@@ -259,16 +234,22 @@ def _solve_closure(m, N: int, rhs, constants, increments, screen_step, record_st
             if n_acc >= max_steps:
                 status = -2
                 break
-            if n_acc >= chunk or (every and n_out == ts.size) or n_ev + work_ev[0] * (SAMPLES + 2) > ev_t.size:
+            if n_acc >= chunk or (every and n_out == ts.size) or n_ev + ne * (SAMPLES + 2) > ev_t.size:
                 status = 1
                 break
             step += 1
             t_new = t1 if step == n_steps else t0 + step * h_fixed
-            calls, ok = increment(t, y, h_fixed, q, f_old, K, work, dy, scale, Z, Znew, atol, pair)
-            nfev += calls
-            if not ok:
-                status = -4
-                break
+            if IMPLICIT:  # constants numba prunes on: only the method's branch is compiled in
+                solver_scale(y, atol, pair, scale)
+                calls, ok = gauss_increment(t, y, h_fixed, q, scale, Z, Znew, work, dy)
+                nfev += calls
+                if not ok:
+                    status = -4
+                    break
+            elif CLASSICAL_RK4:
+                nfev += rk4_increment(t, y, h_fixed, q, f_old, K, work, dy)
+            else:
+                nfev += explicit_increment(t, y, h_fixed, q, f_old, K, work, dy)
             for i in range(N):
                 comp_trial[i] = comp[i]
             _c.compensated_add(y, dy, comp_trial, y_new)
@@ -284,13 +265,60 @@ def _solve_closure(m, N: int, rhs, constants, increments, screen_step, record_st
                 comp[i] = comp_trial[i]
             n_acc += 1
             h = t_new - t  # the step as taken
-            any_flag = screen_step(events, work_ev, y, y_new, f_old, f_new, h, p, NO_EV, work)
+            # the events' screen, their crossings and the output, written out (blocks.py says what they do: as
+            # calls, inlined or not, they cost the kernels 1.5-4x per evaluation)
+            any_flag = False
+            if ne > 0:
+                for k in range(ne):
+                    c = events[k]
+                    if c >= 0:
+                        ga[k], gb[k], sa[k], sb[k] = y[c], y_new[c], h * f_old[c], h * f_new[c]
+                if HAS_FUN:
+                    if n_fun > 0:
+                        function_ends(events, y, y_new, f_old, f_new, h, p, NO_EV, work, ga, gb, sa, sb)
+                suspect = False  # whether the screen may flag any event (the bound of blocks.py)
+                for k in range(ne):
+                    g0, g1 = ga[k], gb[k]
+                    if g0 == 0.0 or g1 == 0.0 or (g0 > 0.0) != (g1 > 0.0):
+                        suspect = True
+                    else:
+                        d = g1 - g0
+                        dev = 0.25 * max(abs(sa[k] - d), abs(sb[k] - d))
+                        if min(abs(g0), abs(g1)) - dev <= NEAR * max(abs(g0), abs(g1)):
+                            suspect = True
+                if suspect:
+                    any_flag = _c.screen(ga, gb, sa, sb, crit, n_crit, flag)
             if any_flag or (ie < t_eval.size and t_eval[ie] < t_new):
                 _c.hermite_coefficients(y, y_new, f_old, f_new, h, F)
             if any_flag:
-                n_ev = record_step(events, work_ev, F, y, t, h, p, NO_EV, work, ev_t, ev_k, n_ev)
-            n_out, ie = _b.output(every, ts, ys, n_out, t_new, y_new, t_eval, ie, t, h, F, y, N, DENSE_ROWS, ALT)
-            extrapolate(Z, Znew)
+                n_ev = _c.locate(events, F, y, ALT, t, h, ga, gb, crit, n_crit, flag, xs, gs, ev_t, ev_k, n_ev)
+                if HAS_FUN:
+                    if n_fun > 0:
+                        n_ev = locate_functions(events, F, y, t, h, p, NO_EV, work, ga, gb, crit, n_crit, flag, xs, gs,
+                                                ev_t, ev_k, n_ev)
+            if every:  # the common case: a row per step
+                ts[n_out] = t_new
+                for i in range(N):
+                    ys[n_out, i] = y_new[i]
+                n_out += 1
+            while not every and ie < t_eval.size and t_eval[ie] <= t_new:
+                te = t_eval[ie]
+                ts[n_out] = te
+                x = (te - t) / h
+                for i in range(N):
+                    ys[n_out, i] = y_new[i] if te == t_new else _c.interpolate(F, y, ALT, x, i)
+                n_out += 1
+                ie += 1
+            if IMPLICIT:  # start the next stage iteration from this step's collocation polynomial
+                for k in range(S):
+                    for i in range(N):
+                        acc = 0.0
+                        for j in range(S):
+                            acc += EXTRAP[k, j] * Z[j, i]
+                        Znew[k, i] = acc
+                for k in range(S):
+                    for i in range(N):
+                        Z[k, i] = Znew[k, i]
             for i in range(N):
                 y[i] = y_new[i]
                 f_old[i] = f_new[i]
