@@ -372,8 +372,8 @@ def test_a_damaged_kernel_cache_file_is_discarded_and_compiled_again(tmp_path):
     env = dict(os.environ, KNIFEEDGE_CACHE_DIR=str(tmp_path / "k"), NUMBA_CACHE_DIR=str(tmp_path / "n"))
     first = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
     assert "compiling RK4 for single_mode (reduced); once" in first.stderr
-    index = next((tmp_path / "n").glob("kernels*/fixedRK4_*.solve-*.nbi"))
-    data = next((tmp_path / "n").glob("kernels*/fixedRK4_*.solve-*.nbc"))
+    index = next((tmp_path / "k" / "kernels").glob("fixed-RK4-single_mode_reduced-*.nbi"))
+    data = next((tmp_path / "k" / "kernels").glob("fixed-RK4-single_mode_reduced-*.nbc"))
     for damaged, size in ((index, 20), (data, 100)):
         with open(damaged, "r+b") as f:
             f.truncate(size)
