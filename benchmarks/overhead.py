@@ -12,7 +12,7 @@ from numba import njit
 
 import knifeedge as ke
 from knifeedge.integrators import kernel
-from knifeedge.integrators.specialize import load_kernel
+from knifeedge.integrators import load_kernel
 
 from . import linear_rhs, peers
 from .timing import median_time

@@ -176,8 +176,13 @@ def long_functions(root: Path = ROOT, limit: int = LONG) -> list:
     return sorted(out, key=lambda f: (-f.lines, f.path, f.name))
 
 
+#: calls that import a module from a file or run source text
+_LOADERS = ("spec_from_file_location", "exec_module", "module_from_spec", "SourceFileLoader", "import_module")
+
+
 def writes_or_parses_source(root: Path = ROOT, folder: str = INTEGRATORS) -> list:
-    """Files under ``folder`` that import ``ast`` (parse source) or build a ``.py`` path and write files."""
+    """Files under ``folder`` that import ``ast`` (parse source), build a ``.py`` path and write files, or import
+    modules from files (``importlib``'s loaders, ``exec``, ``compile``)."""
     out = []
     for path in sorted((root / folder).rglob("*.py")):
         tree = ast.parse(path.read_text(encoding="utf-8"))
@@ -187,14 +192,21 @@ def writes_or_parses_source(root: Path = ROOT, folder: str = INTEGRATORS) -> lis
         docstrings = {id(n.body[0].value) for n in ast.walk(tree)
                       if isinstance(n, (ast.Module, ast.FunctionDef, ast.ClassDef)) and n.body
                       and isinstance(n.body[0], ast.Expr) and isinstance(n.body[0].value, ast.Constant)}
+        # a string that ends a path in ".py" (not a glob pattern read, not ".py" inside an f-string: "x.py311")
+        inner = {id(v) for n in ast.walk(tree) if isinstance(n, ast.JoinedStr) for v in n.values[:-1]}
         py_path = any(isinstance(n, ast.Constant) and isinstance(n.value, str) and n.value.endswith(".py")
-                      and id(n) not in docstrings for n in ast.walk(tree))
+                      and "*" not in n.value and id(n) not in docstrings | inner for n in ast.walk(tree))
         writes = any(isinstance(n, ast.Call) and isinstance(n.func, ast.Attribute)
                      and n.func.attr in ("write_text", "write_bytes", "write") for n in ast.walk(tree))
+        loads = any(isinstance(n, ast.Call) and (isinstance(n.func, ast.Attribute) and n.func.attr in _LOADERS
+                                                 or isinstance(n.func, ast.Name) and n.func.id in ("exec", "compile"))
+                    for n in ast.walk(tree))
         if parses:
             out.append(f"{rel}: imports ast")
         if py_path and writes:
             out.append(f"{rel}: writes .py files")
+        if loads:
+            out.append(f"{rel}: imports or runs source from a file or a string")
     return out
 
 

@@ -17,7 +17,7 @@ import types
 import pytest
 
 from knifeedge import _process
-from knifeedge.integrators import compiler, irparts, specialize
+from knifeedge.integrators import cache, compiler, irparts
 from knifeedge.integrators import dop853_tableau as t8
 
 
@@ -72,7 +72,7 @@ def test_cached_compiled_code_is_checked_before_it_runs_scaled_constant(tmp_path
     )
     env = dict(os.environ, KNIFEEDGE_CACHE_DIR=str(tmp_path / "k"), NUMBA_CACHE_DIR=str(tmp_path / "n"))
     first = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
-    parts = next((tmp_path / "k" / "kernels").glob("erkDOP853_single_mode_reduced_*.parts-*.nbo"))
+    parts = next((tmp_path / "k" / "kernels").glob("erk-DOP853-single_mode_reduced-*.parts-*.nbo"))
     data = parts.read_bytes()
     constant = struct.pack("<d", float(t8.A[1, 0]))  # the first stage's coefficient, a literal of the IR
     assert data.count(constant) >= 1
@@ -89,21 +89,21 @@ def test_cached_compiled_code_is_checked_before_it_runs_cache_folder(tmp_path, m
     write to (or its kernels folder) is refused, said once, and the private fallback used."""
     if not hasattr(os, "getuid"):
         pytest.skip("no user ids")
-    monkeypatch.setattr(specialize.tempfile, "gettempdir", lambda: str(tmp_path / "tmp"))
+    monkeypatch.setattr(cache.tempfile, "gettempdir", lambda: str(tmp_path / "tmp"))
     (tmp_path / "tmp").mkdir()
     fallback = tmp_path / "tmp" / f"knifeedge-cache-{os.getuid()}"
     shared = tmp_path / "shared"
     shared.mkdir()
     shared.chmod(0o777)
     monkeypatch.setenv("KNIFEEDGE_CACHE_DIR", str(shared))
-    assert specialize.cache_dir() == fallback
+    assert cache.cache_dir() == fallback
     assert "others may write to it" in capsys.readouterr().err
     monkeypatch.delenv("KNIFEEDGE_CACHE_DIR")
     monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "xdg"))
-    assert specialize.cache_dir() == tmp_path / "xdg" / "knifeedge"  # created private
+    assert cache.cache_dir() == tmp_path / "xdg" / "knifeedge"  # created private
     assert (tmp_path / "xdg" / "knifeedge" / "kernels").stat().st_mode & 0o777 == 0o700
     (tmp_path / "xdg" / "knifeedge" / "kernels").chmod(0o777)
-    assert specialize.cache_dir() == fallback
+    assert cache.cache_dir() == fallback
     assert "kernels: others may write to it" in capsys.readouterr().err
 
 
@@ -125,11 +125,11 @@ def test_cached_compiled_code_is_checked_before_it_runs_lock(tmp_path, monkeypat
         return _Proc()
 
     monkeypatch.setattr(compiler.subprocess, "Popen", popen)
-    kernel = types.SimpleNamespace(__file__=str(tmp_path / "erkDOP853_m_rhs_0123.py"), TABLEAU="DOP853",
+    kernel = types.SimpleNamespace(path=tmp_path / "erk-DOP853-m-0123", TABLEAU="DOP853", is_compiled=lambda: False,
                                    RHS_NAME="rhs_q_into")
     model = types.SimpleNamespace(module=types.SimpleNamespace(MODEL="m", FIDELITY="full"), pose=False,
                                   source_path=None)
-    lock = tmp_path / "erkDOP853_m_rhs_0123.compiling"
+    lock = tmp_path / "erk-DOP853-m-0123.compiling"
     if _process.start_time(os.getpid()) is None:
         pytest.skip("process start times cannot be read here")
     unrelated = os.getppid()  # alive, and not a compiler
@@ -157,7 +157,7 @@ def test_cached_compiled_code_is_checked_before_it_runs_disk_full(tmp_path, monk
         raise exc
 
     with pytest.raises(OSError, match="disk holding the compiled-code cache is full"):
-        specialize.call_repairing(numba_saving)
+        cache.call_repairing(numba_saving)
     assert "damaged" not in capsys.readouterr().err
     monkeypatch.setattr("builtins.open", full)
     irparts.write_parts(tmp_path / "k.parts-x.nbo", _blobs())
@@ -167,65 +167,43 @@ def test_cached_compiled_code_is_checked_before_it_runs_disk_full(tmp_path, monk
     assert not list(tmp_path.glob(".*tmp"))
 
 
-def test_cached_compiled_code_is_checked_before_it_runs_kernel_module(tmp_path, monkeypatch, capsys):
-    """A kernel module in the cache whose text is not the one its name (a hash of it) stands for, altered or
-    damaged (not even text), is written again before it is imported, and that is said in one line."""
-    monkeypatch.setenv("KNIFEEDGE_CACHE_DIR", str(tmp_path / "k"))
-    stem, source = "kernel_test_0123", "ANSWER = 42\n"
-    module = specialize._import(stem, source, "knifeedge_kernels_test.kernel_test_0123")
-    assert module.ANSWER == 42 and capsys.readouterr().err == ""
-    path = tmp_path / "k" / "kernels" / f"{stem}.py"
-    for altered in (b"ANSWER = 41\n", b"\xff\xfe\x00garbage"):
-        path.write_bytes(altered)
-        monkeypatch.delitem(specialize._LOADED, stem)
-        module = specialize._import(stem, source, "knifeedge_kernels_test.kernel_test_0123")
-        assert module.ANSWER == 42 and path.read_text() == source
-        assert "replaced a kernel module" in capsys.readouterr().err
-    sys.modules.pop("knifeedge_kernels_test.kernel_test_0123", None)
+def _scaled(factor: float, label: str):
+    """A kernel as the factories make them: a closure over a constant, compiled and cached (made anew, as a
+    second process would: a new dispatcher reading the cache's files)."""
+    def scaled(x):
+        return factor * x
 
-
-_SCALED = "from numba import njit\n\n\n@njit(cache=True)\ndef scaled(x):\n    return 2.5 * x\n"
-
-
-def _fresh_import(stem: str, monkeypatch):
-    """The kernel module ``stem`` imported anew (as a second process would: a new dispatcher, the cache's files)."""
-    name = f"knifeedge_kernels_test.{stem}"
-    specialize._LOADED.pop(stem, None)
-    sys.modules.pop(name, None)
-    return specialize._import(stem, _SCALED, name)
+    return cache.compiled(scaled, label)
 
 
 def test_cached_compiled_code_is_checked_before_it_runs_numba_cache(tmp_path, monkeypatch, capsys):
-    """numba's cache files of a kernel module's functions carry a SHA-256 checked before they are unpickled: a
-    constant scaled in the cached machine code is discarded (one line) and compiled again, never run."""
-    from pathlib import Path
-
+    """numba's cache files of a kernel carry a SHA-256 checked before they are unpickled: a constant scaled in
+    the cached machine code is discarded (one line) and compiled again, never run."""
     monkeypatch.setenv("KNIFEEDGE_CACHE_DIR", str(tmp_path / "k"))
-    stem = "checked_scaled_0123"
-    first = _fresh_import(stem, monkeypatch)
-    assert specialize.call_repairing(first.scaled, 2.0) == 5.0
-    folder = Path(first.scaled._cache._cache_file._cache_path)
-    data = next(folder.glob(f"{stem}.scaled-*.nbc"))
+    first = _scaled(2.5, "test-scaled")
+    assert cache.call_repairing(first, 2.0) == 5.0
+    assert cache.is_cached(first)
+    data = next((tmp_path / "k" / "kernels").glob("test-scaled-*.nbc"))
     raw = data.read_bytes()
-    assert raw.startswith(specialize.CHECKED_MAGIC)
+    assert raw.startswith(cache.CHECKED_MAGIC)
     constant = struct.pack("<d", 2.5)
     assert constant in raw
     data.write_bytes(raw.replace(constant, struct.pack("<d", 3.0)))
     capsys.readouterr()
-    second = _fresh_import(stem, monkeypatch)
-    assert specialize.call_repairing(second.scaled, 2.0) == 5.0
+    second = _scaled(2.5, "test-scaled")
+    assert cache.call_repairing(second, 2.0) == 5.0
     err = [ln for ln in capsys.readouterr().err.splitlines() if ln.strip()]
     assert len(err) == 1 and "discarded a damaged compiled-code cache entry" in err[0] and "checksum" in err[0]
-    third = _fresh_import(stem, monkeypatch)  # compiled again and kept: loads quietly
-    assert specialize.call_repairing(third.scaled, 2.0) == 5.0 and capsys.readouterr().err == ""
-    for s in (stem,):
-        sys.modules.pop(f"knifeedge_kernels_test.{s}", None)
-        specialize._LOADED.pop(s, None)
+    third = _scaled(2.5, "test-scaled")  # compiled again and kept: loads quietly
+    assert cache.call_repairing(third, 2.0) == 5.0 and capsys.readouterr().err == ""
+    assert sum(third.stats.cache_hits.values()) == 1  # loaded, not compiled
+    other = _scaled(4.0, "test-scaled")  # another constant in the closure: another entry, its own answer
+    assert cache.call_repairing(other, 2.0) == 8.0 and len(list(data.parent.glob("test-scaled-*.nbi"))) == 2
 
 
 def test_cached_compiled_code_is_checked_before_it_runs_numba_cache_dir(tmp_path, monkeypatch, capsys):
-    """Where NUMBA_CACHE_DIR puts the kernels' numba cache in a folder others may write to, nothing is loaded
-    from it: said once, the functions compile without a cache."""
+    """Where NUMBA_CACHE_DIR names a folder others may write to, the kernels' machine code is neither kept
+    nor read there: it stays in the private cache folder."""
     import numba
 
     if not hasattr(os, "getuid"):
@@ -235,12 +213,9 @@ def test_cached_compiled_code_is_checked_before_it_runs_numba_cache_dir(tmp_path
     shared.chmod(0o777)
     monkeypatch.setenv("KNIFEEDGE_CACHE_DIR", str(tmp_path / "k"))
     monkeypatch.setattr(numba.config, "CACHE_DIR", str(shared))
-    module = _fresh_import("checked_shared_0123", monkeypatch)
-    assert specialize.call_repairing(module.scaled, 2.0) == 5.0
-    assert "others may write to it" in capsys.readouterr().err
+    assert cache.call_repairing(_scaled(2.5, "test-shared"), 2.0) == 5.0
     assert not list(shared.rglob("*.nb[ic]"))
-    sys.modules.pop("knifeedge_kernels_test.checked_shared_0123", None)
-    specialize._LOADED.pop("checked_shared_0123", None)
+    assert list((tmp_path / "k" / "kernels").glob("test-shared-*.nbi"))
 
 
 def test_cached_compiled_code_is_checked_before_it_runs_under_a_group_umask(tmp_path, monkeypatch):
@@ -252,9 +227,9 @@ def test_cached_compiled_code_is_checked_before_it_runs_under_a_group_umask(tmp_
     monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "xdg"))
     old = os.umask(0o002)
     try:
-        folder = specialize.cache_dir()
+        folder = cache.cache_dir()
         assert folder == tmp_path / "xdg" / "knifeedge"
-        for f in (folder, folder / "kernels", folder / "kernels" / "__pycache__"):
+        for f in (folder, folder / "kernels"):
             assert f.stat().st_mode & 0o777 == 0o700, f
         path = folder / "kernels" / "k.parts-x.nbo"
         irparts.write_parts(path, _blobs())

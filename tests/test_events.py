@@ -1,6 +1,6 @@
 """Zero crossings located by the kernels: state components and event functions, two inside one step.
 
-The stand-in of the templates (``integrators/templates/_stub.py``) is the oscillator
+The stand-in model (``tests/stub_model.py``) is the oscillator
 ``q' = v, v' = -w^2 q, w_' = -q`` with ``w = p[0]``; from ``q = 1, v = 0, w_ = W`` its solution is
 ``q = cos(w t)``, ``w_ = W - sin(w t) / w`` (closed forms), and its event function is
 ``q^2 - p[1]``.  Both are built to cross zero twice within a short time, as a celt's spin
@@ -15,15 +15,15 @@ import pytest
 from scipy.integrate import solve_ivp
 
 import knifeedge as ke
-from knifeedge.integrators import EVENTS_PER_STEP, specialize
-from knifeedge.integrators.templates import _stub
+from knifeedge.integrators import EVENTS_PER_STEP, load_kernel
+import stub_model as _stub
 
 W = 2.0
 
 
 def _kernel(method):
     template = "fixed" if method == "RK4" else "erk"
-    return template, specialize.load_kernel(template, method, _stub, "rhs_q_into", 3).solve
+    return template, load_kernel(template, method, _stub, "rhs_q_into", 3).solve
 
 
 def _run(method, y0, p, t1, events, rtol=1e-10, h=None, atol=None):

@@ -17,7 +17,7 @@ import numpy as np
 import pytest
 
 import knifeedge as ke
-from knifeedge.integrators import COMPILED_METHODS, Status, irparts, kernel, specialize
+from knifeedge.integrators import COMPILED_METHODS, Status, cache, irparts, kernel, load_kernel
 from knifeedge.integrators import dop853_tableau as t8
 from knifeedge.integrators import rk_tableaus as tb
 
@@ -240,10 +240,12 @@ def test_per_component_atol_and_mode_error_control_run():
 
 
 # -- the kernel cache ------------------------------------------------------------
-def test_kernel_source_imports_the_models_rhs(tmp_path):
-    src = specialize.kernel_source("erk", "DP54", "knifeedge.generated.two_mode_full", "rhs_pose_q_into", 8)
-    assert "from knifeedge.generated.two_mode_full import constants as _constants, rhs_pose_q_into as _rhs" in src
-    assert "TABLEAU = 'DP54'" in src and "N = 8" in src and "templates._stub" not in src
+def test_kernel_parts_are_the_models_rhs_with_the_tableau_unrolled(tmp_path):
+    from knifeedge.generated import two_mode_full
+
+    kernel = load_kernel("erk", "DP54", two_mode_full, "rhs_pose_q_into", 8)
+    assert (kernel.TABLEAU, kernel.RHS_NAME, kernel.N, kernel.NQ) == ("DP54", "rhs_pose_q_into", 8,
+                                                                     two_mode_full.constants(np.ones(5)).size)
     # stages unrolled with the Dormand-Prince coefficients as exact literals (a21 = 1/5, b1 = 35/384)
     ir = irparts.module_ir(irparts.Tableau("DP54"), 8, 3, ("a", "d"), "rhs")
     assert f"fmul contract double %h, {irparts.literal(0.2)}" in ir
@@ -256,10 +258,10 @@ def test_kernel_source_imports_the_models_rhs(tmp_path):
     ir8 = irparts.module_ir(irparts.Tableau("DOP853"), 3, 2, ("a", "d"), "rhs")
     attempt, dense = ir8.split('define void @"d"')
     assert attempt.count('call i32 @"rhs"') == 12 and dense.count('call i32 @"rhs"') == 3
-    with pytest.raises(ValueError, match="unknown kernel template"):
-        specialize.kernel_source("euler", 0, "x", "y", 3)
+    with pytest.raises(ValueError, match="`kind`"):
+        load_kernel("euler", "DOP853", two_mode_full, "rhs_q_into", 3)
     with pytest.raises(ValueError, match="n_state"):
-        specialize.kernel_source("erk", "DOP853", "x", "y", 0)
+        load_kernel("erk", "DOP853", two_mode_full, "rhs_q_into", 0)
 
 
 def test_kernel_refuses_a_state_of_another_size():
@@ -273,14 +275,14 @@ def test_kernel_refuses_a_state_of_another_size():
 
 def test_cache_dir_follows_the_environment(tmp_path, monkeypatch):
     monkeypatch.setenv("KNIFEEDGE_CACHE_DIR", str(tmp_path / "kc"))
-    assert specialize.cache_dir() == tmp_path / "kc"
+    assert cache.cache_dir() == tmp_path / "kc"
     assert (tmp_path / "kc" / "kernels").is_dir()
     if os.getuid() != 0:  # root can write anywhere
         ro = tmp_path / "ro"
         ro.mkdir()
         ro.chmod(0o500)
         monkeypatch.setenv("KNIFEEDGE_CACHE_DIR", str(ro / "sub"))
-        assert specialize.cache_dir() != ro / "sub"
+        assert cache.cache_dir() != ro / "sub"
 
 
 def test_status_messages_name_the_remedy():
@@ -343,18 +345,18 @@ def test_temporary_cache_folder_is_private_and_a_foreign_one_is_refused(tmp_path
     blocked = tmp_path / "blocked"
     blocked.write_text("")  # a file where the home cache folder should be: that candidate fails
     monkeypatch.setenv("XDG_CACHE_HOME", str(blocked))
-    monkeypatch.setattr(specialize.tempfile, "gettempdir", lambda: str(tmp_path))
+    monkeypatch.setattr(cache.tempfile, "gettempdir", lambda: str(tmp_path))
     folder = tmp_path / f"knifeedge-cache-{os.getuid()}"
-    assert specialize.cache_dir() == folder
+    assert cache.cache_dir() == folder
     assert folder.stat().st_mode & 0o777 == 0o700
     folder.chmod(0o777)
     with pytest.raises(OSError, match="others may write to it"):
-        specialize.cache_dir()
+        cache.cache_dir()
     shutil.rmtree(folder)
     (tmp_path / "elsewhere").mkdir()
     folder.symlink_to(tmp_path / "elsewhere")
     with pytest.raises(OSError, match="not a folder"):
-        specialize.cache_dir()
+        cache.cache_dir()
 
 
 @pytest.mark.slow
@@ -370,8 +372,8 @@ def test_a_damaged_kernel_cache_file_is_discarded_and_compiled_again(tmp_path):
     env = dict(os.environ, KNIFEEDGE_CACHE_DIR=str(tmp_path / "k"), NUMBA_CACHE_DIR=str(tmp_path / "n"))
     first = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
     assert "compiling RK4 for single_mode (reduced); once" in first.stderr
-    index = next((tmp_path / "n").glob("kernels*/fixedRK4_*.solve-*.nbi"))
-    data = next((tmp_path / "n").glob("kernels*/fixedRK4_*.solve-*.nbc"))
+    index = next((tmp_path / "k" / "kernels").glob("fixed-RK4-single_mode_reduced-*.nbi"))
+    data = next((tmp_path / "k" / "kernels").glob("fixed-RK4-single_mode_reduced-*.nbc"))
     for damaged, size in ((index, 20), (data, 100)):
         with open(damaged, "r+b") as f:
             f.truncate(size)

@@ -103,20 +103,20 @@ def test_generated_constants_are_written_and_agree_bit_for_bit(key):
 def test_a_kernel_checks_the_parameters_its_ir_constants_read():
     """The kernel's constants(p) (IR) refuses a parameter vector shorter than what it reads, where reading
     past its end would give garbage; the stand-in's np.array form is left to numba."""
-    from knifeedge.integrators import specialize
-    from knifeedge.integrators.templates import _stub
+    from knifeedge.integrators import load_kernel
+    import stub_model as _stub
 
     with pytest.raises(ir_emit.Unsupported):
         ir_emit.constants_ir(_source(_stub.constants), "x", 2)
     mod = importlib.import_module("knifeedge.generated.single_mode_full")
-    kernel = specialize.load_kernel("erk", "DOP853", mod, "rhs_q_into", len(mod.STATE_NAMES))
+    kernel = load_kernel("erk", "DOP853", mod, "rhs_q_into", len(mod.STATE_NAMES))
     p = np.array([1.0, 1.0, 1.0, 1.0])
     np.testing.assert_array_equal(kernel.constants(p), mod.constants(p))
     with pytest.raises(ValueError, match="reads 4"):
         kernel.constants(p[:3])
     # where the IR divides by zero (an infinite constant), numba's compilation answers: it raises
     celt = importlib.import_module("knifeedge.generated.celt_reduced")
-    kernel = specialize.load_kernel("erk", "DOP853", celt, "rhs_q_into", len(celt.STATE_NAMES))
+    kernel = load_kernel("erk", "DOP853", celt, "rhs_q_into", len(celt.STATE_NAMES))
     with pytest.raises(ZeroDivisionError):
         kernel.constants(np.ones(len(celt.PARAM_NAMES)))
 

@@ -4,7 +4,7 @@ Each check calls the IR parts of a kernel and compares with the method's loops o
 numpy (an independent implementation of the same method) from one workspace, or checks the IR parts
 against the formulas they implement: Hairer, Norsett & Wanner, Solving ODEs I, Sect. II.4 (the error scale
 ``atol + rtol max(|y|, |y_new|)``) and II.10 (DOP853's error norm), as SciPy's ``solve_ivp`` computes them.
-The stand-in model is ``templates/_stub.py``: q' = v, v' = -w^2 q, s' = -q.
+The stand-in model is ``tests/stub_model.py``: q' = v, v' = -w^2 q, s' = -q.
 """
 import ctypes
 import importlib.util
@@ -16,8 +16,8 @@ import sys
 import numpy as np
 import pytest
 
-from knifeedge.integrators import Status, from_code, irparts, specialize
-from knifeedge.integrators.templates import _stub
+from knifeedge.integrators import Status, from_code, irparts, load_kernel
+import stub_model as _stub
 
 _D = ctypes.c_double
 _I = ctypes.c_int64
@@ -33,11 +33,11 @@ def _ptr(a):
 
 def _workspace(mod, y, p):
     """The workspace the integrator gives the parts: y, q = constants(p) and K[0] = f(0, y)."""
-    ws = np.zeros(mod._WS)
-    ws[mod._O:mod._O + mod.N] = y
-    ws[mod._OQ:] = mod._constants(p)
+    ws = np.zeros(mod.layout.q + mod.NQ)
+    ws[mod.layout.y:mod.layout.y + mod.N] = y
+    ws[mod.layout.q:] = mod._constants(p)
     fns = mod.parts()
-    RHS(int(fns[0]))(0.0, _ptr(ws[mod._O:]), _ptr(ws[mod._OQ:]), mod.NQ, _ptr(ws))
+    RHS(int(fns[0]))(0.0, _ptr(ws[mod.layout.y:]), _ptr(ws[mod.layout.q:]), mod.NQ, _ptr(ws))
     return ws
 
 
@@ -93,7 +93,7 @@ def test_ir_parts_compute_the_loops_over_the_tableau(method):
     interpolant's rows F agree between the IR parts and the loops over the tableau to round-off (the IR sums a
     stage as y + (h a_0) K_0 + ... with fused multiply-adds, the loops as y + h (a_0 K_0 + ...)); with
     ``mode_scaled`` the scale of a component takes its partner's magnitude too."""
-    ir = specialize.load_kernel("erk", method, _stub, "rhs_q_into", 3)
+    ir = load_kernel("erk", method, _stub, "rhs_q_into", 3)
     y, p = np.array([0.8, -0.3, 0.1]), np.array([2.0, 0.1])
     atol = np.array([1e-9, 2e-9, 3e-9])
     pair = np.array([1, 0, -1], dtype=np.int64)
@@ -104,37 +104,37 @@ def test_ir_parts_compute_the_loops_over_the_tableau(method):
         ea = _step(ir, wa, 0.3, 1e-7, atol, pair, mode)
         assert math.isfinite(ea) and ea > 0.0
         assert math.isclose(ea, eb, rel_tol=1e-6), (ea, eb)  # round-off in the estimate: 1e-9 seen
-        np.testing.assert_allclose(wa[:ir._O], K.ravel(), rtol=1e-13, atol=1e-15)  # the stages K
-        y_new = wa[ir._O + 3:ir._O + 6]
+        np.testing.assert_allclose(wa[:ir.layout.y], K.ravel(), rtol=1e-13, atol=1e-15)  # the stages K
+        y_new = wa[ir.layout.y + 3:ir.layout.y + 6]
         np.testing.assert_allclose(y_new, y_new_b, rtol=1e-14)
         # the scale, from its definition (mode_scaled: max over the component and its partner)
         mag = np.maximum(np.abs(y), np.abs(y_new))
         if mode:
             mag = np.array([max(mag[0], mag[1]), max(mag[0], mag[1]), mag[2]])
-        np.testing.assert_allclose(wa[ir._O + 9:ir._O + 12], atol + 1e-7 * mag, rtol=1e-15)
+        np.testing.assert_allclose(wa[ir.layout.y + 9:ir.layout.y + 12], atol + 1e-7 * mag, rtol=1e-15)
         np.testing.assert_allclose(scale, atol + 1e-7 * mag, rtol=1e-13)  # from the loops' y_new
         wb = Fb.ravel()
-        F = slice(ir._O + 12, ir._OQ)
+        F = slice(ir.layout.y + 12, ir.layout.q)
         np.testing.assert_allclose(wa[F], wb, rtol=0, atol=1e-12 * np.abs(wb).max())  # 2e-13 seen
     # the exact solution q = 0.8 cos(2t) - 0.15 sin(2t): one short step of the 8th (5th) order method is that close
     ws = _workspace(ir, y, p)
     _step(ir, ws, 0.05, 1e-7, atol, pair, 0)
     exact = 0.8 * math.cos(0.1) - 0.15 * math.sin(0.1)
-    assert abs(ws[ir._O + 3] - exact) < (1e-14 if method == "DOP853" else 1e-9), abs(ws[ir._O + 3] - exact)
+    assert abs(ws[ir.layout.y + 3] - exact) < (1e-14 if method == "DOP853" else 1e-9), abs(ws[ir.layout.y + 3] - exact)
 
 
 def test_the_error_norm_is_hairers_from_the_stages():
     """DOP853's norm (Hairer's code, SciPy's ``DOP853._estimate_error_norm``): err = |h| n5 / sqrt((n5 + 0.01
     n3) N) with n5, n3 the squared scaled 5th- and 3rd-order estimates, recomputed here in numpy from the
     stages the IR part left in the workspace."""
-    mod = specialize.load_kernel("erk", "DOP853", _stub, "rhs_q_into", 3)
+    mod = load_kernel("erk", "DOP853", _stub, "rhs_q_into", 3)
     t = irparts.Tableau("DOP853")
     y, p = np.array([0.8, -0.3, 0.1]), np.array([2.0, 0.1])
     ws = _workspace(mod, y, p)
     h = 0.2
     err = _step(mod, ws, h, 1e-8, np.full(3, 1e-10), np.full(3, -1, dtype=np.int64), 0)
     K = ws[:t.n_ext * 3].reshape(t.n_ext, 3)[:t.n_stages + 1]
-    scale = ws[mod._O + 9:mod._O + 12]
+    scale = ws[mod.layout.y + 9:mod.layout.y + 12]
     n5 = np.sum((t.E5 @ K / scale) ** 2)
     n3 = np.sum((t.E3 @ K / scale) ** 2)
     assert math.isclose(err, h * n5 / math.sqrt((n5 + 0.01 * n3) * 3), rel_tol=1e-9)
@@ -155,7 +155,7 @@ def test_a_right_hand_side_that_raises_fails_the_run_instead_of_going_on(tmp_pat
     module = importlib.util.module_from_spec(spec)
     monkeypatch.setitem(sys.modules, "raising_rhs", module)
     spec.loader.exec_module(module)
-    solve = specialize.load_kernel("erk", "DOP853", module, "rhs_q_into", 3).solve
+    solve = load_kernel("erk", "DOP853", module, "rhs_q_into", 3).solve
     # q = 0.5 cos 2t + sin 2t = R sin(2t + phi) first reaches 0.9 at t* (R = sqrt(1.25), phi = atan2(0.5, 1))
     y0, p = np.array([0.5, 2.0, 0.0]), np.array([2.0])
     t_star = (math.asin(0.9 / math.sqrt(1.25)) - math.atan2(0.5, 1.0)) / 2
@@ -183,7 +183,7 @@ def test_compiled_parts_are_loaded_by_a_second_process_and_a_damaged_file_is_com
     first = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
     assert "compiling DOP853 for single_mode (reduced); once" in first.stderr
     assert first.stdout.startswith("True 106.3")  # the paper's Fig. 'numerical': reversal at t = 106.36
-    parts = list((tmp_path / "k" / "kernels").glob("erkDOP853_single_mode_reduced_*.parts-*.nbo"))
+    parts = list((tmp_path / "k" / "kernels").glob("erk-DOP853-single_mode_reduced-*.parts-*.nbo"))
     assert len(parts) == 1
     quiet = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
     assert quiet.stdout == first.stdout and quiet.stderr == ""

@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 
 import knifeedge as ke
-from knifeedge.integrators import TABLEAUS, ExplicitTableau, register, specialize, tableau
-from knifeedge.integrators.templates import _stub
+from knifeedge.integrators import TABLEAUS, ExplicitTableau, load_kernel, register, tableau
+import stub_model as _stub
 
 SINGLE = dict(g=1.0, ell=1.0, L=1.0, D=1.0)
 SINGLE_Y0 = dict(theta=1e-3, theta_dot=0.0, phi_dot=0.1)
@@ -77,8 +77,8 @@ def test_tsit5_satisfies_the_order_conditions():
 
 
 def _harmonic(method, rtol):
-    """The stub oscillator q'' = -w^2 q of the templates (w = 2): q(t) = cos(2t), exact at t = 10."""
-    m_solve = specialize.load_kernel("erk", method, _stub, "rhs_q_into", 3).solve
+    """The stand-in oscillator q'' = -w^2 q (tests/stub_model.py, w = 2): q(t) = cos(2t), exact at t = 10."""
+    m_solve = load_kernel("erk", method, _stub, "rhs_q_into", 3).solve
     y0, p = np.array([1.0, 0.0, 0.0]), np.array([2.0])
     ts, ys, ev_t, ev_k = np.empty(2), np.empty((2, 3)), np.empty(64), np.empty(64, dtype=np.int64)
     n_out, n_ev, status, nfev = m_solve(0.0, 10.0, y0, y0, p, rtol, np.full(3, rtol * 1e-3), 0.0, np.inf,
@@ -155,7 +155,7 @@ def test_an_explicit_tableau_as_data_converges_at_its_order():
         register_fixed(FixedMethod(name, [[0, 0, 0, 0], [1 / 3, 0, 0, 0], [-1 / 3, 1, 0, 0], [1, -1, 1, 0]],
                                    [1 / 8, 3 / 8, 3 / 8, 1 / 8], [0, 1 / 3, 2 / 3, 1], 4, "Kutta's 3/8 rule", 8.0))
     assert not FIXED_METHODS[name].is_classical_rk4
-    solve = specialize.load_kernel("fixed", name, _stub, "rhs_q_into", 3).solve
+    solve = load_kernel("fixed", name, _stub, "rhs_q_into", 3).solve
     y0, p = np.array([1.0, 0.0, 0.0]), np.array([2.0])
     errs = []
     for n_steps in (200, 400):

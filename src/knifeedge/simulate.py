@@ -474,7 +474,7 @@ def _while_compiling(r: _Run, spec, twin: str, names: tuple, events: np.ndarray,
     import time
 
     from .integrators import compiler, kernel_module, use_compiled
-    from .integrators.specialize import cache_dir
+    from .integrators.cache import cache_dir
 
     model = r.model
     module = kernel_module(model, spec.name)
@@ -912,7 +912,7 @@ def simulate(
         more inside one step included: a step whose ends have the same sign
         is sampled when the cubic through the event's values and rates at
         its ends dips toward zero inside it (see
-        ``knifeedge/integrators/templates/_blocks.py``).
+        ``knifeedge/integrators/blocks.py``).
     inputs : ``{name: value}`` for each of ``model.input_names`` (a model that declares ``inputs``): a
         number, samples ``(t_array, u_array)`` covering ``t_span`` (interpolated piecewise linearly: the run
         restarts at each sample time, exact for that input), or a function of ``t`` (SciPy methods only).

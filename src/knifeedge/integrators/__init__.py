@@ -2,7 +2,7 @@
 
 :data:`COMPILED_METHODS` lists them; :func:`kernel` returns the compiled
 ``solve`` function of one method specialized to one model (compiled on first
-use, then cached on disk across processes, see :mod:`.specialize`).
+use, then cached on disk across processes, see :mod:`.cache`).
 """
 from __future__ import annotations
 
@@ -11,7 +11,8 @@ import time
 from dataclasses import dataclass
 
 from . import dop853_tableau, rk_tableaus, tsit5
-from .specialize import cache_dir, call_repairing, is_compiled, load_kernel
+from .cache import cache_dir, call_repairing
+from .kernels import load_kernel
 from .status import Status, from_code
 from .fixed_methods import FIXED_METHODS, FixedMethod, register_fixed
 from .tableau import TABLEAUS, ExplicitTableau, register
@@ -74,7 +75,7 @@ def kernel(model, method: str):
     if key not in _KERNELS:
         module = kernel_module(model, method)
         solve = module.solve
-        if not is_compiled(module):
+        if not module.is_compiled():
             pose = ", pose" if model.pose else ""
             solve = _announced(solve, f"{spec.name} for {model.name} ({model.fidelity}{pose})")
         _KERNELS[key] = solve
@@ -82,15 +83,15 @@ def kernel(model, method: str):
 
 
 def kernel_module(model, method: str):
-    """The kernel module of ``method`` for ``model`` (written and imported, compiled or not: its ``solve``
-    compiles at its first call unless the cache holds it, see :func:`kernel_compiled`)."""
+    """The kernel of ``method`` for ``model`` (:func:`load_kernel`, compiled or not: its ``solve`` compiles at
+    its first call unless the cache holds it, see :func:`kernel_compiled`)."""
     spec, rhs_name, _ = _identity(model, method)
     return load_kernel(spec.template, spec.variant, model.module, rhs_name, model.n_state)
 
 
 def kernel_compiled(model, method: str) -> bool:
     """Whether the cache holds the compiled kernel of ``method`` for ``model`` (a later call loads it)."""
-    return is_compiled(kernel_module(model, method))
+    return kernel_module(model, method).is_compiled()
 
 
 def use_compiled(model, method: str) -> None:
@@ -132,6 +133,7 @@ def _announced(solve, label: str):
 __all__ = ["COMPILED_METHODS", "ALIASES", "EVENTS_PER_STEP", "CompiledMethod", "ExplicitTableau", "FIXED_METHODS",
            "FixedMethod", "Status", "TABLEAUS",
            "cache_dir",
-           "call_repairing", "compile_mode", "from_code", "kernel", "kernel_compiled", "kernel_module", "register",
+           "call_repairing", "compile_mode", "from_code", "kernel", "kernel_compiled", "kernel_module", "load_kernel",
+           "register",
            "register_fixed",
            "set_compile_mode", "use_compiled"]

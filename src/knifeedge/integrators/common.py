@@ -2,7 +2,7 @@
 
 They are compiled once per machine and shared by every kernel (numba caches
 them beside this module): the screening and location of zero crossings of
-state components (the method is described in ``templates/_blocks.py``) and
+state components (the method is described in :mod:`.blocks`) and
 the fixed-step kernel's helpers.  The interpolant of a step is ``F`` (rows
 x n) in one Horner scheme: ``v = (v + F[r, i]) * (1 - x if alt[r] else x)``
 from the last row, then ``y[i] + v`` (Hairer's DOP853 form alternates the

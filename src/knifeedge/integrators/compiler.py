@@ -81,8 +81,8 @@ class Pending:
 
     Attributes
     ----------
-    module : the kernel module (imported, not compiled).
-    path : its file; the compiling process's lock is ``path`` with suffix ``.compiling``.
+    module : the kernel (made, not compiled).
+    path : its name in the cache folder; the compiling process's lock is ``path`` with suffix ``.compiling``.
     started : whether this process started the compiler (else another one had).
     """
 
@@ -92,9 +92,7 @@ class Pending:
 
     def ready(self) -> bool:
         """Whether the compiled code is in the cache (a cheap check: one file's existence)."""
-        from .specialize import is_compiled
-
-        return is_compiled(self.module)
+        return self.module.is_compiled()
 
     def failed(self) -> bool:
         """Whether the compiling process ended (or its lock disappeared) without leaving compiled code."""
@@ -158,7 +156,7 @@ def start(model, method: str, kernel_module, arg_types: tuple) -> Pending:
     Returns a :class:`Pending`; if another live process is already compiling
     the same kernel (its lock file names it), none is started.
     """
-    path = Path(kernel_module.__file__)
+    path = Path(kernel_module.path)
     lock = _lock(path)
     if path.name in _STARTED:
         return _STARTED[path.name]
@@ -190,12 +188,12 @@ def _main() -> int:
     path = Path(job["kernel"])
     try:
         from ..models import load
-        from .specialize import load_kernel
+        from .kernels import load_kernel
 
         model = load(job["model"], fidelity=job["fidelity"], pose=job["pose"], path=job["path"])
         module = load_kernel(job["template"], job["variant"], model.module, job["rhs"], model.n_state)
-        if Path(module.__file__) != path:
-            raise RuntimeError(f"the kernel of this process is {module.__file__}, not {path}")
+        if Path(module.path) != path:
+            raise RuntimeError(f"the kernel of this process is {module.path}, not {path}")
         compile_types(module, pickle.loads(base64.b64decode(job["types"])))
         try:  # compiled: nothing to report, so no log is left beside the kernel (before the lock goes)
             if _log(path).stat().st_size == 0:

@@ -7,7 +7,7 @@ RK4) is stepped stage after stage; an implicit one (the Gauss--Legendre
 collocation methods) by fixed-point iteration of its stage equations,
 started from the previous step's collocation polynomial
 (:attr:`FixedMethod.extrapolation`).  The fixed-step kernel
-(``templates/fixed.py``, specialized per model by :mod:`.specialize`) reads
+(:mod:`.fixed`, a numba closure per method and model) reads
 everything from the registered method: adding one is a :class:`FixedMethod`
 and a :func:`register_fixed` line.
 """

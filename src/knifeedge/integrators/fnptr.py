@@ -1,8 +1,8 @@
 """Calls through a function's address inside compiled code: one compiled integrator serves every model.
 
 A model's compiled parts (its right-hand side, the stages of a step, the
-interpolant: ``numba.cfunc`` functions of the kernel module written by
-:mod:`.specialize`) are passed to the shared integrator as machine
+interpolant: IR or ``numba.cfunc`` functions of :class:`.erk.AdaptiveKernel`)
+are passed to the shared integrator as machine
 addresses, plain integers, and called with :func:`call_f8` / :func:`call_void`.
 The integrator therefore compiles once per method and machine (its cache
 does not depend on the model), and each model compiles only its parts.

@@ -1,7 +1,7 @@
 """A model's stages of a step and its interpolant written as LLVM IR, compiled without numba's front end.
 
-The adaptive integrator (``templates/erk.py``) calls four parts of each
-model through their addresses (``templates/erk_parts.py``).  Two of them,
+The adaptive integrator (:mod:`.erk`) calls four parts of each
+model through their addresses (:class:`.erk.AdaptiveKernel`).  Two of them,
 ``attempt`` (the stages of a step, ``y_new``, the error scale and norm) and
 ``dense`` (the interpolant's extra stages and rows), are straight-line code
 fixed by the tableau and the state size.  Compiled by numba they cost
@@ -26,7 +26,7 @@ return NaN, so the step is rejected and the run ends with the step-size
 failure instead of going on with garbage.  (``dense`` has no way to say so:
 its extra stages lie inside a step whose own stages all succeeded.)
 
-The compiled parts are kept in one file per kernel module and machine
+The compiled parts are kept in one file per kernel and machine
 (:func:`cache_file`: numba's serialized object code), so that a second
 process loads them in milliseconds (:func:`load_or_compile`).  The file is
 not a pickle: a fixed magic line, a JSON header (the numba and llvmlite
@@ -47,7 +47,7 @@ import struct
 import sys
 from pathlib import Path
 
-#: the C signatures of the two parts (as ``erk_parts.ATTEMPT_SIG`` and ``DENSE_SIG``)
+#: the C signatures of the two parts (called by the integrator of :mod:`.erk`)
 ATTEMPT_ARGS = ("double %t", "double %h", "double %t_new", "double %rtol", "i64 %mode_scaled", "ptr %ws",
                 "i64 %nq", "ptr %ap", "ptr %pairp")
 DENSE_ARGS = ("double %t", "double %h", "ptr %ws", "i64 %nq")
@@ -128,7 +128,7 @@ class _Writer:
 
 
 class Layout:
-    """The offsets of the integrator's workspace, as ``erk_parts.py`` lays it out: K (n_ext x n), y, y_new,
+    """The offsets of the integrator's workspace, as the integrator of :mod:`.erk` lays it out: K (n_ext x n), y, y_new,
     work, scale (n each), F (dense_rows x n), then q."""
 
     def __init__(self, n: int, n_ext: int, dense_rows: int):
@@ -179,7 +179,7 @@ def _stage(w: _Writer, lay: Layout, rhs: str, nq: int, y: list, k: list, row, ti
 
 
 def attempt_ir(tab: Tableau, n: int, nq: int, name: str, rhs: str) -> str:
-    """The IR of ``attempt`` (see ``erk_parts.attempt``) for ``tab`` on ``n`` states and ``nq`` constants,
+    """The IR of ``attempt`` (called by the integrator of :mod:`.erk`) for ``tab`` on ``n`` states and ``nq`` constants,
     defining the symbol ``name`` and calling the right-hand side ``rhs`` (numba's native function of the
     model's ``rhs`` part)."""
     lay = Layout(n, tab.n_ext, tab.dense_rows)
@@ -226,8 +226,8 @@ def attempt_ir(tab: Tableau, n: int, nq: int, name: str, rhs: str) -> str:
 
 
 def dense_ir(tab: Tableau, n: int, nq: int, name: str, rhs: str) -> str:
-    """The IR of ``dense`` (see ``erk_parts.dense``): the interpolant's rows ``F`` (DOP853: its extra stages
-    first) for ``tab`` on ``n`` states, defining ``name`` and calling the right-hand side ``rhs``."""
+    """The IR of ``dense`` (called by the integrator of :mod:`.erk`): the interpolant's rows ``F`` (DOP853:
+    its extra stages first) for ``tab`` on ``n`` states, defining ``name`` and calling the right-hand side ``rhs``."""
     lay = Layout(n, tab.n_ext, tab.dense_rows)
     w = _Writer()
     s = tab.n_stages
@@ -309,22 +309,23 @@ def _codegen():
     return cpu_target.target_context.codegen()
 
 
-def cache_file(kernel_file) -> Path:
-    """Where the compiled parts of the kernel module ``kernel_file`` are kept on this machine: beside it,
-    named after it and a hash of the machine (its CPU name and features) and of the compiler versions."""
+def cache_file(kernel_path) -> Path:
+    """Where the compiled parts of the kernel ``kernel_path`` (``AdaptiveKernel.path``, a name in the cache
+    folder) are kept on this machine: named after it and a hash of the machine (its CPU name and features)
+    and of the compiler versions."""
     import llvmlite
     import numba
 
     machine = repr((FORMAT, numba.__version__, llvmlite.__version__, _codegen().magic_tuple()))
-    path = Path(kernel_file)
+    path = Path(kernel_path)
     return path.with_name(f"{path.stem}.parts-{hashlib.sha256(machine.encode()).hexdigest()[:16]}.nbo")
 
 
-def symbols(kernel_file) -> tuple:
+def symbols(kernel_path) -> tuple:
     """The symbols of ``attempt``, ``dense``, the C-callable ``rhs``, then of ``constants``, of the number of
-    parameters it reads and of an ``events`` part that does nothing, for the kernel module ``kernel_file``
+    parameters it reads and of an ``events`` part that does nothing, for the kernel ``kernel_path``
     (unique per module; the first three are in every parts library, the others where they could be written)."""
-    stem = Path(kernel_file).stem
+    stem = Path(kernel_path).stem
     return (f"knifeedge.attempt.{stem}", f"knifeedge.dense.{stem}", f"knifeedge.rhs.{stem}",
             f"knifeedge.constants.{stem}", f"knifeedge.constants_reads.{stem}", f"knifeedge.no_events.{stem}")
 
@@ -372,18 +373,19 @@ def _load(path: Path, names: tuple):
     return None
 
 
-def load_or_compile(kernel_file, tableau: str, n: int, nq: int, model, rhs_name: str, rhs_cfunc) -> tuple:
-    """``(library, addresses)`` of the kernel module ``kernel_file``'s parts, loaded from :func:`cache_file`,
-    or compiled from :func:`module_ir` and saved there; ``addresses`` are those of :func:`symbols` (0 for
-    ``constants`` and its count where the model has no IR of it).
+def load_or_compile(kernel_path, tableau: str, n: int, nq: int, model, rhs_name: str, rhs_cfunc) -> tuple:
+    """``(library, addresses)`` of the parts of the kernel ``kernel_path`` (``AdaptiveKernel.path``, a name in
+    the cache folder), loaded from :func:`cache_file`, or compiled from :func:`module_ir` and saved there;
+    ``addresses`` are those of :func:`symbols` (0 for ``constants`` and its count where the model has no IR of
+    it).
 
     The right-hand side ``rhs_name`` and ``constants`` are the IR the generated ``model`` carries
     (``model.LLVM_IR``, written at derive time by ``derivation/ir_emit.py``); a right-hand side it does not
     carry is numba's compiled ``rhs`` part (``rhs_cfunc()``, a ``numba.cfunc``) linked in.  A cache file that
     cannot be read is removed, said in one line on stderr, and compiled again.
     """
-    path = cache_file(kernel_file)
-    names = symbols(kernel_file)
+    path = cache_file(kernel_path)
+    names = symbols(kernel_path)
     loaded = _load(path, names)
     if loaded is not None:
         return loaded
@@ -398,7 +400,7 @@ def load_or_compile(kernel_file, tableau: str, n: int, nq: int, model, rhs_name:
         native, definition, link = native[len("cfunc."):], "", [compiled._library]
     extras = _extras_ir(names, ir.get("constants", ""), getattr(model, "LLVM_IR_READS", 0))
     text = module_ir(Tableau(tableau), n, nq, names[:3], native, definition, extras)
-    lib = compile_library(text, f"knifeedge_parts_{Path(kernel_file).stem}", link)
+    lib = compile_library(text, f"knifeedge_parts_{Path(kernel_path).stem}", link)
     addresses = [lib.get_pointer_to_function(x) if i < 3 or i == 5 or "constants" in ir else 0
                  for i, x in enumerate(names)]
     write_parts(path, lib.serialize_using_object_code())

@@ -2,7 +2,7 @@
 
 A method is a frozen :class:`ExplicitTableau`, checked when it is built,
 and registered by name with :func:`register`.  The adaptive kernel
-(``templates/erk.py``, specialized by :mod:`.specialize`) reads everything
+(:mod:`.erk`, a numba closure per method) reads everything
 it needs from the tableau: the stages, the weights, the error estimator, the
 order of the controller and the dense output.  Adding a method is one file
 defining its tableau plus one :func:`register` line in

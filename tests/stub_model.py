@@ -1,7 +1,7 @@
-"""Stand-in right-hand side of the templates: a harmonic oscillator with a drifting third component.
+"""A stand-in model of the kernels' tests: a harmonic oscillator with a drifting third component.
 
 State ``(q, v, w)`` with ``q' = v``, ``v' = -p[0]**2 q``, ``w' = -q`` (so ``w``
-crosses zero); only used when a template module is imported as it is.  Its
+crosses zero), in the form of a generated module (no ``LLVM_IR``).  Its
 ``constants(p)`` is ``(p[0], p[0]**2)``, as a generated module's holds the
 parameters and then their precomputed combinations.
 """

@@ -1,0 +1,331 @@
+"""The cache of compiled kernels: one private folder, numba's files checked by SHA-256 before they are unpickled.
+
+A kernel is a numba function made for one method and one model by a factory
+(:mod:`.fixed`, :mod:`.erk`): a closure whose cells hold its compile-time
+constants (the state size, the tableau) and the model's compiled functions,
+so numba specializes the machine code to them.  :func:`compiled` gives such a
+closure numba's cache under a name that stands for everything it depends on
+(:func:`stamp`: the closure's cells, a model function by its module's file,
+the sources of the integrators, the compiler versions), in
+``<cache>/kernels``; a second process loads instead of compiling.
+
+The cache directory is ``$KNIFEEDGE_CACHE_DIR`` if set, else
+``$XDG_CACHE_HOME/knifeedge`` (default ``~/.cache/knifeedge``); when that is
+not usable, a per-user folder in the system temporary directory.
+"""
+from __future__ import annotations
+
+import errno
+import glob
+import hashlib
+import os
+import pickle
+import stat
+import sys
+import tempfile
+import zlib
+from pathlib import Path
+
+import llvmlite
+import numba
+import numpy as np
+from numba.core import caching
+from numba.core.caching import CompileResultCacheImpl, FunctionCache, IndexDataCacheFile, _CacheLocator
+from numba.core.registry import CPUDispatcher
+
+_HERE = Path(__file__).resolve().parent
+#: refusals of cache folders said on stderr already
+_SAID: set = set()
+
+
+def cache_dir() -> Path:
+    """The writable folder holding compiled kernels (created if needed).
+
+    Whichever folder is used ($KNIFEEDGE_CACHE_DIR, $XDG_CACHE_HOME/knifeedge,
+    ~/.cache/knifeedge, or the fallback in the system temporary directory),
+    it and its ``kernels`` folder are created private (mode 0700) and refused
+    when they are not plain folders of this user that only this user can
+    write to: a folder another user can write to could hold files planted for
+    this process to load as machine code.  A refused folder is said in one
+    line on stderr (once) and the next candidate is tried.
+    """
+    env = os.environ.get("KNIFEEDGE_CACHE_DIR")
+    if env:
+        candidates = [Path(env)]
+    else:
+        xdg = os.environ.get("XDG_CACHE_HOME")
+        base = Path(xdg) if xdg else Path.home() / ".cache"
+        candidates = [base / "knifeedge"]
+    uid = os.getuid() if hasattr(os, "getuid") else "user"
+    fallback = Path(tempfile.gettempdir()) / f"knifeedge-cache-{uid}"
+    candidates.append(fallback)
+    refused = []
+    for c in candidates:
+        try:
+            if c != fallback:
+                c.parent.mkdir(parents=True, exist_ok=True)
+            _private_folder(c, follow=c != fallback)  # a folder the user named may be a link to one
+            _private_folder(c / "kernels")
+            probe = c / "kernels" / f".probe-{os.getpid()}"
+            probe.write_text("")
+            probe.unlink()
+            return c
+        except PermissionError as exc:
+            refused.append(str(exc))
+            if c != fallback and str(exc) not in _SAID and "refused" in str(exc):
+                _SAID.add(str(exc))
+                print(f"knifeedge: compiled-code cache {exc}; using {fallback} instead (make the folder private "
+                      "with chmod 700, or set KNIFEEDGE_CACHE_DIR)", file=sys.stderr, flush=True)
+        except OSError:
+            continue
+    raise OSError(f"no writable cache directory for compiled kernels among {[str(c) for c in candidates]}"
+                  f"{'; ' + '; '.join(refused) if refused else ''}; set KNIFEEDGE_CACHE_DIR")
+
+
+def _private_folder(path: Path, follow: bool = False) -> None:
+    """Create ``path`` with mode 0700, or check that the existing one is this user's and private (``follow``:
+    a link to such a folder is accepted)."""
+    try:
+        path.mkdir(mode=0o700)
+    except FileExistsError:
+        pass
+    if not hasattr(os, "getuid"):
+        return
+    st = os.stat(path) if follow else os.lstat(path)
+    if not stat.S_ISDIR(st.st_mode):
+        raise PermissionError(f"refused {path}: not a folder (a link or a file)")
+    if st.st_uid != os.getuid():
+        raise PermissionError(f"refused {path}: owned by user id {st.st_uid}, not by this user ({os.getuid()})")
+    if st.st_mode & 0o022:
+        raise PermissionError(f"refused {path}: others may write to it (mode {stat.S_IMODE(st.st_mode):o})")
+
+
+def _named(value):
+    """What a closure cell stands for in a kernel's cache name: a compiled function by its module's file (a
+    generated model's bytes) or, for a closure, its code and cells; an array by its bytes; else the value."""
+    if isinstance(value, CPUDispatcher) or hasattr(value, "py_func"):
+        f = value.py_func
+        if f.__closure__:
+            return _closure_named(f)
+        module = sys.modules[f.__module__]
+        return ("function", f.__module__, f.__qualname__, _file_sha256(getattr(module, "__file__", None)))
+    if isinstance(value, np.ndarray):
+        return ("array", value.dtype.str, value.shape, value.tobytes())
+    if isinstance(value, tuple):
+        return tuple(_named(v) for v in value)
+    return value
+
+
+def _closure_named(f) -> tuple:
+    return ("closure", f.__qualname__, hashlib.sha256(f.__code__.co_code).hexdigest(),
+            tuple(_named(c.cell_contents) for c in f.__closure__ or ()))
+
+
+def _file_sha256(path) -> str:
+    return hashlib.sha256(Path(path).read_bytes()).hexdigest() if path else ""
+
+
+def stamp(py_func) -> str:
+    """A hash of everything the machine code of the closure ``py_func`` depends on: its cells (:func:`_named`),
+    the sources of the integrators (the code of the closures and of the helpers they call), numba, llvmlite
+    and Python."""
+    return digest(_closure_named(py_func))
+
+
+def digest(*items) -> str:
+    """A hash of ``items`` (:func:`_named`), the sources of the integrators and the compiler versions."""
+    h = hashlib.sha256(pickle.dumps(_named(items), protocol=4))
+    for dep in sorted(_HERE.glob("*.py")):
+        h.update(dep.name.encode())
+        h.update(dep.read_bytes())
+    h.update(f"numba {numba.__version__} llvmlite {llvmlite.__version__} python {sys.version}".encode())
+    return h.hexdigest()[:20]
+
+
+class _Locator(_CacheLocator):
+    """numba's cache of a kernel: in ``<cache>/kernels``, named by the label and stamp the function carries."""
+
+    def __init__(self, py_func, py_file):
+        self._py_file = py_file
+        self._folder, self._name = py_func.__knifeedge_cache__
+
+    def ensure_cache_path(self):
+        _private_folder(Path(self._folder))
+
+    def get_cache_path(self):
+        return self._folder
+
+    def get_source_stamp(self):
+        return self._name
+
+    def get_disambiguator(self):
+        return self._name
+
+    @classmethod
+    def from_function(cls, py_func, py_file):
+        return cls(py_func, py_file)
+
+
+class _Impl(CompileResultCacheImpl):
+    _locator_classes = [_Locator]
+
+    def get_filename_base(self, fullname, abiflags):
+        return f"{self.locator.get_disambiguator()}.py{sys.version_info[0]}{sys.version_info[1]}{abiflags}"
+
+
+class KernelCache(FunctionCache):
+    """numba's function cache for a closure: its index key is the kernel's stamp (numba's own key pickles a
+    compiled function in a cell with a per-process id, so it would never match in another process); its files
+    carry a SHA-256 checked before anything in them is unpickled (:class:`CheckedCacheFile`)."""
+
+    _impl_class = _Impl
+
+    def __init__(self, py_func):
+        super().__init__(py_func)
+        self._cache_file.__class__ = CheckedCacheFile
+
+    def _index_key(self, sig, codegen):
+        return (sig, codegen.magic_tuple(), self._py_func.__knifeedge_cache__[1])
+
+    def index_path(self) -> Path:
+        return Path(self._cache_file._index_path)
+
+
+def compiled(py_func, label: str, **options):
+    """``numba.njit(py_func)`` (error model numpy) cached in ``<cache>/kernels`` as ``<label>-<stamp>``."""
+    name = f"{label}-{stamp(py_func)}"
+    py_func.__knifeedge_cache__ = (str(cache_dir() / "kernels"), name)
+    dispatcher = numba.njit(error_model="numpy", **options)(py_func)
+    dispatcher._cache = KernelCache(py_func)
+    return dispatcher
+
+
+def compiled_cfunc(py_func, signature, label: str):
+    """``numba.cfunc(signature)(py_func)`` (error model numpy), compiled now or loaded from the cache (as
+    :func:`compiled`)."""
+    from numba.core import sigutils
+    from numba.core.ccallback import CFunc
+
+    py_func.__knifeedge_cache__ = (str(cache_dir() / "kernels"), f"{label}-{stamp(py_func)}")
+    function = CFunc(py_func, sigutils.normalize_signature(signature), locals={}, options={"error_model": "numpy"})
+    function._cache = KernelCache(py_func)
+    function.compile()
+    return function
+
+
+def is_cached(dispatcher) -> bool:
+    """Whether the cache holds machine code of ``dispatcher`` (made by :func:`compiled` or :func:`compiled_cfunc`)."""
+    return dispatcher._cache.index_path().is_file()
+
+
+def index_path(py_func, label: str) -> Path:
+    """The index file of :func:`compiled_cfunc` of ``py_func`` and ``label`` (it exists: the cache holds it)."""
+    tag = f"py{sys.version_info[0]}{sys.version_info[1]}{getattr(sys, 'abiflags', '')}"
+    return cache_dir() / "kernels" / f"{label}-{stamp(py_func)}.{tag}.nbi"
+
+
+#: the first bytes of the kernels' cache files, written by :class:`CheckedCacheFile`
+CHECKED_MAGIC = b"knifeedge checked numba cache\n"
+
+
+def _checked(data: bytes) -> bytes:
+    return CHECKED_MAGIC + hashlib.sha256(data).digest() + data
+
+
+def _verified(data: bytes, path) -> bytes:
+    """``data`` without its :func:`_checked` prefix; ValueError if the prefix or the checksum is wrong."""
+    head = len(CHECKED_MAGIC) + 32
+    if not data.startswith(CHECKED_MAGIC) or hashlib.sha256(data[head:]).digest() != data[len(CHECKED_MAGIC):head]:
+        raise ValueError(f"{path}: its checksum does not match its content")
+    return data[head:]
+
+
+class CheckedCacheFile(IndexDataCacheFile):
+    """numba's index-and-data cache file with a SHA-256 written with each file and verified before anything in
+    it is unpickled (the index's numba version too).  Private numba API used: ``_dump``, ``_save_index``,
+    ``_load_index``, ``_load_data``, ``_data_path``, ``_open_for_write``, ``_version``, ``_source_stamp``."""
+
+    def _dump(self, obj):
+        return _checked(super()._dump(obj))
+
+    def _save_index(self, overloads):
+        data = self._version.encode() + b"\n" + IndexDataCacheFile._dump(self, (self._source_stamp, overloads))
+        with self._open_for_write(self._index_path) as f:
+            f.write(_checked(data))
+
+    def _load_index(self):
+        try:
+            with open(self._index_path, "rb") as f:
+                raw = f.read()
+        except FileNotFoundError:
+            return {}
+        version, _, data = _verified(raw, self._index_path).partition(b"\n")
+        if version != self._version.encode():
+            return {}
+        stamp_, overloads = pickle.loads(data)
+        return overloads if stamp_ == self._source_stamp else {}
+
+    def _load_data(self, name):
+        path = self._data_path(name)
+        with open(path, "rb") as f:
+            return pickle.loads(_verified(f.read(), path))
+
+
+#: errors numba's cache raises when one of its files is damaged (truncated, overwritten, unreadable)
+_DAMAGE = (EOFError, pickle.UnpicklingError, zlib.error, ValueError, TypeError, AttributeError, IndexError,
+           KeyError, OSError, ImportError)
+
+
+def damaged_cache_files(exc: BaseException) -> list:
+    """The numba cache files being read when ``exc`` was raised (empty if it did not come from the cache)."""
+    files = []
+    tb = exc.__traceback__
+    while tb is not None:
+        frame = tb.tb_frame
+        if frame.f_code.co_filename in (caching.__file__, __file__):
+            owner = frame.f_locals.get("self")
+            index = getattr(owner, "_index_path", None)
+            if index:
+                files.append(Path(index))
+            path = frame.f_locals.get("path")
+            if isinstance(path, (str, Path)) and str(path).endswith((".nbi", ".nbc")):
+                files.append(Path(path))
+        tb = tb.tb_next
+    return list(dict.fromkeys(files))
+
+
+#: errno values of a write that found no room
+_FULL = (errno.ENOSPC, errno.EDQUOT)
+
+
+def disk_full(exc: OSError, what: str) -> OSError:
+    """The error to raise when writing ``what`` to the cache found the disk (or the quota) full."""
+    where = exc.filename or cache_dir()
+    return OSError(exc.errno, f"the disk holding the compiled-code cache is full: could not write {what} to "
+                              f"{where}; free some space, or set KNIFEEDGE_CACHE_DIR to a folder on another disk")
+
+
+def call_repairing(fn, *args):
+    """``fn(*args)``, discarding damaged cache entries (and recompiling) instead of failing.
+
+    A cache file that cannot be read (truncated by a full disk or a killed
+    process, overwritten, or failing its checksum) is removed with the entry
+    it belongs to (its index and data files), the removal is said in one line
+    on stderr, and the call is retried, which compiles the function again.
+    """
+    for _ in range(16):
+        try:
+            return fn(*args)
+        except _DAMAGE as exc:
+            if isinstance(exc, OSError) and exc.errno in _FULL:
+                raise disk_full(exc, "the compiled code") from exc
+            files = damaged_cache_files(exc)
+            if not files:
+                raise
+            for f in files:
+                stem = f.name.split(".")[0]  # "<label>-<stamp>", its index and data files "<stem>.<python>[.k].nb?"
+                for entry in f.parent.glob(f"{glob.escape(stem)}.*.nb[ic]"):
+                    entry.unlink(missing_ok=True)
+            print(f"knifeedge: discarded a damaged compiled-code cache entry {files[0]} "
+                  f"({type(exc).__name__}: {exc}); compiling it again", file=sys.stderr, flush=True)
+    return fn(*args)
