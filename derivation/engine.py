@@ -1103,6 +1103,11 @@ class Kkt:
     general_velocities: tuple
     #: the unreduced ``(M, h, A, c)`` at a general pose (what :func:`check_symmetry` compares with)
     unreduced: tuple = ()
+    #: ``[0, holonomic_rate f]`` per row of ``A`` (empty without held holonomic constraints): the kept dependent
+    #: coordinates' rates ``held_velocities`` solve ``A_dep v = -A_ind v_ind - holonomic_rhs``, so ``f`` decays as
+    #: ``exp(-holonomic_rate t)`` (:func:`held_rates` of the closed form)
+    holonomic_rhs: tuple = ()
+    held_velocities: tuple = ()
 
     def exprs(self) -> list:
         return [*self.mass, *self.forcing, *self.constraint, *self.bias]
@@ -1141,6 +1146,8 @@ def _numeric_system(spec: ModelSpec, at: dict, M, h, A, c) -> ReducedSystem:
     power = None
     if spec.dissipative:
         power = -(qd.T * _without_inputs(spec, generalized_forces(spec)).xreplace(at))[0]
+    kkt.holonomic_rhs, kkt.held_velocities = _held_terms(spec, at, len(dep))
+    held = dict(zip(spec.dependent, kkt.held_velocities))
     lam = sp.Matrix([names.Own(f"_lambda{i}", real=True) for i in range(A.rows)])
     accelerations = tuple(spec.accelerations[i] for i in kkt.independent)
     by_rate = dict(zip((spec.velocities[i] for i in dep), general))
@@ -1150,7 +1157,17 @@ def _numeric_system(spec: ModelSpec, at: dict, M, h, A, c) -> ReducedSystem:
         multipliers_implicit=lam, energy=energy,
         pose_rates={q: by_rate.get(spec.velocity_of(q), spec.velocity_of(q)) for q in spec.pose},
         power=power, power_input=_numeric_power_input(spec, L, at),
-        dependent_rates={q: spec.velocity_of(q) for q in spec.kept}, kkt=kkt)
+        dependent_rates={q: held.get(q, spec.velocity_of(q)) for q in spec.kept}, kkt=kkt)
+
+
+def _held_terms(spec: ModelSpec, at: dict, n_dependent: int) -> tuple:
+    """``(holonomic_rhs, held_velocities)`` of a numeric-elimination :class:`Kkt` (both empty without holonomic
+    constraints or with ``holonomic_rate`` 0): the numeric form of :func:`held_rates`."""
+    rate = sp.sympify(spec.holonomic_rate)
+    if not spec.holonomic or rate == 0:
+        return (), ()
+    rhs = (sp.S.Zero,) * len(spec.constraints) + tuple(rate * f.xreplace(at) for f in spec.holonomic)
+    return rhs, tuple(names.Own(f"_vh{k}", real=True) for k in range(n_dependent))
 
 
 def _check_dependent_block(spec: ModelSpec, kkt: Kkt) -> None:

@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk_damped',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:2c40815cddc4881ae8d33091c31483c8294f81e6504da25103155774fed107fc
+SymPy 1.14.0; input hash sha256:2818b696312234b97de74ef3c094e46612c0f3b0a9d3dafc56c02179e961ff7c
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table, its rotation resisted by a viscous torque -c r^2 omega per unit mass (Rayleigh function c r^2 |omega|^2/2).
 
@@ -64,7 +64,7 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = True
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '2c40815cddc4881ae8d33091c31483c8294f81e6504da25103155774fed107fc'
+INPUT_HASH = '2818b696312234b97de74ef3c094e46612c0f3b0a9d3dafc56c02179e961ff7c'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -1537,4 +1537,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 3
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'c14512386ecc644a62fbe21e0e08e04f5c4df668c8a9e4930bf190b9e591c874'
+MODULE_SHA256 = 'e3e488fe8652b1d058081acd25914ba9c38ea9a187634c18583ec303c7c47df9'

@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py and derivation/truncation.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:1af58167f29905dfbc529f9d966a3e6512d38edf3bd15a4f3d040e0a9de203c6
+SymPy 1.14.0; input hash sha256:451889244b5fc6554054e2fa788f743d718795b2f8f4bdb56ab04f55afd966cc
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '1af58167f29905dfbc529f9d966a3e6512d38edf3bd15a4f3d040e0a9de203c6'
+INPUT_HASH = '451889244b5fc6554054e2fa788f743d718795b2f8f4bdb56ab04f55afd966cc'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -559,4 +559,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 4
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '629e7fe2fa47cb8f845e59c80e0cad2c09d85acbad43c1c72b43920b12bdc9df'
+MODULE_SHA256 = '6cf2cae871bcbb3c38d56769dd48b54a8990c5c8e65c8b0c8910ad4e6b051026'
