@@ -161,15 +161,29 @@ def program(system, exprs, *, general: bool = False, prefix: str = "_c") -> tupl
     return prog, prog.cse(exprs)
 
 
-def _dynamics(system, held: bool = False) -> tuple:
-    """The right-hand side's program: ``(prog, a, v_dep, lam)`` (independent accelerations, dependent velocities
-    (and with ``held`` the held rates of :func:`_velocities`), multipliers as atoms; the multipliers' lines come
-    last, so a caller that needs only ``a`` drops them)."""
+def _dynamics(system) -> tuple:
+    """The right-hand side's program: ``(prog, a, v_dep, lam, end)`` (independent accelerations, dependent
+    velocities and the held rates of :func:`_velocities`, multipliers as atoms; the multipliers' lines come last,
+    from ``end`` on, so a caller that needs only ``a`` drops them).
+
+    Formed once per system (its common subexpressions are most of the emitter's time) and shared by the right-hand
+    side, the multipliers and the Jacobians; each caller gets its own copy of the lines.
+    """
+    cached = system.__dict__.get("_kkt_dynamics")
+    if cached is None:
+        cached = system.__dict__["_kkt_dynamics"] = _form_dynamics(system)
+    prog, *rest = cached
+    copy = Program(prog.prefix)
+    copy.lines, copy._count = list(prog.lines), prog._count
+    return (copy, *rest)
+
+
+def _form_dynamics(system) -> tuple:
     kkt = system.kkt
     n, k = kkt.mass.rows, len(kkt.independent)
     dep, ind = list(kkt.dependent), list(kkt.independent)
     prog = Program()
-    solved, Ad, Ai = _velocities(prog, kkt, general=False, held=held)
+    solved, Ad, Ai = _velocities(prog, kkt, general=False, held=True)
     m = len(dep)
     M, f, c = (X.xreplace(solved) for X in (kkt.mass, kkt.forcing, kkt.bias))
     pairs = [(i, j) for i in range(n) for j in range(i, n)]
@@ -224,7 +238,7 @@ def rhs_source(system) -> tuple:
     rates, and those of the general pose's dependent velocities the pose rates.
     """
     spec = system.spec
-    prog, a, solved, _, end = _dynamics(system, held=True)
+    prog, a, solved, _, end = _dynamics(system)
     prog.lines = prog.lines[:end]
     rates = _rates(system, a, solved)
     allowed = set(system.state) | set(spec.params) | {names.t}
@@ -258,7 +272,7 @@ def jacobian_source(system, allowed) -> str:
     """``jacobian(s, p)`` and ``jacobian_p(s, p)`` of a numeric-elimination model: the right-hand side's program
     differentiated in forward mode (what :mod:`.jacobian` writes for a closed form), with their operation counts
     added to ``OP_COUNTS``."""
-    prog, a, solved, _, end = _dynamics(system, held=True)
+    prog, a, solved, _, end = _dynamics(system)
     prog.lines = prog.lines[:end]
     rates = _rates(system, a, solved)
     _check(prog, allowed)

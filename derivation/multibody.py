@@ -132,12 +132,12 @@ def contact(base: RigidBody, n: sp.Matrix) -> sp.Matrix:
     return r.applyfunc(lambda e: e.replace(lambda u: isinstance(u, sp.Abs), unsigned))
 
 
-def _frames(base: RigidBody, joints) -> list:
+def _frames(base: RigidBody, joints, touch: sp.Matrix) -> list:
     """``(body, R, omega, centre, potential)`` per body: orientation (body -> table), body-axes angular velocity,
-    centre of mass in table axes, spring potential of its joint."""
+    centre of mass in table axes, spring potential of its joint (``touch``: the base's :func:`contact`)."""
     R, n, B = euler_angle_maps()
     omega = B * sp.Matrix([psi_dot, a1_dot, a2_dot])
-    height = sp.trigsimp(-contact(base, n).dot(n))
+    height = sp.trigsimp(-touch.dot(n))
     frames = {id(base): (base, R, omega, sp.Matrix([x, y, height]), sp.S.Zero)}
     order = [id(base)]
     for k, j in enumerate(joints):
@@ -182,7 +182,8 @@ def lagrangian(base: RigidBody, joints, gravity) -> tuple:
     velocities = BASE_VELOCITIES + tuple(sp.Symbol(f"{q}_dot", real=True) for q in extra)
     qd = sp.Matrix(velocities)
     L = sp.S.Zero
-    frames = _frames(base, joints)
+    touch = contact(base, euler_angle_maps()[1])
+    frames = _frames(base, joints, touch)
     angles = [q for q in coordinates if q not in (x, y)]
     for body, R, omega, centre, pot in frames:
         # each velocity component and the rotational energy tidied on their own (no product is expanded)
@@ -191,7 +192,7 @@ def lagrangian(base: RigidBody, joints, gravity) -> tuple:
         L += body.mass * v.dot(v) / 2 + spin / 2 - body.mass * gravity * centre[2] - pot
     _, R, omega, centre, _ = frames[0]
     v0 = centre.jacobian(sp.Matrix(coordinates)) * qd
-    slip = v0 + R * omega.cross(contact(base, euler_angle_maps()[1]))
+    slip = v0 + R * omega.cross(touch)
     # along and across the heading: the multipliers (contact forces) do not turn with psi, a symmetry
     along = sp.cos(psi) * slip[0] + sp.sin(psi) * slip[1]
     across = -sp.sin(psi) * slip[0] + sp.cos(psi) * slip[1]

@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/sleigh.py (model 'chaplygin_sleigh',
 constraints knife_edge) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:2972cd46cfdbdbcbc3cfdaa87e7910a59b8bdd1e5ea615e921d69e13c47e5eb2
+SymPy 1.14.0; input hash sha256:35636a01d5778681e1aa469146c16c98004fb92654d49c310b7de619a17f4169
 
 Chaplygin sleigh: a rigid body on the plane with a knife edge at its rear contact point (x, y) that forbids sideways motion; heading phi, centre of mass at distance a ahead of the contact, radius of gyration k about the centre of mass; v is the speed along the axis.
 
@@ -60,7 +60,7 @@ MULTIPLIER_NAMES = ('knife_edge',)
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '2972cd46cfdbdbcbc3cfdaa87e7910a59b8bdd1e5ea615e921d69e13c47e5eb2'
+INPUT_HASH = '35636a01d5778681e1aa469146c16c98004fb92654d49c310b7de619a17f4169'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -429,4 +429,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 2
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'bd2b71d79c63d6474b020bbfcfc23104c1ab03973487210979e17605a9984e02'
+MODULE_SHA256 = '4896821ebee244e445adc4160396c153a77f6e2799c24f3534e5f3fe4ac0d22f'

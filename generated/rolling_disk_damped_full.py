@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk_damped',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:2818b696312234b97de74ef3c094e46612c0f3b0a9d3dafc56c02179e961ff7c
+SymPy 1.14.0; input hash sha256:f7348a35ac190543dcf9b7c74f0127b3fc8fbd044bee13e263f6e6c6c27321f8
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table, its rotation resisted by a viscous torque -c r^2 omega per unit mass (Rayleigh function c r^2 |omega|^2/2).
 
@@ -64,7 +64,7 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = True
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '2818b696312234b97de74ef3c094e46612c0f3b0a9d3dafc56c02179e961ff7c'
+INPUT_HASH = 'f7348a35ac190543dcf9b7c74f0127b3fc8fbd044bee13e263f6e6c6c27321f8'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -1537,4 +1537,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 3
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'e3e488fe8652b1d058081acd25914ba9c38ea9a187634c18583ec303c7c47df9'
+MODULE_SHA256 = 'e0a3d0a02b36e2929d07ba5e9bd6a4d31eb2c57f3554ee76d000e6f2029a704e'

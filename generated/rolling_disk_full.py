@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:ba1ffa8bfe54f6769bfb86bb6f982a800721c2331c5f5651f363aaa9ef42f1f6
+SymPy 1.14.0; input hash sha256:86e693a79398c48c6aef7075957e3c6671c119d5edce444315f8a2a4e0c5e237
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table: heading q1, lean q2 from the vertical, rotation q3 about the axle, contact point (x, y).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'ba1ffa8bfe54f6769bfb86bb6f982a800721c2331c5f5651f363aaa9ef42f1f6'
+INPUT_HASH = '86e693a79398c48c6aef7075957e3c6671c119d5edce444315f8a2a4e0c5e237'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -1134,4 +1134,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 2
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'f375796d131ea6524b596df2fd20c048af9ccfc5c2765ebe8f2f0eb69984aca5'
+MODULE_SHA256 = 'aa6dd0a54f6daead2a4832ea6f6bdd8176d79c52fe6ffafb0c3488779a7db9ae'

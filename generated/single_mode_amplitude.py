@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:93178343b9f08e656c3040734525c04bcbd7d6257e096bf2b963a3f9d85f3e26
+SymPy 1.14.0; input hash sha256:dcfd9843a7d7669031ae041f1fb7ff74eebead2a1780bd1c301c7a22e0a1deb5
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -67,7 +67,7 @@ HAS_DISSIPATION = False
 EXPORTS = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy',)
-INPUT_HASH = '93178343b9f08e656c3040734525c04bcbd7d6257e096bf2b963a3f9d85f3e26'
+INPUT_HASH = 'dcfd9843a7d7669031ae041f1fb7ff74eebead2a1780bd1c301c7a22e0a1deb5'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 10, 'constants': 6, 'rhs_q': 4, 'energy': 9, 'invariants': 9, 'frequencies': 5, 'growth_rates': 2, 'drive_rates': 5}
@@ -342,4 +342,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 4
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '0ba85326e25a5e8fd549ff20d5f32c1b2480bb091e7ec7397323227171991d78'
+MODULE_SHA256 = '5549bbea2609e99d1af56a4d23e91212dfbd6dc4c9987aa4d8bafd59ff217eef'

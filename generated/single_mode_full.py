@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:2c95443d34953ebccba26b5e9c63c813fce05872d05040bc3adbcac6d92a6668
+SymPy 1.14.0; input hash sha256:a53c42c1b1b7088aac6439ddba7406ba021ab0b5b19e6042ee2b6c95a2e4b5f5
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '2c95443d34953ebccba26b5e9c63c813fce05872d05040bc3adbcac6d92a6668'
+INPUT_HASH = 'a53c42c1b1b7088aac6439ddba7406ba021ab0b5b19e6042ee2b6c95a2e4b5f5'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -603,4 +603,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 4
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '2ab888db2a30deafb5410d7d108d09e6b123d9cb76d3c5c1ce07b3fa9bf47ef2'
+MODULE_SHA256 = 'adbb844c7d7b6da5f69b9ff43ea77b3d3919e6558ac65e55598f2f32421c0b58'

@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py and derivation/truncation.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:451889244b5fc6554054e2fa788f743d718795b2f8f4bdb56ab04f55afd966cc
+SymPy 1.14.0; input hash sha256:10a83bc2930f841ba5bc72865a00e52e29bf205e313c1d32ff03efa1dcda83a9
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '451889244b5fc6554054e2fa788f743d718795b2f8f4bdb56ab04f55afd966cc'
+INPUT_HASH = '10a83bc2930f841ba5bc72865a00e52e29bf205e313c1d32ff03efa1dcda83a9'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -559,4 +559,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 4
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '6cf2cae871bcbb3c38d56769dd48b54a8990c5c8e65c8b0c8910ad4e6b051026'
+MODULE_SHA256 = '034268b25aed3030046393682176a3a6b3699bfbc6a72b357f8977a98902f7cf'

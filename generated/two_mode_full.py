@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:fb0a7a4b09a2442783c26afcfcb22fe90465c9928d622dd1b9cec25baab926ac
+SymPy 1.14.0; input hash sha256:92bfbf48ed3c4ace247bd8a7a76ae96290049c6daa0bd08ffda965d139aebdeb
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -66,7 +66,7 @@ MULTIPLIER_NAMES = ('Const22', 'Const23')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'fb0a7a4b09a2442783c26afcfcb22fe90465c9928d622dd1b9cec25baab926ac'
+INPUT_HASH = '92bfbf48ed3c4ace247bd8a7a76ae96290049c6daa0bd08ffda965d139aebdeb'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -1475,4 +1475,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 5
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'c0c4beca3573cb8544a59853a48620795064d8b812324b1d323482803b8dd890'
+MODULE_SHA256 = '8b29eff353193851dae7815097a7ef5a56ede8097ee183f2e2af6c56afc62d1d'

@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py and derivation/truncation.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:682e9ea0af2ec520511a491604de106d8feb8701b4f8b25ed7b5077a286c9381
+SymPy 1.14.0; input hash sha256:42870bc4c1aaff4e41a33cead75151b1b205acce8801d75cc0bec44d5de95305
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -66,7 +66,7 @@ MULTIPLIER_NAMES = ('Const22', 'Const23')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '682e9ea0af2ec520511a491604de106d8feb8701b4f8b25ed7b5077a286c9381'
+INPUT_HASH = '42870bc4c1aaff4e41a33cead75151b1b205acce8801d75cc0bec44d5de95305'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -1063,4 +1063,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 5
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'adae1fa1c5afd9972859ccc65ae0dc48ca0149f08d8b36ccb21c7c5c49a1c42f'
+MODULE_SHA256 = '4df89e772be88571f47c226176ee2590ec69b5b55fd11386eb97227abaf0db3e'
