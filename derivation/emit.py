@@ -317,11 +317,11 @@ def _model_metadata(system) -> tuple:
         out += (const("ENERGY_NEEDS_POSE", True,
                       "``energy`` holds a potential of pose coordinates: it reads the pose-extended state"),)
     if system.spec.holonomic:
-        rate = str(sp.sympify(system.spec.holonomic_rate)) if system.kkt is None else "0"
+        rate = str(sp.sympify(system.spec.holonomic_rate))
         out += (const("HOLONOMIC_NAMES", tuple(system.spec.holonomic_labels),
                       "holonomic constraints, whose values ``holonomic_residual`` gives (zero on the manifold); the rates\n"
                       "of the dependent coordinates hold them: df/dt = -HOLONOMIC_RATE * f (f decays instead of drifting;\n"
-                      "0: the differentiated constraint only, as in a numeric-elimination model)"),
+                      "0: the differentiated constraint only)"),
                 const("HOLONOMIC_RATE", rate))
     if not system.time_dependent:
         return out

@@ -38,7 +38,7 @@ import mpmath
 
 import sympy as sp
 
-from . import input_slots, names
+from . import dag, input_slots, names
 from .names import t
 
 
@@ -828,13 +828,21 @@ class ReducedSystem:
         return [by_name[str(s)] for s in self.state]
 
 
-def _lagrange_terms(spec: ModelSpec):
-    """Mass matrix ``M``, velocity/potential terms ``h`` and constraint data."""
+def _lagrange_terms(spec: ModelSpec, fast: bool = False):
+    """Mass matrix ``M``, velocity/potential terms ``h`` and constraint data.
+
+    ``fast``: differentiate the Lagrangian by :func:`.dag.derivative` (equal, not always in ``sp.diff``'s form:
+    for a numeric elimination, whose code is not the paper's closed form)."""
     q, qd = sp.Matrix(spec.coordinates), sp.Matrix(spec.velocities)
     L = spec.lagrangian
-    p_mom = sp.Matrix([sp.diff(L, v) for v in qd])
-    M = p_mom.jacobian(qd)
-    h = p_mom.jacobian(q) * qd - sp.Matrix([sp.diff(L, c) for c in q])
+    if fast:
+        p_mom = sp.Matrix(dag.gradient(L, qd))
+        M = dag.jacobian(p_mom, qd)
+        h = dag.jacobian(p_mom, q) * qd - sp.Matrix(dag.gradient(L, q))
+    else:
+        p_mom = sp.Matrix([sp.diff(L, v) for v in qd])
+        M = p_mom.jacobian(qd)
+        h = p_mom.jacobian(q) * qd - sp.Matrix([sp.diff(L, c) for c in q])
     if L.has(t):  # d/dt of the momenta holds their explicit time derivative
         h += p_mom.diff(t)
     h -= generalized_forces(spec)
@@ -916,10 +924,10 @@ def tidy(e: sp.Expr, variables) -> sp.Expr:
 
 def derive(spec: ModelSpec) -> ReducedSystem:
     """Run the pipeline of the module docstring on ``spec``."""
-    M, h, A, c = _lagrange_terms(spec)
     at = dict(spec.cyclic)
     if choose_elimination(spec, len(spec.independent), affine_terms(spec).subs(at)) == "numeric":
-        return _numeric_system(spec, at, M, h, A, c)
+        return _numeric_system(spec, at, *_lagrange_terms(spec, fast=True))
+    M, h, A, c = _lagrange_terms(spec)
     M, h, A, c = (X.subs(at) for X in (M, h, A, c))
     dep, ind, A_dep_inv, A_ind = _dependent_block(spec, A, at)
     qdd_ind = sp.Matrix([spec.accelerations[i] for i in ind])
@@ -1103,6 +1111,11 @@ class Kkt:
     general_velocities: tuple
     #: the unreduced ``(M, h, A, c)`` at a general pose (what :func:`check_symmetry` compares with)
     unreduced: tuple = ()
+    #: ``[0, holonomic_rate f]`` per row of ``A`` (empty without held holonomic constraints): the kept dependent
+    #: coordinates' rates ``held_velocities`` solve ``A_dep v = -A_ind v_ind - holonomic_rhs``, so ``f`` decays as
+    #: ``exp(-holonomic_rate t)`` (:func:`held_rates` of the closed form)
+    holonomic_rhs: tuple = ()
+    held_velocities: tuple = ()
 
     def exprs(self) -> list:
         return [*self.mass, *self.forcing, *self.constraint, *self.bias]
@@ -1137,10 +1150,12 @@ def _numeric_system(spec: ModelSpec, at: dict, M, h, A, c) -> ReducedSystem:
     _check_dependent_block(spec, kkt)
     qd = sp.Matrix(spec.velocities)
     L = spec.lagrangian.xreplace(at)
-    energy = sum((v * sp.diff(L, v) for v in qd), -L) + _dropped_potential(spec, at)
+    energy = sum((v * d for v, d in zip(qd, dag.gradient(L, qd))), -L) + _dropped_potential(spec, at)
     power = None
     if spec.dissipative:
         power = -(qd.T * _without_inputs(spec, generalized_forces(spec)).xreplace(at))[0]
+    kkt.holonomic_rhs, kkt.held_velocities = _held_terms(spec, at, len(dep))
+    held = dict(zip(spec.dependent, kkt.held_velocities))
     lam = sp.Matrix([names.Own(f"_lambda{i}", real=True) for i in range(A.rows)])
     accelerations = tuple(spec.accelerations[i] for i in kkt.independent)
     by_rate = dict(zip((spec.velocities[i] for i in dep), general))
@@ -1150,7 +1165,17 @@ def _numeric_system(spec: ModelSpec, at: dict, M, h, A, c) -> ReducedSystem:
         multipliers_implicit=lam, energy=energy,
         pose_rates={q: by_rate.get(spec.velocity_of(q), spec.velocity_of(q)) for q in spec.pose},
         power=power, power_input=_numeric_power_input(spec, L, at),
-        dependent_rates={q: spec.velocity_of(q) for q in spec.kept}, kkt=kkt)
+        dependent_rates={q: held.get(q, spec.velocity_of(q)) for q in spec.kept}, kkt=kkt)
+
+
+def _held_terms(spec: ModelSpec, at: dict, n_dependent: int) -> tuple:
+    """``(holonomic_rhs, held_velocities)`` of a numeric-elimination :class:`Kkt` (both empty without holonomic
+    constraints or with ``holonomic_rate`` 0): the numeric form of :func:`held_rates`."""
+    rate = sp.sympify(spec.holonomic_rate)
+    if not spec.holonomic or rate == 0:
+        return (), ()
+    rhs = (sp.S.Zero,) * len(spec.constraints) + tuple(rate * f.xreplace(at) for f in spec.holonomic)
+    return rhs, tuple(names.Own(f"_vh{k}", real=True) for k in range(n_dependent))
 
 
 def _check_dependent_block(spec: ModelSpec, kkt: Kkt) -> None:
@@ -1159,7 +1184,7 @@ def _check_dependent_block(spec: ModelSpec, kkt: Kkt) -> None:
     A = kkt.constraint.extract(list(range(kkt.constraint.rows)), list(kkt.dependent))
     pt = {s: sp.Float(rng.uniform(-0.9, 0.9), 30) for s in A.free_symbols}
     with mpmath.workdps(30):
-        value = mpmath.det(mpmath.matrix(A.xreplace(pt).evalf(30).tolist()))
+        value = mpmath.det(_matrices_at([A], pt)[0])
     if abs(value) < 1e-20:
         raise ModelSpecError(spec.error_message(
             f"the constraints do not determine the velocities of `dependent` {spec.dependent} (their block of the "
@@ -1167,17 +1192,31 @@ def _check_dependent_block(spec: ModelSpec, kkt: Kkt) -> None:
 
 
 def _floats(values: dict) -> dict:
-    """``values`` as 30-digit floats: substituted into a large expression, they evaluate it node by node as it is
-    rebuilt (``evalf`` of the exact values took most of the Whipple bicycle's ``check_symmetry``)."""
+    """``values`` as 30-digit floats."""
     return {k: sp.Float(sp.sympify(v), 30) for k, v in values.items()}
+
+
+def _matrices_at(matrices, values: dict) -> list:
+    """Each SymPy matrix at ``values`` as an ``mpmath.matrix`` (30 digits; call inside ``mpmath.workdps(30)``),
+    every subexpression shared among them evaluated once (:func:`.dag.values`)."""
+    matrices = [sp.Matrix(X) for X in matrices]
+    flat = dag.values([e for X in matrices for e in X], values)
+    out, k = [], 0
+    for X in matrices:
+        out.append(mpmath.matrix(X.rows, X.cols))
+        for i in range(X.rows):
+            for j in range(X.cols):
+                out[-1][i, j] = flat[k]
+                k += 1
+    return out
 
 
 def _numeric_velocities(A, b, dep: list, ind: list, values: dict) -> dict:
     """``{index: value}`` of the dependent velocities from ``A q_dot + b = 0`` at ``values`` (30 digits)."""
-    An = A.xreplace(values).evalf(30)
-    bn = b.xreplace(values).evalf(30)
-    rhs = [-(bn[r] + sum(An[r, i] * values[k] for i, k in ind)) for r in range(A.rows)]
     with mpmath.workdps(30):
+        An, bn = _matrices_at([A, b], values)
+        v = dag.values([k for _, k in ind], values)
+        rhs = [-(bn[r] + sum(An[r, i] * vk for (i, _), vk in zip(ind, v))) for r in range(A.rows)]
         sol = mpmath.lu_solve(mpmath.matrix([[An[r, i] for i in dep] for r in range(A.rows)]), mpmath.matrix(rhs))
     return {i: sp.Float(sol[j], 30) for j, i in enumerate(dep)}
 
@@ -1204,8 +1243,7 @@ def kkt_solution(system: ReducedSystem, values: dict) -> tuple:
     values = {**values, **{spec.velocities[i]: v for i, v in vel.items()}}
     K, r = kkt.matrix()
     with mpmath.workdps(30):
-        sol = mpmath.lu_solve(mpmath.matrix(K.xreplace(values).evalf(30).tolist()),
-                              mpmath.matrix(r.xreplace(values).evalf(30).tolist()))
+        sol = mpmath.lu_solve(*_matrices_at([K, r], values))
         sol = [sp.Float(v, 30) for v in sol]
     n = kkt.mass.rows
     return [sol[i] for i in kkt.independent], sol[n:]
@@ -1347,8 +1385,7 @@ def unreduced_accelerations(spec: ModelSpec, values: dict, everything: bool = Fa
     K[n:, :n] = A
     rhs = sp.Matrix.vstack(-h, -c)
     with mpmath.workdps(30):
-        sol = mpmath.lu_solve(mpmath.matrix(K.xreplace(pt).evalf(30).tolist()),
-                              mpmath.matrix(rhs.xreplace(pt).evalf(30).tolist()))
+        sol = mpmath.lu_solve(*_matrices_at([K, rhs], pt))
         sol = [sp.Float(v, 30) for v in sol]
     if everything:
         return sol[:n], list(sol[n:]), dep_vel

@@ -119,21 +119,33 @@ def _columns(X: sp.Matrix, cols) -> list:
     return [[X[r, c] for r in range(X.rows)] for c in cols]
 
 
-def _velocities(prog: Program, kkt, general: bool) -> tuple:
+def _velocities(prog: Program, kkt, general: bool, held: bool = False) -> tuple:
     """Bind the dependent velocities (at the representative pose, or the general one): ``({symbol: atom}, A_dep,
-    A_ind)``, the blocks of the constraint matrix as rows of atoms."""
+    A_ind)``, the blocks of the constraint matrix as rows of atoms.
+
+    With ``held`` (and holonomic constraints held, ``kkt.holonomic_rhs``) the same LU also solves a second
+    right-hand side, ``-A_ind v_ind - [0, rate f]``: the rates ``kkt.held_velocities`` of the kept dependent
+    coordinates, under which ``f`` decays as ``exp(-rate t)``; the dynamics keep the exact dependent velocities.
+    """
     A = kkt.constraint_general if general else kkt.constraint
     dep = kkt.dependent
     ind = list(kkt.independent)
     v_ind = [kkt.velocities[i] for i in ind]
     rhs = [-sum((A[r, i] * v for i, v in zip(ind, v_ind)), sp.S.Zero) for r in range(A.rows)]
     m, k = len(dep), len(ind)
-    entries = prog.cse([A[r, c] for r in range(m) for c in dep] + [A[r, c] for r in range(m) for c in ind] + rhs)
+    held = held and not general and bool(kkt.holonomic_rhs)
+    extra = [rhs[r] - kkt.holonomic_rhs[r] for r in range(m)] if held else []
+    entries = prog.cse([A[r, c] for r in range(m) for c in dep] + [A[r, c] for r in range(m) for c in ind] + rhs
+                       + extra)
     block = [entries[r * m:(r + 1) * m] for r in range(m)]
     rest = [entries[m * m + r * k: m * m + (r + 1) * k] for r in range(m)]
-    (x,) = lu_solve(prog, block, [entries[m * m + m * k:]])
+    start = m * m + m * k
+    x, *xh = lu_solve(prog, block, [entries[start:start + m]] + ([entries[start + m:]] if held else []))
     keys = kkt.general_velocities if general else tuple(kkt.velocities[i] for i in dep)
-    return dict(zip(keys, x)), block, rest
+    solved = dict(zip(keys, x))
+    if held:
+        solved.update(zip(kkt.held_velocities, xh[0]))
+    return solved, block, rest
 
 
 def program(system, exprs, *, general: bool = False, prefix: str = "_c") -> tuple:
@@ -150,13 +162,28 @@ def program(system, exprs, *, general: bool = False, prefix: str = "_c") -> tupl
 
 
 def _dynamics(system) -> tuple:
-    """The right-hand side's program: ``(prog, a, v_dep, lam)`` (independent accelerations, dependent velocities,
-    multipliers as atoms; the multipliers' lines come last, so a caller that needs only ``a`` drops them)."""
+    """The right-hand side's program: ``(prog, a, v_dep, lam, end)`` (independent accelerations, dependent
+    velocities and the held rates of :func:`_velocities`, multipliers as atoms; the multipliers' lines come last,
+    from ``end`` on, so a caller that needs only ``a`` drops them).
+
+    Formed once per system (its common subexpressions are most of the emitter's time) and shared by the right-hand
+    side, the multipliers and the Jacobians; each caller gets its own copy of the lines.
+    """
+    cached = system.__dict__.get("_kkt_dynamics")
+    if cached is None:
+        cached = system.__dict__["_kkt_dynamics"] = _form_dynamics(system)
+    prog, *rest = cached
+    copy = Program(prog.prefix)
+    copy.lines, copy._count = list(prog.lines), prog._count
+    return (copy, *rest)
+
+
+def _form_dynamics(system) -> tuple:
     kkt = system.kkt
     n, k = kkt.mass.rows, len(kkt.independent)
     dep, ind = list(kkt.dependent), list(kkt.independent)
     prog = Program()
-    solved, Ad, Ai = _velocities(prog, kkt, general=False)
+    solved, Ad, Ai = _velocities(prog, kkt, general=False, held=True)
     m = len(dep)
     M, f, c = (X.xreplace(solved) for X in (kkt.mass, kkt.forcing, kkt.bias))
     pairs = [(i, j) for i in range(n) for j in range(i, n)]

@@ -94,6 +94,19 @@ class Slider:
     unit = "m"
 
 
+@dataclass(frozen=True)
+class Torque:
+    """A torque on ``body``: ``torque`` (three expressions, in the body's own axes) of the parameters, the
+    coordinates and the model's ``inputs`` (a motor given at run time: ``assemble(..., inputs=(tau,))``).
+
+    It enters as the generalized forces ``Q_j = torque . d omega / d q_dot_j`` (``omega`` the body's angular
+    velocity in its axes); its power ``torque . omega`` is the model's ``power_input`` when it holds inputs.
+    """
+
+    body: RigidBody
+    torque: tuple
+
+
 def _unit(v, what: str) -> sp.Matrix:
     m = sp.Matrix(v)
     if m.shape != (3, 1):
@@ -132,12 +145,12 @@ def contact(base: RigidBody, n: sp.Matrix) -> sp.Matrix:
     return r.applyfunc(lambda e: e.replace(lambda u: isinstance(u, sp.Abs), unsigned))
 
 
-def _frames(base: RigidBody, joints) -> list:
+def _frames(base: RigidBody, joints, touch: sp.Matrix) -> list:
     """``(body, R, omega, centre, potential)`` per body: orientation (body -> table), body-axes angular velocity,
-    centre of mass in table axes, spring potential of its joint."""
+    centre of mass in table axes, spring potential of its joint (``touch``: the base's :func:`contact`)."""
     R, n, B = euler_angle_maps()
     omega = B * sp.Matrix([psi_dot, a1_dot, a2_dot])
-    height = sp.trigsimp(-contact(base, n).dot(n))
+    height = sp.trigsimp(-touch.dot(n))
     frames = {id(base): (base, R, omega, sp.Matrix([x, y, height]), sp.S.Zero)}
     order = [id(base)]
     for k, j in enumerate(joints):
@@ -175,6 +188,18 @@ def reduce_trig(e: sp.Expr, angles) -> sp.Expr:
     return e
 
 
+def generalized_forces(base: RigidBody, joints, loads, velocities) -> tuple:
+    """``Q_j = sum over loads of torque . d omega / d q_dot_j``, one per coordinate (``velocities`` in order)."""
+    omega = {id(body): w for body, _, w, _, _ in _frames(base, joints, sp.zeros(3, 1))}
+    Q = sp.zeros(len(velocities), 1)
+    for k, load in enumerate(loads):
+        if not isinstance(load, Torque) or id(load.body) not in omega:
+            raise ValueError(f"`loads[{k}]` must be a Torque on the base or on a body of `joints`, got {load!r}")
+        torque = _vector(load.torque, f"loads[{k}].torque")
+        Q += omega[id(load.body)].jacobian(sp.Matrix(velocities)).T * torque
+    return tuple(sp.expand(e) for e in Q)
+
+
 def lagrangian(base: RigidBody, joints, gravity) -> tuple:
     """``(L, coordinates, velocities, rolling constraints)`` of the bodies (see the module docstring)."""
     extra = tuple(j.coordinate for j in joints)
@@ -182,7 +207,8 @@ def lagrangian(base: RigidBody, joints, gravity) -> tuple:
     velocities = BASE_VELOCITIES + tuple(sp.Symbol(f"{q}_dot", real=True) for q in extra)
     qd = sp.Matrix(velocities)
     L = sp.S.Zero
-    frames = _frames(base, joints)
+    touch = contact(base, euler_angle_maps()[1])
+    frames = _frames(base, joints, touch)
     angles = [q for q in coordinates if q not in (x, y)]
     for body, R, omega, centre, pot in frames:
         # each velocity component and the rotational energy tidied on their own (no product is expanded)
@@ -191,19 +217,20 @@ def lagrangian(base: RigidBody, joints, gravity) -> tuple:
         L += body.mass * v.dot(v) / 2 + spin / 2 - body.mass * gravity * centre[2] - pot
     _, R, omega, centre, _ = frames[0]
     v0 = centre.jacobian(sp.Matrix(coordinates)) * qd
-    slip = v0 + R * omega.cross(contact(base, euler_angle_maps()[1]))
+    slip = v0 + R * omega.cross(touch)
     # along and across the heading: the multipliers (contact forces) do not turn with psi, a symmetry
     along = sp.cos(psi) * slip[0] + sp.sin(psi) * slip[1]
     across = -sp.sin(psi) * slip[0] + sp.cos(psi) * slip[1]
     return L, coordinates, velocities, (reduce_trig(along, angles), reduce_trig(across, angles))
 
 
-def assemble(name: str, base: RigidBody, joints=(), *, params: tuple, gravity, symmetric: tuple = (), units: dict | None = None, **spec_fields) -> ModelSpec:
+def assemble(name: str, base: RigidBody, joints=(), *, params: tuple, gravity, symmetric: tuple = (), units: dict | None = None, loads: tuple = (), **spec_fields) -> ModelSpec:
     """The :class:`ModelSpec` of ``base`` rolling on its shape and of the bodies of ``joints``.
 
     ``params``: every parameter, in the order of the parameter vector; ``gravity``: ``g``; ``symmetric``: base
     angles (``a2``, ...) that are symmetries besides ``x, y, psi``; ``units``: units of the parameters and joint
-    coordinates (the base's are set); ``spec_fields``: any other :class:`ModelSpec` field (``defaults``,
+    coordinates (the base's are set); ``loads``: :class:`Torque` on the bodies (their generalized forces are the
+    spec's ``forces``); ``spec_fields``: any other :class:`ModelSpec` field (``inputs``, ``defaults``,
     ``description``, ``validity``, ``reversal_events``, ...).
     """
     if not isinstance(base, RigidBody) or base.shape is None:
@@ -217,6 +244,10 @@ def assemble(name: str, base: RigidBody, joints=(), *, params: tuple, gravity, s
         raise ValueError(f"`symmetric` may name the base's tilts a1, a2 only (x, y, psi are always symmetries), "
                          f"got {bad}")
     L, coordinates, velocities, slip = lagrangian(base, joints, gravity)
+    if loads:
+        if "forces" in spec_fields:
+            raise ValueError("give either `loads` (torques on the bodies) or `forces` (generalized forces), not both")
+        spec_fields["forces"] = generalized_forces(base, joints, tuple(loads), velocities)
     fields = dict(
         name=name, coordinates=coordinates, velocities=velocities, lagrangian=L, params=tuple(params),
         constraints=slip, constraint_labels=("rolling_along", "rolling_across"), dependent=(x, y), cyclic={q: 0 for q in (x, y, psi, *symmetric)},
@@ -233,4 +264,4 @@ def assemble(name: str, base: RigidBody, joints=(), *, params: tuple, gravity, s
         raise ValueError(f"assemble: {exc}; the keywords after `units` are ModelSpec fields") from None
 
 
-__all__ = ["Pin", "Slider", "assemble", "rotation", "lagrangian", "ModelSpecError"]
+__all__ = ["Pin", "Slider", "Torque", "assemble", "rotation", "lagrangian", "ModelSpecError"]

@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:fd0c21a17e35cca1bc27055d3e4cfe23da59c3e1b1df90b6561dd33629a43ca5
+SymPy 1.14.0; input hash sha256:92bfbf48ed3c4ace247bd8a7a76ae96290049c6daa0bd08ffda965d139aebdeb
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -66,7 +66,7 @@ MULTIPLIER_NAMES = ('Const22', 'Const23')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'fd0c21a17e35cca1bc27055d3e4cfe23da59c3e1b1df90b6561dd33629a43ca5'
+INPUT_HASH = '92bfbf48ed3c4ace247bd8a7a76ae96290049c6daa0bd08ffda965d139aebdeb'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -1629,4 +1629,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 5
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '1a88b432f5e3b56952ef0101ab398f9ed6d957eff4d1c67bb2809dd4b4d35a2e'
+MODULE_SHA256 = '2e903adc082782b21f84f5448d10635df17c0be327a0cf36ffc079206e3c3b27'
