@@ -25,12 +25,6 @@ NEAR = 0.5
 MAX_ITER = 200
 
 
-@njit(cache=True)
-def no_event_values(s, p):
-    """Stand-in ``event_values`` of a model without event functions (never called: no event is negative)."""
-    return np.empty(0)
-
-
 @njit(cache=True, error_model="numpy")
 def screen(ga, gb, sa, sb, crit, n_crit, flag):
     """Which events may cross zero inside the step: ``flag[k]`` 1 (the signs at the ends differ), 2 (the
@@ -82,72 +76,96 @@ def interpolate(F, y, alt, x, i):
     return y[i] + v
 
 
-@njit(cache=True, error_model="numpy")
-def locate(events, F, y, alt, t, h, ga, gb, crit, n_crit, flag, xs, gs, ev_t, ev_k, n_ev):
-    """Zero crossings of the flagged state components (``events[k] >= 0``) inside the step from ``t``
-    (length ``h``, interpolant ``F``, ``alt``), appended to ``ev_t``, ``ev_k`` from ``n_ev``; returns the
-    new count.  ``xs``, ``gs`` (SAMPLES + 3): work arrays."""
-    for k in range(events.size):
-        if flag[k] == 0 or events[k] < 0:
-            continue
-        c = events[k]
+def _no_values(s, p, ev):
+    """Stand-in event functions of a kernel whose model has none (never called: no event is negative)."""
+    return np.empty(0)
 
 
-        # the brackets: xs[0] = 0 < xs[1] < ... < xs[ns - 1] = 1 with the event's values gs
-        xs[0] = 0.0
-        gs[0] = ga[k]
-        ns = 1
-        if flag[k] == 2:
-            for m in range(1, SAMPLES):
-                xs[ns] = m / SAMPLES
+def locator(values=None):
+    """``locate(...)``, the one zero-crossing locator of the kernels: the crossings of the flagged events
+    inside the step from ``t`` (length ``h``, interpolant ``F``, ``alt``), the state components'
+    (``events[k] >= 0``) first, then the model's event functions' (``events[k] = -1 - j``:
+    ``values(s, p, ev)[j]``, a compiled function; ``None`` for a model without them), appended to ``ev_t``,
+    ``ev_k`` from ``n_ev``; returns the new count.  ``xs``, ``gs`` (SAMPLES + 3), ``work`` (n): work arrays."""
+    values = njit(error_model="numpy")(_no_values) if values is None else values
+
+    def event_at_(F, y, alt, x, c, p, ev, work):
+        """Event ``c`` (a component, or ``-1 - j``: event function ``j``) of the interpolant at ``x``."""
+        if c >= 0:
+            return interpolate(F, y, alt, x, c)
+        xm = 1.0 - x
+        for i in range(y.size):
+            v = 0.0
+            for r in range(F.shape[0] - 1, -1, -1):
+                v = (v + F[r, i]) * (xm if alt[r] else x)
+            work[i] = y[i] + v
+        return values(work, p, ev)[-1 - c]
+
+    event_at = njit(error_model="numpy")(event_at_)
+
+    def locate(events, F, y, alt, t, h, p, ev, work, ga, gb, crit, n_crit, flag, xs, gs, ev_t, ev_k, n_ev):
+        for functions in range(2):  # the components' rows first, then the event functions'
+            for k in range(events.size):
+                c = events[k]
+                if flag[k] == 0 or (c < 0) != (functions == 1):
+                    continue
+                # the brackets: xs[0] = 0 < xs[1] < ... < xs[ns - 1] = 1 with the event's values gs
+                xs[0] = 0.0
+                gs[0] = ga[k]
+                ns = 1
+                if flag[k] == 2:
+                    for m in range(1, SAMPLES):
+                        xs[ns] = m / SAMPLES
+                        ns += 1
+                    for m in range(n_crit[k]):
+                        xs[ns] = crit[k, m]
+                        ns += 1
+                    for m in range(2, ns):  # insertion sort of the interior points
+                        x = xs[m]
+                        j = m - 1
+                        while j >= 1 and xs[j] > x:
+                            xs[j + 1] = xs[j]
+                            j -= 1
+                        xs[j + 1] = x
+                    for m in range(1, ns):
+                        gs[m] = event_at(F, y, alt, xs[m], c, p, ev, work)
+                xs[ns] = 1.0
+                gs[ns] = gb[k]
                 ns += 1
-            for m in range(n_crit[k]):
-                xs[ns] = crit[k, m]
-                ns += 1
-            for m in range(2, ns):  # insertion sort of the interior points
-                x = xs[m]
-                j = m - 1
-                while j >= 1 and xs[j] > x:
-                    xs[j + 1] = xs[j]
-                    j -= 1
-                xs[j + 1] = x
-            for m in range(1, ns):
-                gs[m] = interpolate(F, y, alt, xs[m], c)
-        xs[ns] = 1.0
-        gs[ns] = gb[k]
-        ns += 1
-        for m in range(1, ns):
-            a, b, fa_, fb_ = xs[m - 1], xs[m], gs[m - 1], gs[m]
-            if b <= a or fa_ == 0.0 or not (fb_ == 0.0 or (fa_ > 0.0) != (fb_ > 0.0)):
-                continue
-            x = b
-            if fb_ != 0.0:
-                # Illinois: regula falsi on the interpolant, the stale end's value halved
-                side = 0
-                for _ in range(MAX_ITER):
-                    x = (a * fb_ - b * fa_) / (fb_ - fa_)
-                    if not (a < x < b):
-                        x = 0.5 * (a + b)
-                    fx = interpolate(F, y, alt, x, c)
-                    if fx == 0.0:
-                        break
-                    if (fx > 0.0) == (fb_ > 0.0):
-                        b, fb_ = x, fx
-                        if side == -1:
-                            fa_ *= 0.5
-                        side = -1
-                    else:
-                        a, fa_ = x, fx
-                        if side == 1:
-                            fb_ *= 0.5
-                        side = 1
-                    if b - a <= 4.0 * _EPS:
-                        break
-            if n_ev < ev_t.size:
-                ev_t[n_ev] = t + x * h
-                ev_k[n_ev] = k
-                n_ev += 1
-    return n_ev
+                for m in range(1, ns):
+                    a, b, fa_, fb_ = xs[m - 1], xs[m], gs[m - 1], gs[m]
+                    if b <= a or fa_ == 0.0 or not (fb_ == 0.0 or (fa_ > 0.0) != (fb_ > 0.0)):
+                        continue
+                    x = b
+                    if fb_ != 0.0:
+                        # Illinois: regula falsi on the interpolant, the stale end's value halved
+                        side = 0
+                        for _ in range(MAX_ITER):
+                            x = (a * fb_ - b * fa_) / (fb_ - fa_)
+                            if not (a < x < b):
+                                x = 0.5 * (a + b)
+                            fx = event_at(F, y, alt, x, c, p, ev, work)
+                            if fx == 0.0:
+                                break
+                            if (fx > 0.0) == (fb_ > 0.0):
+                                b, fb_ = x, fx
+                                if side == -1:
+                                    fa_ *= 0.5
+                                side = -1
+                            else:
+                                a, fa_ = x, fx
+                                if side == 1:
+                                    fb_ *= 0.5
+                                side = 1
+                            if b - a <= 4.0 * _EPS:
+                                break
+                    if n_ev < ev_t.size:
+                        ev_t[n_ev] = t + x * h
+                        ev_k[n_ev] = k
+                        n_ev += 1
+        return n_ev
+
+    return njit(error_model="numpy")(locate)
 
 
 @njit(cache=True, error_model="numpy")

@@ -123,7 +123,8 @@ def _driver_closure(tableau: str):
     """The integrator of ``tableau`` as a Python closure over its sizes and helpers."""
     (_, _, _, _, _, _, _, N_STAGES, N_EXT, DENSE_ROWS, ALT, ERROR_ORDER) = _tableau.erk_arrays(tableau)
     DENSE_NFEV = N_EXT - N_STAGES - 1  # evaluations of the interpolant beyond the step's (DOP853: 3)
-    function_ends, locate_functions = _b.event_functions(njit(error_model="numpy")(_values_), DENSE_ROWS, ALT)
+    values = njit(error_model="numpy")(_values_)
+    function_ends, locate = _b.function_ends(values), _c.locator(values)
     initial_step, workspace = _initial_step_closure(ERROR_ORDER), _workspace_closure(N_EXT, DENSE_ROWS)
     ERROR_EXPONENT = -1.0 / (ERROR_ORDER + 1)
     EIGHTH = ERROR_ORDER == 7  # err ** (-1/8) as three square roots, cheaper than pow (DOP853)
@@ -243,10 +244,7 @@ def _driver_closure(tableau: str):
                 call_void(dense, (t, h, ws, nq))  # the interpolant of the step: F (DENSE_ROWS x N)
                 nfev += DENSE_NFEV
             if any_flag:
-                n_ev = _c.locate(events, F, y, ALT, t, h, ga, gb, crit, n_crit, flag, xs, gs, ev_t, ev_k, n_ev)
-                if n_fun > 0:
-                    n_ev = locate_functions(events, F, y, t, h, p, ev, work, ga, gb, crit, n_crit, flag, xs, gs, ev_t,
-                                            ev_k, n_ev)
+                n_ev = locate(events, F, y, ALT, t, h, p, ev, work, ga, gb, crit, n_crit, flag, xs, gs, ev_t, ev_k, n_ev)
             if every:  # the common case: a row per step
                 ts[n_out] = t_new
                 for i in range(N):

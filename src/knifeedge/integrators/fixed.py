@@ -151,7 +151,7 @@ def make_solve(method: str, model_module, rhs_name: str, N: int):
     generated ``model_module`` on ``N`` states (see :func:`_solve_closure` for its arguments)."""
     rhs, constants = getattr(model_module, rhs_name), model_module.constants
     names = tuple(getattr(model_module, "EVENT_NAMES", ()))
-    function_ends = locate_functions = None
+    function_ends, locate = None, _c.locator()
     if names:
         event_values = model_module.event_values
 
@@ -159,9 +159,10 @@ def make_solve(method: str, model_module, rhs_name: str, N: int):
             """The model's event functions at ``s``."""
             return event_values(s, p)
 
-        function_ends, locate_functions = _b.event_functions(njit(**_OPTIONS)(values_), DENSE_ROWS, ALT)
+        values = njit(**_OPTIONS)(values_)
+        function_ends, locate = _b.function_ends(values), _c.locator(values)
     py = _solve_closure(FIXED_METHODS[method], N, rhs, constants, _increments(method, N, rhs), bool(names),
-                        function_ends, locate_functions)
+                        function_ends, locate)
     label = f"fixed-{method}-{model_module.__name__.rsplit('.', 1)[-1]}-{rhs_name}"
     return compiled(py, label)
 
@@ -197,7 +198,7 @@ def _buffers_closure(N: int, S: int):
     return njit(inline="always", **_OPTIONS)(buffers)
 
 
-def _solve_closure(m, N: int, rhs, constants, increments, HAS_FUN, function_ends, locate_functions):
+def _solve_closure(m, N: int, rhs, constants, increments, HAS_FUN, function_ends, locate):
     """The kernel as a Python closure over the method ``m``, the state size, the model's functions."""
     rk4_increment, explicit_increment, gauss_increment, solver_scale = increments
     IMPLICIT, CLASSICAL_RK4, S, EXTRAP = m.implicit, m.is_classical_rk4, m.stages, m.extrapolation
@@ -291,11 +292,8 @@ def _solve_closure(m, N: int, rhs, constants, increments, HAS_FUN, function_ends
             if any_flag or (ie < t_eval.size and t_eval[ie] < t_new):
                 _c.hermite_coefficients(y, y_new, f_old, f_new, h, F)
             if any_flag:
-                n_ev = _c.locate(events, F, y, ALT, t, h, ga, gb, crit, n_crit, flag, xs, gs, ev_t, ev_k, n_ev)
-                if HAS_FUN:
-                    if n_fun > 0:
-                        n_ev = locate_functions(events, F, y, t, h, p, NO_EV, work, ga, gb, crit, n_crit, flag, xs, gs,
-                                                ev_t, ev_k, n_ev)
+                n_ev = locate(events, F, y, ALT, t, h, p, NO_EV, work, ga, gb, crit, n_crit, flag, xs, gs, ev_t, ev_k,
+                              n_ev)
             if every:  # the common case: a row per step
                 ts[n_out] = t_new
                 for i in range(N):
