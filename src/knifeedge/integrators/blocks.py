@@ -4,8 +4,8 @@
 :func:`function_ends` makes the ends of a model's event functions for one
 kernel, :func:`.common.locator` the one locator of every event's crossings.
 The per-step moves (the events' values at the ends of a step, the
-``suspect`` bound, the output rows) are written out in each kernel's loop: as functions, inlined by numba or called, they cost the
-kernels 1.5-4x per evaluation (numba counts the references to every array
+``suspect`` bound, the output rows) are written out in each kernel's loop:
+as functions, inlined by numba or called, they cost the kernels 1.5-4x per evaluation (numba counts the references to every array
 passed to them, at every step).  The interpolant of a step is ``F``
 (``dense_rows`` x n, rows alternating as ``alt`` says) about ``y``, see
 :mod:`.common`.

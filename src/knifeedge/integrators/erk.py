@@ -244,7 +244,8 @@ def _driver_closure(tableau: str):
                 call_void(dense, (t, h, ws, nq))  # the interpolant of the step: F (DENSE_ROWS x N)
                 nfev += DENSE_NFEV
             if any_flag:
-                n_ev = locate(events, F, y, ALT, t, h, p, ev, work, ga, gb, crit, n_crit, flag, xs, gs, ev_t, ev_k, n_ev)
+                n_ev = locate(events, F, y, ALT, t, h, p, ev, work, ga, gb, crit, n_crit, flag, xs, gs, ev_t, ev_k,
+                              n_ev)
             if every:  # the common case: a row per step
                 ts[n_out] = t_new
                 for i in range(N):
