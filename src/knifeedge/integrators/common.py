@@ -76,20 +76,8 @@ def interpolate(F, y, alt, x, i):
     return y[i] + v
 
 
-def _no_values(s, p, ev):
-    """Stand-in event functions of a kernel whose model has none (never called: no event is negative)."""
-    return np.empty(0)
-
-
-def locator(values=None):
-    """``locate(...)``, the one zero-crossing locator of the kernels: the crossings of the flagged events
-    inside the step from ``t`` (length ``h``, interpolant ``F``, ``alt``), the state components'
-    (``events[k] >= 0``) first, then the model's event functions' (``events[k] = -1 - j``:
-    ``values(s, p, ev)[j]``, a compiled function; ``None`` for a model without them), appended to ``ev_t``,
-    ``ev_k`` from ``n_ev``; returns the new count.  ``xs``, ``gs`` (SAMPLES + 3), ``work`` (n): work arrays."""
-    values = njit(error_model="numpy")(_no_values) if values is None else values
-
-    def event_at_(F, y, alt, x, c, p, ev, work):
+def _interpolant_event(values):
+    def event_at(F, y, alt, x, c, p, ev, work):
         """Event ``c`` (a component, or ``-1 - j``: event function ``j``) of the interpolant at ``x``."""
         if c >= 0:
             return interpolate(F, y, alt, x, c)
@@ -101,7 +89,28 @@ def locator(values=None):
             work[i] = y[i] + v
         return values(work, p, ev)[-1 - c]
 
-    event_at = njit(error_model="numpy")(event_at_)
+    return event_at
+
+
+def _no_values(s, p, ev):
+    """Stand-in event functions of a kernel whose model has none (never called: no event is negative)."""
+    return np.empty(0)
+
+
+def locator(values=None, event_at=None):
+    """``locate(...)``, the one zero-crossing locator of every path: the crossings of the flagged events inside
+    the step from ``t`` (length ``h``), the state components' (``events[k] >= 0``) first, then the model's
+    event functions' (``events[k] = -1 - j``), appended to ``ev_t``, ``ev_k`` from ``n_ev``; returns the new
+    count.  ``xs``, ``gs`` (SAMPLES + 3): work arrays.
+
+    ``event_at(F, y, alt, x, c, p, ev, work)``: event ``c`` at ``x`` in [0, 1] of the step; by default on the
+    kernels' interpolant ``F``, ``alt`` about ``y``, event function ``j`` as ``values(s, p, ev)[j]`` (a
+    compiled function; ``None`` for a model without them) at the interpolated state (into ``work``).  The
+    SciPy hand-over passes its own (on SciPy's dense output) and runs ``locate.py_func`` in Python.
+    """
+    if event_at is None:
+        event_at = njit(error_model="numpy")(_interpolant_event(
+            njit(error_model="numpy")(_no_values) if values is None else values))
 
     def locate(events, F, y, alt, t, h, p, ev, work, ga, gb, crit, n_crit, flag, xs, gs, ev_t, ev_k, n_ev):
         for functions in range(2):  # the components' rows first, then the event functions'
