@@ -481,7 +481,7 @@ def _while_compiling(r: _Run, spec, twin: str, names: tuple, events: np.ndarray,
     n = model.n_state
     probe = (r.t0, r.t1, r.y0, r.y0, r.p, r.rtol, r.atol, 0.0, r.max_step, np.empty(0), True, events, 1, pair,
              False, 1, np.empty(1), np.empty((1, n)), np.empty(1), np.empty(1, dtype=np.int64))
-    pending = compiler.start(model, spec.name, module, compiler.argument_types(module, probe))
+    pending = compiler.start(model, spec.name, module, module.argument_types(probe))
     label = f"{spec.name} for {model.name} ({model.fidelity}{', pose' if model.pose else ''})"
     print(f"knifeedge: compiling {label} in a background process (once: it is then cached in {cache_dir()}); "
           f"meanwhile SciPy's {twin} (same steps) with a Python right-hand side runs", file=sys.stderr, flush=True)

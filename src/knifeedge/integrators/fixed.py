@@ -20,7 +20,6 @@ round-off does not accumulate as a random walk over long runs.  Dense output
 import numpy as np
 from numba import njit
 
-from . import blocks as _b
 from . import common as _c
 from .cache import compiled, is_cached
 from .common import NEAR, SAMPLES
@@ -160,7 +159,7 @@ def make_solve(method: str, model_module, rhs_name: str, N: int):
             return event_values(s, p)
 
         values = njit(**_OPTIONS)(values_)
-        function_ends, locate = _b.function_ends(values), _c.locator(values)
+        function_ends, locate = _c.function_ends(values), _c.locator(values)
     py = _solve_closure(FIXED_METHODS[method], N, rhs, constants, _increments(method, N, rhs), bool(names),
                         function_ends, locate)
     label = f"fixed-{method}-{model_module.__name__.rsplit('.', 1)[-1]}-{rhs_name}"
@@ -225,7 +224,7 @@ def _solve_closure(m, N: int, rhs, constants, increments, HAS_FUN, function_ends
             raise ValueError("the initial state does not have the size this kernel was specialized to")
         q = constants(p)
         y, y_new, dy, comp_trial, scale, work, f_old, f_new, K, Znew, F = buffers(y0)
-        ne, n_fun, ga, gb, sa, sb, crit, n_crit, flag, xs, gs = _b.alloc(events)
+        ne, n_fun, ga, gb, sa, sb, crit, n_crit, flag, xs, gs = _c.alloc(events)
         # counters start as int64, not as the literal 0 (numba would compile the callees for both types)
         n_out, ie, n_ev, nfev = np.int64(0), np.int64(0), np.int64(0), np.int64(0)
         t = t0 if first == 0 else t0 + first * h_fixed
@@ -266,7 +265,7 @@ def _solve_closure(m, N: int, rhs, constants, increments, HAS_FUN, function_ends
                 comp[i] = comp_trial[i]
             n_acc += 1
             h = t_new - t  # the step as taken
-            # the events' screen, their crossings and the output, written out (blocks.py says what they do: as
+            # the events' screen, their crossings and the output, written out (common.py says what they do: as
             # calls, inlined or not, they cost the kernels 1.5-4x per evaluation)
             any_flag = False
             if ne > 0:
@@ -277,7 +276,7 @@ def _solve_closure(m, N: int, rhs, constants, increments, HAS_FUN, function_ends
                 if HAS_FUN:
                     if n_fun > 0:
                         function_ends(events, y, y_new, f_old, f_new, h, p, NO_EV, work, ga, gb, sa, sb)
-                suspect = False  # whether the screen may flag any event (the bound of blocks.py)
+                suspect = False  # whether the screen may flag any event (the bound of common.py)
                 for k in range(ne):
                     g0, g1 = ga[k], gb[k]
                     if g0 == 0.0 or g1 == 0.0 or (g0 > 0.0) != (g1 > 0.0):
