@@ -151,10 +151,22 @@ def _docstring_lines(node) -> int:
     return 0
 
 
+def _nested_lines(node) -> int:
+    """The lines of the functions and classes defined inside ``node`` (each counted once, in itself)."""
+    n = 0
+    for child in ast.iter_child_nodes(node):
+        if isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+            n += child.end_lineno - child.lineno + 1
+        else:
+            n += _nested_lines(child)
+    return n
+
+
 def long_functions(root: Path = ROOT, limit: int = LONG) -> list:
     """Every function (methods and nested functions too) over ``limit`` lines, longest first.
 
-    A function's lines: from its ``def`` to its last line, without its docstring (documentation is not length).
+    A function's lines: from its ``def`` to its last line, without its docstring (documentation is not length)
+    and without the functions defined inside it (a factory's closure is counted once, as itself).
     """
     out = []
     for path in modules(root, SOURCES).values():
@@ -165,7 +177,7 @@ def long_functions(root: Path = ROOT, limit: int = LONG) -> list:
                 if isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
                     name = prefix + child.name
                     if not isinstance(child, ast.ClassDef):
-                        n = child.end_lineno - child.lineno + 1 - _docstring_lines(child)
+                        n = child.end_lineno - child.lineno + 1 - _docstring_lines(child) - _nested_lines(child)
                         if n > limit:
                             out.append(Function(rel, name, n))
                     walk(child, name + ".")

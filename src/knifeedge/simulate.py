@@ -481,7 +481,7 @@ def _while_compiling(r: _Run, spec, twin: str, names: tuple, events: np.ndarray,
     n = model.n_state
     probe = (r.t0, r.t1, r.y0, r.y0, r.p, r.rtol, r.atol, 0.0, r.max_step, np.empty(0), True, events, 1, pair,
              False, 1, np.empty(1), np.empty((1, n)), np.empty(1), np.empty(1, dtype=np.int64))
-    pending = compiler.start(model, spec.name, module, compiler.argument_types(module, probe))
+    pending = compiler.start(model, spec.name, module, module.argument_types(probe))
     label = f"{spec.name} for {model.name} ({model.fidelity}{', pose' if model.pose else ''})"
     print(f"knifeedge: compiling {label} in a background process (once: it is then cached in {cache_dir()}); "
           f"meanwhile SciPy's {twin} (same steps) with a Python right-hand side runs", file=sys.stderr, flush=True)
@@ -578,15 +578,21 @@ class _StepCrossings:
 
     Each step is screened with the events' values and rates at its ends
     (``common.screen``, run by Python: nothing to compile); a suspected
-    step is sampled on the dense output, and each bracket refined by
-    ``brentq`` to 4 machine epsilons.  ``found``: ``{name: [times]}``.
+    step is located on the dense output by the kernels' locator
+    (``common.locator``, its ``py_func`` run by Python).  ``found``:
+    ``{name: [times]}``.
     """
 
     def __init__(self, names: tuple, codes: list, fun, event_values, solver, y0: np.ndarray):
         from .integrators import common
 
         self.names, self.codes, self.fun, self.event_values = names, codes, fun, event_values
-        self.samples, self.screen = common.SAMPLES, common.screen.py_func
+        self.screen = common.screen.py_func
+        self.locate = common.locator(event_at=lambda F, y, alt, x, c, p, ev, work: self._at(F(x), c)).py_func
+        self.events = np.array(codes, dtype=np.int64)
+        self.xs, self.gs = np.empty(common.SAMPLES + 3), np.empty(common.SAMPLES + 3)
+        self.ev_t = np.empty(len(codes) * (common.SAMPLES + 2))
+        self.ev_k = np.empty(len(codes) * (common.SAMPLES + 2), dtype=np.int64)
         self.found = {e: [] for e in names}
         self.f_old = self._rate(solver) if codes else None
         # the screen's flags and Hermite extrema, as the kernels keep them
@@ -614,9 +620,8 @@ class _StepCrossings:
                 g[k], s[k] = fun_v[-1 - c], (fun_w[-1 - c] - fun_v[-1 - c]) / 1e-7
         return g, s
 
-    def _at(self, sol, c: int, t: float) -> float:
-        """The value of the event numbered ``c`` at time ``t`` on the dense output ``sol``."""
-        y = sol(t)
+    def _at(self, y, c: int) -> float:
+        """The value of the event numbered ``c`` at the state ``y``."""
         return y[c] if c >= 0 else self.event_values(y)[-1 - c]
 
     def after_step(self, solver):
@@ -629,35 +634,15 @@ class _StepCrossings:
             f_new = self._rate(solver)
             ga, sa = self._values(self.y_prev, self.f_old, h)
             gb, sb = self._values(y, f_new, h)
-            self.screen(ga, gb, sa, sb, self.crit, self.n_crit, self.flag)
-            for k, (e, c) in enumerate(zip(self.names, self.codes)):
-                if not self.flag[k]:
-                    continue
-                sol = sol or solver.dense_output()
-                self._refine(k, e, c, sol, t_old, t, ga[k], gb[k])
+            if self.screen(ga, gb, sa, sb, self.crit, self.n_crit, self.flag):
+                sol = solver.dense_output()
+                n = self.locate(self.events, lambda x: sol(t_old + x * h), None, None, t_old, h, None, None, None,
+                                ga, gb, self.crit, self.n_crit, self.flag, self.xs, self.gs, self.ev_t, self.ev_k, 0)
+                for i in range(n):
+                    self.found[self.names[self.ev_k[i]]].append(float(self.ev_t[i]))
             self.f_old = f_new
         self.y_prev = solver.y.copy()
         return sol
-
-    def _refine(self, k: int, e: str, c: int, sol, t_old: float, t: float, ga: float, gb: float) -> None:
-        """The crossings of event ``e`` (number ``c``, ``k``-th) between ``t_old`` and ``t``: the step sampled on
-        ``sol`` (when the screen flagged two or more), each sign change refined by ``brentq``."""
-        from scipy.optimize import brentq
-
-        eps4 = 4 * np.finfo(float).eps
-        samples, h = self.samples, t - t_old
-        extrema = set(self.crit[k, :self.n_crit[k]].tolist())
-        xs = [0.0] + (sorted({m / samples for m in range(1, samples)} | extrema) if self.flag[k] == 2 else [])
-        gs = [ga] + [self._at(sol, c, t_old + x * h) for x in xs[1:]]
-        xs.append(1.0)
-        gs.append(gb)
-        for m in range(1, len(xs)):
-            fa, fb = gs[m - 1], gs[m]
-            if fa == 0.0 or not (fb == 0.0 or (fa > 0.0) != (fb > 0.0)):
-                continue
-            a, b = t_old + xs[m - 1] * h, (t if m == len(xs) - 1 else t_old + xs[m] * h)
-            self.found[e].append(b if fb == 0.0 else
-                                 brentq(lambda s, c=c: self._at(sol, c, s), a, b, xtol=eps4, rtol=eps4))
 
 
 def _scipy_jacobian(model: Model, p: np.ndarray, inputs=None):
@@ -680,9 +665,9 @@ def _run_scipy(scipy_method: str):
     ``solve_ivp`` does; the zero crossings of the events (states or event
     functions) as in the compiled kernels: each step is screened with the
     event's values and rates at its ends, a suspected step is sampled on the
-    dense output (two or more crossings inside one step included), and each
-    bracket is refined by ``brentq`` to 4 machine epsilons.  A step with a
-    non-finite state ends the run.
+    dense output (two or more crossings inside one step included) by the
+    kernels' locator (``common.locator``).  A step with a non-finite state
+    ends the run.
     """
     def run(r: _Run):
         model, p = r.model, r.p

@@ -1,13 +1,45 @@
-"""Compiled helpers of the kernels that never call a right-hand side.
+"""Event location shared by every path (the kernels of :mod:`.erk` and :mod:`.fixed`, the SciPy hand-over), and
+the kernels' helpers that never call a right-hand side.
 
-They are compiled once per machine and shared by every kernel (numba caches
-them beside this module): the screening and location of zero crossings of
-state components (the method is described in :mod:`.blocks`) and
-the fixed-step kernel's helpers.  The interpolant of a step is ``F`` (rows
-x n) in one Horner scheme: ``v = (v + F[r, i]) * (1 - x if alt[r] else x)``
-from the last row, then ``y[i] + v`` (Hairer's DOP853 form alternates the
-factors; the power series of Dormand--Prince, Tsitouras and cubic Hermite
-has ``x`` throughout).
+The interpolant of a step is ``F`` (rows x n) in one Horner scheme:
+``v = (v + F[r, i]) * (1 - x if alt[r] else x)`` from the last row, then
+``y[i] + v`` (Hairer's DOP853 form alternates the factors; the power series
+of Dormand--Prince, Tsitouras and cubic Hermite has ``x`` throughout).
+
+An event is a state component (``events[k] = c >= 0``) or an event function
+of the model (``events[k] = -1 - j``: ``event_values(s, p)[j]``).  Its zero
+crossings are found in three moves:
+
+1. the ends: its value ``g`` and rate ``h dg/dt`` at both ends of the step
+   (a component's rate is its derivative; an event function's is a forward
+   difference over 1e-7 of the step);
+2. ``screen`` (called only when the bound ``suspect`` leaves doubt: the Hermite
+   cubic differs from the chord by at most x (1 - x) max(|s0 - d|, |s1 - d|) <= dev
+   (d = g1 - g0), so ends of one sign whose smaller magnitude exceeds dev + NEAR
+   times the larger one leave nothing to screen,
+   which for an event far from zero is almost never): a crossing is
+   certain when the signs at the ends differ; a
+   pair of crossings inside the step (same signs at both ends) is suspected
+   when the cubic Hermite interpolant of those four numbers has an extremum
+   inside the step that crosses zero or comes within ``NEAR`` of the larger
+   end value of it;
+3. ``locate``: for a suspected step, the event is sampled on the step's
+   dense output at ``SAMPLES - 1`` equally spaced interior points and the
+   Hermite extrema, and each sign change between neighbouring samples is
+   refined by the Illinois variant of regula falsi (always bracketed, to a
+   few ulps of the step); a plain crossing is refined on the whole step.
+
+A zero at the start of a bracket is not a crossing (it was counted as the
+end of the previous one).  The output: the rows of an accepted step, every
+step or the requested times ``t_eval`` inside it (on the interpolant).
+
+The per-step moves (the events' values at the ends of a step, the
+``suspect`` bound, the output rows) are written out in each kernel's loop:
+as functions, inlined by numba or called, they cost the kernels 1.5-4x per
+evaluation (numba counts the references to every array passed to them, at
+every step).  :func:`alloc` (inlined) makes the events' workspace,
+:func:`function_ends` the ends of a model's event functions for one kernel,
+:func:`locator` the one locator of every event's crossings.
 
 Every helper avoids array slicing and broadcasting assignments: numba
 compiles those with their error-message machinery (string formatting),
@@ -23,12 +55,6 @@ SAMPLES = 8
 NEAR = 0.5
 #: Illinois iterations (it stops at the resolution of x, a few ulps, long before)
 MAX_ITER = 200
-
-
-@njit(cache=True)
-def no_event_values(s, p):
-    """Stand-in ``event_values`` of a model without event functions (never called: no event is negative)."""
-    return np.empty(0)
 
 
 @njit(cache=True, error_model="numpy")
@@ -82,72 +108,105 @@ def interpolate(F, y, alt, x, i):
     return y[i] + v
 
 
-@njit(cache=True, error_model="numpy")
-def locate(events, F, y, alt, t, h, ga, gb, crit, n_crit, flag, xs, gs, ev_t, ev_k, n_ev):
-    """Zero crossings of the flagged state components (``events[k] >= 0``) inside the step from ``t``
-    (length ``h``, interpolant ``F``, ``alt``), appended to ``ev_t``, ``ev_k`` from ``n_ev``; returns the
-    new count.  ``xs``, ``gs`` (SAMPLES + 3): work arrays."""
-    for k in range(events.size):
-        if flag[k] == 0 or events[k] < 0:
-            continue
-        c = events[k]
+def _interpolant_event(values):
+    def event_at(F, y, alt, x, c, p, ev, work):
+        """Event ``c`` (a component, or ``-1 - j``: event function ``j``) of the interpolant at ``x``."""
+        if c >= 0:
+            return interpolate(F, y, alt, x, c)
+        xm = 1.0 - x
+        for i in range(y.size):
+            v = 0.0
+            for r in range(F.shape[0] - 1, -1, -1):
+                v = (v + F[r, i]) * (xm if alt[r] else x)
+            work[i] = y[i] + v
+        return values(work, p, ev)[-1 - c]
+
+    return event_at
 
 
-        # the brackets: xs[0] = 0 < xs[1] < ... < xs[ns - 1] = 1 with the event's values gs
-        xs[0] = 0.0
-        gs[0] = ga[k]
-        ns = 1
-        if flag[k] == 2:
-            for m in range(1, SAMPLES):
-                xs[ns] = m / SAMPLES
+def _no_values(s, p, ev):
+    """Stand-in event functions of a kernel whose model has none (never called: no event is negative)."""
+    return np.empty(0)
+
+
+def locator(values=None, event_at=None):
+    """``locate(...)``, the one zero-crossing locator of every path: the crossings of the flagged events inside
+    the step from ``t`` (length ``h``), the state components' (``events[k] >= 0``) first, then the model's
+    event functions' (``events[k] = -1 - j``), appended to ``ev_t``, ``ev_k`` from ``n_ev``; returns the new
+    count.  ``xs``, ``gs`` (SAMPLES + 3): work arrays.
+
+    ``event_at(F, y, alt, x, c, p, ev, work)``: event ``c`` at ``x`` in [0, 1] of the step; by default on the
+    kernels' interpolant ``F``, ``alt`` about ``y``, event function ``j`` as ``values(s, p, ev)[j]`` (a
+    compiled function; ``None`` for a model without them) at the interpolated state (into ``work``).  The
+    SciPy hand-over passes its own (on SciPy's dense output) and runs ``locate.py_func`` in Python.
+    """
+    if event_at is None:
+        event_at = njit(error_model="numpy")(_interpolant_event(
+            njit(error_model="numpy")(_no_values) if values is None else values))
+
+    def locate(events, F, y, alt, t, h, p, ev, work, ga, gb, crit, n_crit, flag, xs, gs, ev_t, ev_k, n_ev):
+        for functions in range(2):  # the components' rows first, then the event functions'
+            for k in range(events.size):
+                c = events[k]
+                if flag[k] == 0 or (c < 0) != (functions == 1):
+                    continue
+                # the brackets: xs[0] = 0 < xs[1] < ... < xs[ns - 1] = 1 with the event's values gs
+                xs[0] = 0.0
+                gs[0] = ga[k]
+                ns = 1
+                if flag[k] == 2:
+                    for m in range(1, SAMPLES):
+                        xs[ns] = m / SAMPLES
+                        ns += 1
+                    for m in range(n_crit[k]):
+                        xs[ns] = crit[k, m]
+                        ns += 1
+                    for m in range(2, ns):  # insertion sort of the interior points
+                        x = xs[m]
+                        j = m - 1
+                        while j >= 1 and xs[j] > x:
+                            xs[j + 1] = xs[j]
+                            j -= 1
+                        xs[j + 1] = x
+                    for m in range(1, ns):
+                        gs[m] = event_at(F, y, alt, xs[m], c, p, ev, work)
+                xs[ns] = 1.0
+                gs[ns] = gb[k]
                 ns += 1
-            for m in range(n_crit[k]):
-                xs[ns] = crit[k, m]
-                ns += 1
-            for m in range(2, ns):  # insertion sort of the interior points
-                x = xs[m]
-                j = m - 1
-                while j >= 1 and xs[j] > x:
-                    xs[j + 1] = xs[j]
-                    j -= 1
-                xs[j + 1] = x
-            for m in range(1, ns):
-                gs[m] = interpolate(F, y, alt, xs[m], c)
-        xs[ns] = 1.0
-        gs[ns] = gb[k]
-        ns += 1
-        for m in range(1, ns):
-            a, b, fa_, fb_ = xs[m - 1], xs[m], gs[m - 1], gs[m]
-            if b <= a or fa_ == 0.0 or not (fb_ == 0.0 or (fa_ > 0.0) != (fb_ > 0.0)):
-                continue
-            x = b
-            if fb_ != 0.0:
-                # Illinois: regula falsi on the interpolant, the stale end's value halved
-                side = 0
-                for _ in range(MAX_ITER):
-                    x = (a * fb_ - b * fa_) / (fb_ - fa_)
-                    if not (a < x < b):
-                        x = 0.5 * (a + b)
-                    fx = interpolate(F, y, alt, x, c)
-                    if fx == 0.0:
-                        break
-                    if (fx > 0.0) == (fb_ > 0.0):
-                        b, fb_ = x, fx
-                        if side == -1:
-                            fa_ *= 0.5
-                        side = -1
-                    else:
-                        a, fa_ = x, fx
-                        if side == 1:
-                            fb_ *= 0.5
-                        side = 1
-                    if b - a <= 4.0 * _EPS:
-                        break
-            if n_ev < ev_t.size:
-                ev_t[n_ev] = t + x * h
-                ev_k[n_ev] = k
-                n_ev += 1
-    return n_ev
+                for m in range(1, ns):
+                    a, b, fa_, fb_ = xs[m - 1], xs[m], gs[m - 1], gs[m]
+                    if b <= a or fa_ == 0.0 or not (fb_ == 0.0 or (fa_ > 0.0) != (fb_ > 0.0)):
+                        continue
+                    x = b
+                    if fb_ != 0.0:
+                        # Illinois: regula falsi on the interpolant, the stale end's value halved
+                        side = 0
+                        for _ in range(MAX_ITER):
+                            x = (a * fb_ - b * fa_) / (fb_ - fa_)
+                            if not (a < x < b):
+                                x = 0.5 * (a + b)
+                            fx = event_at(F, y, alt, x, c, p, ev, work)
+                            if fx == 0.0:
+                                break
+                            if (fx > 0.0) == (fb_ > 0.0):
+                                b, fb_ = x, fx
+                                if side == -1:
+                                    fa_ *= 0.5
+                                side = -1
+                            else:
+                                a, fa_ = x, fx
+                                if side == 1:
+                                    fb_ *= 0.5
+                                side = 1
+                            if b - a <= 4.0 * _EPS:
+                                break
+                    if n_ev < ev_t.size:
+                        ev_t[n_ev] = t + x * h
+                        ev_k[n_ev] = k
+                        n_ev += 1
+        return n_ev
+
+    return njit(error_model="numpy")(locate)
 
 
 @njit(cache=True, error_model="numpy")
@@ -178,3 +237,49 @@ def compensated_add(y, dy, comp, out):
         s = y[i] + inc
         comp[i] = inc - (s - y[i])
         out[i] = s
+
+
+@njit(inline="always", error_model="numpy")
+def alloc(events):
+    """The event workspace: ``ne, n_fun, ga, gb, sa, sb, crit, n_crit, flag, xs, gs``."""
+    ne = events.size
+    n_fun = 0
+    for k in range(ne):
+        if events[k] < 0:
+            n_fun += 1
+    ga = np.zeros(ne)
+    gb = np.zeros(ne)
+    sa = np.zeros(ne)
+    sb = np.zeros(ne)
+    crit = np.zeros((ne, 2))
+    n_crit = np.zeros(ne, dtype=np.int64)
+    flag = np.zeros(ne, dtype=np.int64)
+    xs = np.empty(SAMPLES + 3)
+    gs = np.empty(SAMPLES + 3)
+    return ne, n_fun, ga, gb, sa, sb, crit, n_crit, flag, xs, gs
+
+
+def function_ends(values):
+    """``function_ends(...)`` for a kernel whose model's event functions are ``values(s, p, ev)`` (a compiled
+    function): their values and rates (times ``h``) at the ends of a step (:func:`locator` finds
+    their crossings, as the components')."""
+
+    def function_ends(events, y, y_new, fa, fb, h, p, ev, work, ga, gb, sa, sb):
+        dt = 1e-7 * h
+        va = values(y, p, ev)
+        vb = values(y_new, p, ev)
+        for i in range(y.size):
+            work[i] = y[i] + dt * fa[i]
+        wa = values(work, p, ev)
+        for i in range(y.size):
+            work[i] = y_new[i] + dt * fb[i]
+        wb = values(work, p, ev)
+        for k in range(events.size):
+            j = -1 - events[k]
+            if j >= 0:
+                ga[k] = va[j]
+                gb[k] = vb[j]
+                sa[k] = (wa[j] - va[j]) / 1e-7
+                sb[k] = (wb[j] - vb[j]) / 1e-7
+
+    return njit(error_model="numpy")(function_ends)

@@ -139,19 +139,9 @@ def _write_lock(lock: Path, pid: int) -> None:
     lock.write_text(f"{pid} {start_time(pid) or '-'}")
 
 
-def argument_types(kernel_module, args: tuple) -> tuple:
-    """numba's types of what ``kernel_module.solve(*args)`` compiles, found without compiling anything."""
-    return kernel_module.argument_types(args)
-
-
-def compile_types(kernel_module, arg_types: tuple) -> None:
-    """Compile (or load from the cache) ``kernel_module``'s code for :func:`argument_types` ``arg_types``."""
-    kernel_module.compile_types(arg_types)
-
-
 def start(model, method: str, kernel_module, arg_types: tuple) -> Pending:
     """Compile the kernel of ``method`` for ``model`` (``kernel_module``) for the argument types ``arg_types``
-    (:func:`argument_types`) in a separate process.
+    (``kernel_module.argument_types(args)``: numba's types of its ``solve(*args)``) in a separate process.
 
     Returns a :class:`Pending`; if another live process is already compiling
     the same kernel (its lock file names it), none is started.
@@ -194,7 +184,7 @@ def _main() -> int:
         module = load_kernel(job["template"], job["variant"], model.module, job["rhs"], model.n_state)
         if Path(module.path) != path:
             raise RuntimeError(f"the kernel of this process is {module.path}, not {path}")
-        compile_types(module, pickle.loads(base64.b64decode(job["types"])))
+        module.compile_types(pickle.loads(base64.b64decode(job["types"])))
         try:  # compiled: nothing to report, so no log is left beside the kernel (before the lock goes)
             if _log(path).stat().st_size == 0:
                 _log(path).unlink()

@@ -27,7 +27,6 @@ import ctypes
 import numpy as np
 from numba import carray, njit, types
 
-from . import blocks as _b
 from . import common as _c
 from . import fnptr as _fnptr
 from . import irparts as _irparts
@@ -123,7 +122,8 @@ def _driver_closure(tableau: str):
     """The integrator of ``tableau`` as a Python closure over its sizes and helpers."""
     (_, _, _, _, _, _, _, N_STAGES, N_EXT, DENSE_ROWS, ALT, ERROR_ORDER) = _tableau.erk_arrays(tableau)
     DENSE_NFEV = N_EXT - N_STAGES - 1  # evaluations of the interpolant beyond the step's (DOP853: 3)
-    function_ends, locate_functions = _b.event_functions(njit(error_model="numpy")(_values_), DENSE_ROWS, ALT)
+    values = njit(error_model="numpy")(_values_)
+    function_ends, locate = _c.function_ends(values), _c.locator(values)
     initial_step, workspace = _initial_step_closure(ERROR_ORDER), _workspace_closure(N_EXT, DENSE_ROWS)
     ERROR_EXPONENT = -1.0 / (ERROR_ORDER + 1)
     EIGHTH = ERROR_ORDER == 7  # err ** (-1/8) as three square roots, cheaper than pow (DOP853)
@@ -144,7 +144,7 @@ def _driver_closure(tableau: str):
         t_eval : (m,) increasing output times in (t0, t1] still ahead (used when not ``every``).
         every : store every accepted step instead of ``t_eval`` (the start is not stored).
         events : (e,) int, whose zero crossings are recorded: a state component ``c >= 0``, or ``-1 - j`` for
-            the model's event function ``j`` (``event_values(s, p)[j]``), see :mod:`.blocks`.
+            the model's event function ``j`` (``event_values(s, p)[j]``), see :mod:`.common`.
         max_steps : accepted steps allowed (the caller subtracts those already taken).
         pair : (n,) int, partner component for ``mode_scaled`` error control (-1: none).
         chunk : accepted steps after which the call returns with status 1 (paused).
@@ -164,7 +164,7 @@ def _driver_closure(tableau: str):
         ms, nq = np.int64(1 if mode_scaled else 0), np.int64(q.size)
         ws, K, y, y_new, work, F = workspace(y0, q)
         fa, fb = K[0], K[N_STAGES]  # the derivatives at the ends of a step (views of the first and last stages)
-        ne, n_fun, ga, gb, sa, sb, crit, n_crit, flag, xs, gs = _b.alloc(events)
+        ne, n_fun, ga, gb, sa, sb, crit, n_crit, flag, xs, gs = _c.alloc(events)
         # counters start as int64, not as the literal 0 (numba would type them twice)
         n_out, ie, n_ev, nfev = np.int64(0), np.int64(0), np.int64(0), np.int64(0)
         t = t0
@@ -178,7 +178,7 @@ def _driver_closure(tableau: str):
             if n_acc >= chunk or (every and n_out == ts.size) or n_ev + ne * (SAMPLES + 2) > ev_t.size:
                 status = 1
                 break
-            # the attempts of a step, the events' screen, their crossings and the output, written out (blocks.py
+            # the attempts of a step, the events' screen, their crossings and the output, written out (common.py
             # says what they do: as calls, inlined or not, they cost the kernels 1.5-4x per evaluation)
             # SciPy's smallest step is 10 ulps of t; nextafter is called only near it (10 ulps <= 10 eps |t|)
             near = 10.0 * _EPS * abs(t) + 1e-300
@@ -227,7 +227,7 @@ def _driver_closure(tableau: str):
                         ga[k], gb[k], sa[k], sb[k] = y[c], y_new[c], h * fa[c], h * fb[c]
                 if n_fun > 0:
                     function_ends(events, y, y_new, fa, fb, h, p, ev, work, ga, gb, sa, sb)
-                suspect = False  # whether the screen may flag any event (the bound of blocks.py)
+                suspect = False  # whether the screen may flag any event (the bound of common.py)
                 for k in range(ne):
                     g0, g1 = ga[k], gb[k]
                     if g0 == 0.0 or g1 == 0.0 or (g0 > 0.0) != (g1 > 0.0):
@@ -243,10 +243,8 @@ def _driver_closure(tableau: str):
                 call_void(dense, (t, h, ws, nq))  # the interpolant of the step: F (DENSE_ROWS x N)
                 nfev += DENSE_NFEV
             if any_flag:
-                n_ev = _c.locate(events, F, y, ALT, t, h, ga, gb, crit, n_crit, flag, xs, gs, ev_t, ev_k, n_ev)
-                if n_fun > 0:
-                    n_ev = locate_functions(events, F, y, t, h, p, ev, work, ga, gb, crit, n_crit, flag, xs, gs, ev_t,
-                                            ev_k, n_ev)
+                n_ev = locate(events, F, y, ALT, t, h, p, ev, work, ga, gb, crit, n_crit, flag, xs, gs, ev_t, ev_k,
+                              n_ev)
             if every:  # the common case: a row per step
                 ts[n_out] = t_new
                 for i in range(N):

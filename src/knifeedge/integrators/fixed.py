@@ -20,7 +20,6 @@ round-off does not accumulate as a random walk over long runs.  Dense output
 import numpy as np
 from numba import njit
 
-from . import blocks as _b
 from . import common as _c
 from .cache import compiled, is_cached
 from .common import NEAR, SAMPLES
@@ -151,7 +150,7 @@ def make_solve(method: str, model_module, rhs_name: str, N: int):
     generated ``model_module`` on ``N`` states (see :func:`_solve_closure` for its arguments)."""
     rhs, constants = getattr(model_module, rhs_name), model_module.constants
     names = tuple(getattr(model_module, "EVENT_NAMES", ()))
-    function_ends = locate_functions = None
+    function_ends, locate = None, _c.locator()
     if names:
         event_values = model_module.event_values
 
@@ -159,9 +158,10 @@ def make_solve(method: str, model_module, rhs_name: str, N: int):
             """The model's event functions at ``s``."""
             return event_values(s, p)
 
-        function_ends, locate_functions = _b.event_functions(njit(**_OPTIONS)(values_), DENSE_ROWS, ALT)
+        values = njit(**_OPTIONS)(values_)
+        function_ends, locate = _c.function_ends(values), _c.locator(values)
     py = _solve_closure(FIXED_METHODS[method], N, rhs, constants, _increments(method, N, rhs), bool(names),
-                        function_ends, locate_functions)
+                        function_ends, locate)
     label = f"fixed-{method}-{model_module.__name__.rsplit('.', 1)[-1]}-{rhs_name}"
     return compiled(py, label)
 
@@ -197,7 +197,7 @@ def _buffers_closure(N: int, S: int):
     return njit(inline="always", **_OPTIONS)(buffers)
 
 
-def _solve_closure(m, N: int, rhs, constants, increments, HAS_FUN, function_ends, locate_functions):
+def _solve_closure(m, N: int, rhs, constants, increments, HAS_FUN, function_ends, locate):
     """The kernel as a Python closure over the method ``m``, the state size, the model's functions."""
     rk4_increment, explicit_increment, gauss_increment, solver_scale = increments
     IMPLICIT, CLASSICAL_RK4, S, EXTRAP = m.implicit, m.is_classical_rk4, m.stages, m.extrapolation
@@ -224,7 +224,7 @@ def _solve_closure(m, N: int, rhs, constants, increments, HAS_FUN, function_ends
             raise ValueError("the initial state does not have the size this kernel was specialized to")
         q = constants(p)
         y, y_new, dy, comp_trial, scale, work, f_old, f_new, K, Znew, F = buffers(y0)
-        ne, n_fun, ga, gb, sa, sb, crit, n_crit, flag, xs, gs = _b.alloc(events)
+        ne, n_fun, ga, gb, sa, sb, crit, n_crit, flag, xs, gs = _c.alloc(events)
         # counters start as int64, not as the literal 0 (numba would compile the callees for both types)
         n_out, ie, n_ev, nfev = np.int64(0), np.int64(0), np.int64(0), np.int64(0)
         t = t0 if first == 0 else t0 + first * h_fixed
@@ -265,7 +265,7 @@ def _solve_closure(m, N: int, rhs, constants, increments, HAS_FUN, function_ends
                 comp[i] = comp_trial[i]
             n_acc += 1
             h = t_new - t  # the step as taken
-            # the events' screen, their crossings and the output, written out (blocks.py says what they do: as
+            # the events' screen, their crossings and the output, written out (common.py says what they do: as
             # calls, inlined or not, they cost the kernels 1.5-4x per evaluation)
             any_flag = False
             if ne > 0:
@@ -276,7 +276,7 @@ def _solve_closure(m, N: int, rhs, constants, increments, HAS_FUN, function_ends
                 if HAS_FUN:
                     if n_fun > 0:
                         function_ends(events, y, y_new, f_old, f_new, h, p, NO_EV, work, ga, gb, sa, sb)
-                suspect = False  # whether the screen may flag any event (the bound of blocks.py)
+                suspect = False  # whether the screen may flag any event (the bound of common.py)
                 for k in range(ne):
                     g0, g1 = ga[k], gb[k]
                     if g0 == 0.0 or g1 == 0.0 or (g0 > 0.0) != (g1 > 0.0):
@@ -291,11 +291,8 @@ def _solve_closure(m, N: int, rhs, constants, increments, HAS_FUN, function_ends
             if any_flag or (ie < t_eval.size and t_eval[ie] < t_new):
                 _c.hermite_coefficients(y, y_new, f_old, f_new, h, F)
             if any_flag:
-                n_ev = _c.locate(events, F, y, ALT, t, h, ga, gb, crit, n_crit, flag, xs, gs, ev_t, ev_k, n_ev)
-                if HAS_FUN:
-                    if n_fun > 0:
-                        n_ev = locate_functions(events, F, y, t, h, p, NO_EV, work, ga, gb, crit, n_crit, flag, xs, gs,
-                                                ev_t, ev_k, n_ev)
+                n_ev = locate(events, F, y, ALT, t, h, p, NO_EV, work, ga, gb, crit, n_crit, flag, xs, gs, ev_t, ev_k,
+                              n_ev)
             if every:  # the common case: a row per step
                 ts[n_out] = t_new
                 for i in range(N):
