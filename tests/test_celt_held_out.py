@@ -193,6 +193,7 @@ def test_full_celt_stability_boundaries_are_routh_hurwitzs():
 
 @pytest.mark.parametrize("steps", [{"h": 0.05}, pytest.param({"rtol": 1e-8}, marks=pytest.mark.slow)],
                          ids=["RK4", "DP54"])  # the step-controlled loop: slow tier (test_lyapunov checks it too)
+@pytest.mark.xdist_group("lyapunov")  # the worker that compiles the Benettin loop for test_lyapunov
 def test_lyapunov_exponents_at_an_asymptotically_stable_steady_spin_are_the_held_out_real_parts(steps):
     """At an asymptotically stable equilibrium of the physical flow every tangent vector ends up in the linearized
     flow's eigenspaces, so the Lyapunov exponents are the real parts of the eigenvalues (each twice for a complex
