@@ -96,7 +96,9 @@ def warm(model: str, fidelity: str, pose: bool, method: str) -> str:
     y0 = {n: 1e-3 for n in m.state_names}
     if m.spin_name is not None:
         y0[m.spin_name] = 0.1
-    simulate(m, y0, (0.0, 0.01), {n: 1.0 for n in m.param_names}, method=method)
+    y0.update({n: v for n, v in m.default_state.items() if n in y0})
+    # the model's own defaults: parameters of 1 describe no rigid body (the celt's inertia, say)
+    simulate(m, y0, (0.0, 0.01), m.params(**m.default_params), method=method)
     return f"{model}/{fidelity}{'+pose' if pose else ''}/{method}"
 
 
