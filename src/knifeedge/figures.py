@@ -71,9 +71,10 @@ def _animation_caption(info) -> str:
 
 
 def _scene_needs(name: str) -> set:
-    """The integrators scene ``name`` uses: ``(model, fidelity, pose, method)`` of each of its runs' models."""
+    """What scene ``name`` needs compiled: ``(model, fidelity, pose, method)`` of each of its runs' models, and
+    ``("lyapunov", model, fidelity)`` of each model whose Lyapunov exponents it computes."""
     scene = get_scene(name)
-    return {(*u, scene.run.method) for u in scene.uses}
+    return {(*u, scene.run.method) for u in scene.uses} | {("lyapunov", *u) for u in scene.lyapunov}
 
 
 def _animation_needs(name: str) -> set:
@@ -100,6 +101,17 @@ def warm(model: str, fidelity: str, pose: bool, method: str) -> str:
     # the model's own defaults: parameters of 1 describe no rigid body (the celt's inertia, say)
     simulate(m, y0, (0.0, 0.01), m.params(**m.default_params), method=method)
     return f"{model}/{fidelity}{'+pose' if pose else ''}/{method}"
+
+
+def warm_lyapunov(model: str, fidelity: str) -> str:
+    """Compile (or load from numba's cache) the Lyapunov loop and the model's Jacobian by a few steps; returns a
+    label."""
+    from .lyapunov import lyapunov
+    from .models import load
+
+    m = load(model, fidelity=fidelity)
+    lyapunov(m, m.state(**m.default_state), m.params(**m.default_params), 0.02, k=1, h=0.01, tau=0.01)
+    return f"Lyapunov loop for {model}/{fidelity}"
 
 
 def warm_parts(model: str, fidelity: str, pose: bool, method: str, drawing: bool = False) -> bool:
@@ -136,7 +148,8 @@ def _schedule(pool, workers: int, order: list, out: Path, report, progress, t0: 
     kernel shares, which later processes then load from the cache), while
     the other processes compile the next models' parts of it (each model's
     own code, which does not need the shared integrator) and the functions
-    that draw the animated bodies; after that at most
+    that draw the animated bodies, and the Lyapunov loop of the scenes that
+    compute exponents (it shares nothing with the integrators); after that at most
     ``workers`` tasks run at once, a scene as soon as all its integrators are
     compiled, otherwise the next compilation, in the order of the first task
     that needs it.
@@ -150,11 +163,15 @@ def _schedule(pool, workers: int, order: list, out: Path, report, progress, t0: 
                    key=lambda k: (min(i for i, t in enumerate(tasks) if k in needs[t]),
                                   -sum(k in v for v in needs.values())))
     drawn = set().union(*(needs[t] for t in tasks if t[0] == "animation"))  # their bodies are drawn too
+    # the Lyapunov loop shares nothing with the integrators: it compiles beside the first one, on a worker
+    # that would otherwise only compile parts
+    loops = [k for k in warms if k[0] == "lyapunov"]
+    warms = [k for k in warms if k[0] != "lyapunov"]
     compiled: set = set()
     parted: set = set()  # integrators whose model parts were compiled, or are, while the first one compiles
     scenes = list(needs)
     running: dict = {}
-    n_warm = len(warms)
+    n_warm = len(warms) + len(loops)
     while scenes or running:
         while len(running) < workers:
             ready = [n for n in scenes if needs[n] <= compiled]
@@ -167,6 +184,9 @@ def _schedule(pool, workers: int, order: list, out: Path, report, progress, t0: 
                 k = next((w for w in warms if w not in busy), warms[0])
                 warms.remove(k)
                 running[pool.submit(warm, *k)] = ("warm", k)
+            elif loops:
+                k = loops.pop(0)
+                running[pool.submit(warm_lyapunov, *k[1:])] = ("warm", k)
             elif not compiled and any(w not in parted for w in warms):
                 k = next(w for w in warms if w not in parted)
                 parted.add(k)

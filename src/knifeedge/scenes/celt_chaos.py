@@ -147,4 +147,5 @@ SCENE = Scene(
     draw=draw,
     settings={"h": 0.0025, "tau": 0.5},
     figsize=(10.0, 4.5),
+    lyapunov=(("celt", "full"),),
 )
