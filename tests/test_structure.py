@@ -18,10 +18,6 @@ LONG_FUNCTIONS_ALLOWED = {
 }
 
 
-#: one worker parses the tree once for every check below (the walk costs 1.5-3 s of CPU)
-pytestmark = pytest.mark.xdist_group("structure")
-
-
 @pytest.fixture(scope="module")
 def graph():
     return structure.graph()
@@ -29,6 +25,7 @@ def graph():
 
 @pytest.fixture(scope="module")
 def long_functions():
+    """The long functions, measured once per worker for the two checks that read them."""
     return {f"{f.path}:{f.name}" for f in structure.long_functions()}
 
 
