@@ -141,6 +141,11 @@ def warm_parts(model: str, fidelity: str, pose: bool, method: str, drawing: bool
     return True
 
 
+def _warm_call(key: tuple) -> tuple:
+    """The function and arguments that compile ``key`` (an integrator, or ``("lyapunov", model, fidelity)``)."""
+    return (warm_lyapunov, *key[1:]) if key[0] == "lyapunov" else (warm, *key)
+
+
 def _schedule(pool, workers: int, order: list, out: Path, report, progress, t0: float) -> None:
     """Run the scenes on ``pool``, compiling each integrator once and first.
 
@@ -163,15 +168,11 @@ def _schedule(pool, workers: int, order: list, out: Path, report, progress, t0: 
                    key=lambda k: (min(i for i, t in enumerate(tasks) if k in needs[t]),
                                   -sum(k in v for v in needs.values())))
     drawn = set().union(*(needs[t] for t in tasks if t[0] == "animation"))  # their bodies are drawn too
-    # the Lyapunov loop shares nothing with the integrators: it compiles beside the first one, on a worker
-    # that would otherwise only compile parts
-    loops = [k for k in warms if k[0] == "lyapunov"]
-    warms = [k for k in warms if k[0] != "lyapunov"]
     compiled: set = set()
     parted: set = set()  # integrators whose model parts were compiled, or are, while the first one compiles
     scenes = list(needs)
     running: dict = {}
-    n_warm = len(warms) + len(loops)
+    n_warm = len(warms)
     while scenes or running:
         while len(running) < workers:
             ready = [n for n in scenes if needs[n] <= compiled]
@@ -181,14 +182,17 @@ def _schedule(pool, workers: int, order: list, out: Path, report, progress, t0: 
                 running[pool.submit(task, ready[0][1], str(out))] = ready[0]
             elif warms and (compiled or not any(kind == "warm" for kind, _ in running.values())):
                 busy = {what for kind, what in running.values() if kind == "parts"}  # not compiled twice at once
-                k = next((w for w in warms if w not in busy), warms[0])
+                # the first compilation is an integrator's (it compiles the helpers the others share)
+                k = next((w for w in warms if w not in busy and (compiled or w[0] != "lyapunov")), warms[0])
                 warms.remove(k)
-                running[pool.submit(warm, *k)] = ("warm", k)
-            elif loops:
-                k = loops.pop(0)
-                running[pool.submit(warm_lyapunov, *k[1:])] = ("warm", k)
-            elif not compiled and any(w not in parted for w in warms):
-                k = next(w for w in warms if w not in parted)
+                running[pool.submit(*_warm_call(k))] = ("warm", k)
+            elif not compiled and any(w[0] == "lyapunov" for w in warms):
+                # the Lyapunov loop shares nothing with the integrators: it compiles beside the first one
+                k = next(w for w in warms if w[0] == "lyapunov")
+                warms.remove(k)
+                running[pool.submit(*_warm_call(k))] = ("warm", k)
+            elif not compiled and any(w not in parted and w[0] != "lyapunov" for w in warms):
+                k = next(w for w in warms if w not in parted and w[0] != "lyapunov")
                 parted.add(k)
                 running[pool.submit(warm_parts, *k, drawing=k in drawn)] = ("parts", k)
             else:
