@@ -12,6 +12,12 @@ it.  The warm runs reuse the caches of the last cold run.  Wall and CPU time
 average before each run is recorded, as the machine may be shared.  Writes
 ``first_run.json``.
 
+``--per-scene`` also times each scene alone (``knifeedge figures --only NAME
+--workers 1``, its animation included), cold but for the DOP853 integrator
+that every scene shares (compiled once per machine, by ``knifeedge demo``
+into a cache that is restored at the same path before each scene: numba's
+cache is keyed by the kernel file's path), then warm.
+
 ``--test-command`` also times the README's test command (the set-up line that
 ends in ``pytest``: a virtual environment, the install, the tests) from a fresh
 clone of this repository's committed ``HEAD``, with empty caches, ``--repeats``
@@ -78,6 +84,27 @@ def measure(command: list, repeats: int, work: Path) -> dict:
             "cold_over_warm_wall": round(med(cold, "wall_s") / med(warm, "wall_s"), 2)}
 
 
+def measure_per_scene(work: Path) -> dict:
+    """Each scene alone, cold but for the shared DOP853 integrator, then warm (one run each)."""
+    import shutil
+
+    from knifeedge.scenes import SCENE_NAMES
+
+    exe = str(Path(sys.executable).parent / "knifeedge")
+    base, saved = work / "scene-cache", work / "scene-cache-with-driver"
+    env = dict(_cold_env(base), KNIFEEDGE_COMPILE="wait")
+    _run([exe, "demo", "--out", str(work / "demo.png")], env, work)
+    shutil.copytree(base, saved, symlinks=True)
+    rows = {}
+    for name in SCENE_NAMES:
+        shutil.rmtree(base)
+        shutil.copytree(saved, base, symlinks=True)  # copytree keeps the files' times: numba's cache holds
+        command = [exe, "figures", "--only", name, "--workers", "1", "--out", str(work / "scene-out")]
+        rows[name] = {"cold": _run(command, env, work), "warm": _run(command, env, work)}
+        print(f"  {name}: {rows[name]}", flush=True)
+    return rows
+
+
 ROOT = Path(__file__).resolve().parents[1]
 
 
@@ -111,6 +138,8 @@ def main(argv=None) -> int:
     ap.add_argument("--out", type=Path, default=Path(__file__).resolve().parent / "results")
     ap.add_argument("--repeats", type=int, default=3)
     ap.add_argument("--skip-figures", action="store_true")
+    ap.add_argument("--per-scene", action="store_true",
+                    help="also time each scene alone, cold but for the shared DOP853 integrator")
     ap.add_argument("--test-command", action="store_true",
                     help="also time the README's test command from a fresh clone (minutes per repeat)")
     args = ap.parse_args(argv)
@@ -122,6 +151,9 @@ def main(argv=None) -> int:
         if not args.skip_figures:
             print("knifeedge figures", flush=True)
             results["figures"] = measure(["figures", "--out", str(work / "figures")], args.repeats, work)
+        if args.per_scene:
+            print("each scene alone", flush=True)
+            results["per_scene"] = measure_per_scene(work)
         if args.test_command:
             print("the README's test command", flush=True)
             results["test_command"] = measure_test_command(args.repeats, work)

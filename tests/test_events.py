@@ -85,7 +85,7 @@ def test_two_crossings_of_a_state_inside_one_step(method, h):
     assert np.all(k == 0)
 
 
-@pytest.mark.parametrize("method", ["DOP853", "DP54"])
+@pytest.mark.parametrize("method", ["DOP853", pytest.param("DP54", marks=pytest.mark.slow)])  # DP54: slow tier
 @pytest.mark.xdist_group("dp54_tsit5")  # one worker compiles the DP54 and Tsit5 integrators for all such tests
 def test_two_crossings_of_an_event_function_inside_one_step(method):
     """The stub's event function q^2 - c with c = 0.99999 vanishes at W t = k pi -+ 0.0032: pairs 0.0032 apart

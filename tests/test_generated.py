@@ -108,6 +108,7 @@ def test_runtime_does_not_import_sympy():
     subprocess.run([sys.executable, "-c", code], check=True, cwd=ROOT / "tests")
 
 
+@pytest.mark.slow  # builds the wheel in a subprocess (~5 s of CPU): the packaging, not the physics
 def test_wheel_ships_the_generated_modules(tmp_path):
     """A non-editable install gets knifeedge.generated from the wheel."""
     subprocess.run([sys.executable, "-m", "pip", "wheel", "--no-deps", "-q",

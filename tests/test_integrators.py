@@ -60,7 +60,10 @@ def test_gauss_tableaus_satisfy_collocation_conditions(s):
 
 
 # -- the compiled adaptive methods are SciPy's algorithms ------------------------
-@pytest.mark.parametrize("ours,theirs", [("DOP853", "scipy:DOP853"), ("DP54", "scipy:RK45"), ("RK45", "scipy:RK45")])
+# DP54 (and RK45, its name in SciPy) in the slow tier, as every method beyond DOP853/RK4 of a parametrized check
+@pytest.mark.parametrize("ours,theirs", [("DOP853", "scipy:DOP853"),
+                                         *(pytest.param(a, b, marks=pytest.mark.slow)
+                                           for a, b in [("DP54", "scipy:RK45"), ("RK45", "scipy:RK45")])])
 @pytest.mark.xdist_group("dp54_tsit5")  # one worker compiles the DP54 and Tsit5 integrators for all such tests
 def test_adaptive_methods_take_scipys_steps(ours, theirs):
     """Same tableau, initial step and controller: the same steps and evaluations, and the same answer up to
@@ -138,6 +141,7 @@ def test_fixed_step_order(method, h, order):
     assert 2 ** order * 0.85 < e1 / e2 < 2 ** order * 1.2, (e1, e2)
 
 
+@pytest.mark.xdist_group("gauss6_two_mode")  # one worker compiles gauss6 on the full two-mode model for these checks
 def test_gauss_energy_has_no_drift_where_rk4_drifts():
     """Energy is conserved by the knife edge (ideal constraints do no work).  A symmetric method on a
     reversible system keeps the energy error bounded (Hairer-Lubich-Wanner GNI, Ch. XI); RK4 at the
@@ -198,6 +202,7 @@ def test_later_reversals_need_the_small_mode_kept_accurate():
     np.testing.assert_allclose(capped.reversal_times, scipy.reversal_times, rtol=1e-3)
 
 
+@pytest.mark.xdist_group("gauss6_two_mode")  # one worker compiles gauss6 on the full two-mode model for these checks
 def test_later_reversals_are_fixed_by_double_precision_to_well_inside_1e_3():
     """How well can the later reversals be known at all?  Moving the initial state by a relative 1e-12
     moves the first reversal by ~1e-12 but the later ones by ~1e-6 (round-off sets them at that

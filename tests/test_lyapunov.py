@@ -19,6 +19,9 @@ import knifeedge as ke
 
 st = importlib.import_module("knifeedge.stability")
 
+#: one worker compiles the Benettin loop (its first compile, ~8 s of CPU cold) for every check of the default tier
+pytestmark = pytest.mark.xdist_group("lyapunov")
+
 
 def test_sum_of_exponents_is_the_time_averaged_divergence():
     m = ke.load("two_mode")
@@ -45,6 +48,7 @@ def test_exponents_do_not_depend_on_the_renormalization_interval():
     assert a.history.shape == (400, 5) and b.history.shape == (80, 5)
 
 
+@pytest.mark.slow  # compiles the step-controlled loop (~7 s of CPU cold); its refusals: test_bad_arguments_are_named
 def test_step_control_gives_the_fixed_steps_exponents():
     """Dormand-Prince 5(4) with the state's error controlled (``rtol``) and RK4 with a fine fixed step are two
     discretizations of the same variational equations: their exponents agree to the integration error, and the
@@ -110,6 +114,10 @@ def test_bad_arguments_are_named():
         ke.lyapunov(m, y0, p, 1.0, h=0.1, tau=0.01)
     with pytest.raises(ValueError, match="`t_end`"):
         ke.lyapunov(m, y0, p, -1.0)
+    with pytest.raises(ValueError, match="`atol`"):  # the step-controlled loop's arguments, before it compiles
+        ke.lyapunov(m, y0, p, 1.0, h=0.01, atol=1e-9)
+    with pytest.raises(ValueError, match="`rtol`"):
+        ke.lyapunov(m, y0, p, 1.0, rtol=-1.0)
 
 
 @pytest.mark.slow

@@ -284,6 +284,7 @@ def _load_example(name):
     return mod
 
 
+@pytest.mark.slow  # a second symbolic derivation of the disk (~4 s of CPU); test_multibody builds bodies in the default tier
 def test_rolling_disk_rebuilt_with_the_front_end_gives_the_same_equations():
     """examples/rolling_disk.py (Lagrangian in heading, lean, spin; sympy issue #27631) against the disk
     built by the front end from its mass, inertia and shape (examples/rolling_disk_rigid.py).
@@ -444,6 +445,8 @@ def test_celt_amplitude_growth_rates_are_the_linear_stability_of_the_reduced_mod
         np.testing.assert_allclose(got, want, rtol=1e-3)
 
 
+@pytest.mark.slow  # the celt derived and averaged symbolically (~7 s of CPU); the averaged growth rates
+# against the reduced model's linearization stay in the default tier (test above)
 def test_celt_averaged_equations_take_the_moffatt_tokieda_form_without_damping_at_small_spin():
     """Moffatt & Tokieda (2008), P' = lambda n P, R' = -mu n R, n' = mu R^2 - lambda P^2: the derived averaged
     equations (sigma = 0) have growth rates exactly linear in the spin, and at zero spin the coefficients of

@@ -556,6 +556,8 @@ def test_runs_lost_by_the_executor_are_retried_then_left_without_result(tmp_path
     _same(resumed, quick_table)
 
 
+# a `knifeedge sweep` process with two workers, killed, then run again (~4 s of CPU): slow tier
+@pytest.mark.slow
 def test_killing_the_parent_ends_its_workers_and_loses_no_committed_run(tmp_path):
     psutil = pytest.importorskip("psutil")
     out = tmp_path / "runs.sqlite"
@@ -684,6 +686,8 @@ def test_local_workers_are_forked_with_the_kernel_loaded():
     assert r.returncode == 0, r.stderr
 
 
+# a `knifeedge sweep` process with two workers, interrupted, then run again (~4 s of CPU): slow tier
+@pytest.mark.slow
 def test_ctrl_c_on_the_command_line_keeps_finished_runs(tmp_path):
     """A real SIGINT to `knifeedge sweep` on local workers: finished rows stay, the rerun computes only the rest."""
     out = tmp_path / "runs.csv"

@@ -105,6 +105,7 @@ def test_adaptive_methods_converge_at_their_order(method, order):
     assert 0.7 * order < slope < 1.3 * order + 1, (slope, errs, work)
 
 
+@pytest.mark.slow  # compiles the Tsit5 and DP54 integrators (~7 s each cold); the order conditions above stay
 @pytest.mark.xdist_group("dp54_tsit5")  # one worker compiles the DP54 and Tsit5 integrators for all such tests
 def test_tsit5_on_the_paper_scene_matches_dop853():
     """Fig. 'numerical': the spin reversal at t = 106.361 and the final state, Tsit5 against DOP853 (an

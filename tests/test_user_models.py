@@ -187,6 +187,7 @@ def test_reduced_fidelity_outside_its_domain_warns_and_says_so():
     assert full.in_validity_domain
 
 
+@pytest.mark.slow  # two derivations in subprocesses (~4 s of CPU), as `make check-generated` runs them
 def test_check_reports_a_hand_edit_and_never_overwrites_it(derived, tmp_path):
     """Issue 11 item 5: `make check-generated` (python -m knifeedge.derive --check) derives into a temporary
     folder and compares; a hand edit of the checked-in folder is reported and left in place."""

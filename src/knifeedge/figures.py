@@ -71,9 +71,10 @@ def _animation_caption(info) -> str:
 
 
 def _scene_needs(name: str) -> set:
-    """The integrators scene ``name`` uses: ``(model, fidelity, pose, method)`` of each of its runs' models."""
+    """What scene ``name`` needs compiled: ``(model, fidelity, pose, method)`` of each of its runs' models, and
+    ``("lyapunov", model, fidelity)`` of each model whose Lyapunov exponents it computes."""
     scene = get_scene(name)
-    return {(*u, scene.run.method) for u in scene.uses}
+    return {(*u, scene.run.method) for u in scene.uses} | {("lyapunov", *u) for u in scene.lyapunov}
 
 
 def _animation_needs(name: str) -> set:
@@ -96,8 +97,21 @@ def warm(model: str, fidelity: str, pose: bool, method: str) -> str:
     y0 = {n: 1e-3 for n in m.state_names}
     if m.spin_name is not None:
         y0[m.spin_name] = 0.1
-    simulate(m, y0, (0.0, 0.01), {n: 1.0 for n in m.param_names}, method=method)
+    y0.update({n: v for n, v in m.default_state.items() if n in y0})
+    # the model's own defaults: parameters of 1 describe no rigid body (the celt's inertia, say)
+    simulate(m, y0, (0.0, 0.01), m.params(**m.default_params), method=method)
     return f"{model}/{fidelity}{'+pose' if pose else ''}/{method}"
+
+
+def warm_lyapunov(model: str, fidelity: str) -> str:
+    """Compile (or load from numba's cache) the Lyapunov loop and the model's Jacobian by a few steps; returns a
+    label."""
+    from .lyapunov import lyapunov
+    from .models import load
+
+    m = load(model, fidelity=fidelity)
+    lyapunov(m, m.state(**m.default_state), m.params(**m.default_params), 0.02, k=1, h=0.01, tau=0.01)
+    return f"Lyapunov loop for {model}/{fidelity}"
 
 
 def warm_parts(model: str, fidelity: str, pose: bool, method: str, drawing: bool = False) -> bool:
@@ -127,6 +141,11 @@ def warm_parts(model: str, fidelity: str, pose: bool, method: str, drawing: bool
     return True
 
 
+def _warm_call(key: tuple) -> tuple:
+    """The function and arguments that compile ``key`` (an integrator, or ``("lyapunov", model, fidelity)``)."""
+    return (warm_lyapunov, *key[1:]) if key[0] == "lyapunov" else (warm, *key)
+
+
 def _schedule(pool, workers: int, order: list, out: Path, report, progress, t0: float) -> None:
     """Run the scenes on ``pool``, compiling each integrator once and first.
 
@@ -134,7 +153,8 @@ def _schedule(pool, workers: int, order: list, out: Path, report, progress, t0: 
     kernel shares, which later processes then load from the cache), while
     the other processes compile the next models' parts of it (each model's
     own code, which does not need the shared integrator) and the functions
-    that draw the animated bodies; after that at most
+    that draw the animated bodies, and the Lyapunov loop of the scenes that
+    compute exponents (it shares nothing with the integrators); after that at most
     ``workers`` tasks run at once, a scene as soon as all its integrators are
     compiled, otherwise the next compilation, in the order of the first task
     that needs it.
@@ -162,11 +182,17 @@ def _schedule(pool, workers: int, order: list, out: Path, report, progress, t0: 
                 running[pool.submit(task, ready[0][1], str(out))] = ready[0]
             elif warms and (compiled or not any(kind == "warm" for kind, _ in running.values())):
                 busy = {what for kind, what in running.values() if kind == "parts"}  # not compiled twice at once
-                k = next((w for w in warms if w not in busy), warms[0])
+                # the first compilation is an integrator's (it compiles the helpers the others share)
+                k = next((w for w in warms if w not in busy and (compiled or w[0] != "lyapunov")), warms[0])
                 warms.remove(k)
-                running[pool.submit(warm, *k)] = ("warm", k)
-            elif not compiled and any(w not in parted for w in warms):
-                k = next(w for w in warms if w not in parted)
+                running[pool.submit(*_warm_call(k))] = ("warm", k)
+            elif not compiled and any(w[0] == "lyapunov" for w in warms):
+                # the Lyapunov loop shares nothing with the integrators: it compiles beside the first one
+                k = next(w for w in warms if w[0] == "lyapunov")
+                warms.remove(k)
+                running[pool.submit(*_warm_call(k))] = ("warm", k)
+            elif not compiled and any(w not in parted and w[0] != "lyapunov" for w in warms):
+                k = next(w for w in warms if w not in parted and w[0] != "lyapunov")
                 parted.add(k)
                 running[pool.submit(warm_parts, *k, drawing=k in drawn)] = ("parts", k)
             else:

@@ -109,8 +109,12 @@ class Scene:
     compute : ``compute(scene, progress) -> SceneResult``.
     draw : ``draw(result, fig)``.
     settings : scene-specific knobs (scan values, comparison tolerances).
-    uses : every ``(model, fidelity, pose)`` the scene integrates (default:
-        the main run's only).
+    uses : every ``(model, fidelity, pose)`` the scene integrates (default,
+        ``None``: the main run's only; ``()``: none, the scene integrates
+        nothing).
+    lyapunov : every ``(model, fidelity)`` whose Lyapunov exponents the scene
+        computes (``knifeedge figures`` compiles the variational loop once,
+        before the scenes that need it).
     """
 
     name: str
@@ -124,11 +128,13 @@ class Scene:
     draw: Callable = field(repr=False)
     settings: Mapping[str, Any] = field(default_factory=dict)
     figsize: tuple[float, float] = (7.5, 5.5)
-    uses: tuple = ()
+    uses: tuple | None = None
+    lyapunov: tuple = ()
 
     def __post_init__(self):
-        if not self.uses and self.run is not None:
-            object.__setattr__(self, "uses", ((self.run.model, self.run.fidelity, self.run.pose),))
+        if self.uses is None:
+            uses = () if self.run is None else ((self.run.model, self.run.fidelity, self.run.pose),)
+            object.__setattr__(self, "uses", uses)
 
     def with_(self, **changes: Any) -> "Scene":
         """A copy whose main run has some values changed (see :meth:`RunSpec.with_`)."""

@@ -135,4 +135,5 @@ SCENE = Scene(
     settings={"sigma": {"kl": 1e-4, "schoemer": 5e-3}, "spin_range": (-5.0, 5.0), "n_spins": 201, "boundary_interval": (-100.0, 100.0),
               "slope_spin": 1e-4, "slope_rtol": 1e-6},
     figsize=(7.5, 7.0),
+    uses=(),  # it integrates nothing: no integrator is compiled for it
 )

@@ -167,4 +167,5 @@ SCENE = Scene(
     draw=draw,
     settings={"h": 0.1, "tau": 1.0, "lyapunov_span": 9e4, "tolerance": 1e-6, "probe": ("theta1", 1e-8)},
     figsize=(7.5, 6.0),
+    lyapunov=(("two_mode", "reduced"),),
 )
