@@ -1,5 +1,6 @@
-"""``knifeedge figures`` compiles what the scenes need once: the Lyapunov loop beside the first integrator, and no
-integrator for a scene that integrates nothing (issue 25 item 4: ``knifeedge figures`` cold)."""
+"""``knifeedge figures`` compiles what the scenes need once: the first integrator alone among the integrators with
+the next models' parts beside it, the Lyapunov loop beside the first integrator, and no integrator for a scene that
+integrates nothing (issue 25 item 4: ``knifeedge figures`` cold)."""
 import concurrent.futures as cf
 import threading
 import time
@@ -17,7 +18,7 @@ def _scheduled(monkeypatch, tmp_path, order):
 
     def warm(*key):
         record("warm start", key)
-        time.sleep(0.3 if not any(e[1] == "warm end" for e in log) else 0.01)  # the first: long
+        time.sleep(0.5 if not any(e[1] == "warm end" for e in log) else 0.01)  # the first: long against the parts
         record("warm end", key)
         return "/".join(map(str, key))
 
@@ -32,7 +33,7 @@ def _scheduled(monkeypatch, tmp_path, order):
 
     monkeypatch.setattr(figures, "warm", warm)
     monkeypatch.setattr(figures, "warm_lyapunov", warm_lyapunov)
-    monkeypatch.setattr(figures, "warm_parts", lambda *key, drawing=False: record("parts", key) or True)
+    monkeypatch.setattr(figures, "warm_parts", lambda *key, drawing=False: record("parts", key, drawing) or True)
     monkeypatch.setattr(figures, "render_scene", scene("scene"))
     monkeypatch.setattr(figures, "render_animation", scene("animation"))
     with cf.ThreadPoolExecutor(max_workers=2) as pool:
@@ -60,3 +61,26 @@ def test_a_scene_that_integrates_nothing_compiles_no_integrator(monkeypatch, tmp
     assert figures._scene_needs("celt_stability") == set()
     log = _scheduled(monkeypatch, tmp_path, ["celt_stability"])
     assert [e[1:] for e in log] == [("scene", "celt_stability")]
+
+
+def test_figures_compile_other_models_parts_while_the_first_integrator_compiles(monkeypatch, tmp_path):
+    """The first integrator compiles alone among the integrators, the other worker compiles the next models' own
+    parts meanwhile (never the first's; with the drawing functions of the animated ones), each integrator is
+    compiled once, and a scene starts only when every integrator it uses is compiled."""
+    order = ["numerical2", "knife_edge_rigid", "model_fidelity", "celt", "numerical"]
+    log = _scheduled(monkeypatch, tmp_path, order)
+    warmed = [e[2] for e in log if e[1] == "warm start"]
+    assert len(warmed) == len(set(warmed)) >= 4
+    first_end = min(e[0] for e in log if e[1] == "warm end")
+    parts = [e for e in log if e[1] == "parts"]
+    assert parts and all(e[0] < first_end and e[2] != warmed[0] for e in parts)
+    # the bodies of the animated scenes' models are drawn: their drawing functions are compiled with the parts
+    drawn = set().union(*(figures._animation_needs(n) for n in order))
+    assert all(e[3] == (e[2] in drawn) for e in parts) and any(e[3] for e in parts)
+    assert not [e for e in log if e[1] == "warm start" and e[0] < first_end and e[2] != warmed[0]]
+    tasks = [("scene", n, figures._scene_needs(n)) for n in order]
+    tasks += [("animation", n, figures._animation_needs(n)) for n in order if n in figures.ANIMATIONS]
+    for kind, n, needs in tasks:
+        start = min(e[0] for e in log if e[1] == kind and e[2] == n)
+        for key in needs:
+            assert max(e[0] for e in log if e[1] == "warm end" and e[2] == key) < start, (kind, n, key)
