@@ -8,12 +8,14 @@ user could write to it; the background compiler's locks name their process by
 pid and start time; a full disk is said as such.
 """
 import errno
+import inspect
 import os
 import struct
 import subprocess
 import sys
 import types
 
+import numpy as np
 import pytest
 
 from knifeedge import _process
@@ -237,3 +239,36 @@ def test_cached_compiled_code_is_checked_before_it_runs_under_a_group_umask(tmp_
         assert irparts.read_parts(path) == _blobs()
     finally:
         os.umask(old)
+
+
+@pytest.mark.slow
+def test_a_kernel_loaded_from_the_cache_keeps_its_own_closures(tmp_path):
+    """The DP54 and DOP853 integrators are closures of one factory; each holds a compiled initial-step closure
+    of its own error order.  A DP54 integrator compiled in one process and loaded from the cache in another
+    that compiled DOP853's first must still take DP54's first step: the step of SciPy's select_initial_step
+    at order 4 (DOP853's at order 7), the rule the kernels follow (Hairer, Norsett & Wanner I, Sect. II.4)."""
+    from scipy.integrate._ivp.common import select_initial_step
+
+    code = ("import sys, json; sys.path.insert(0, {tests!r}); import numpy as np; import test_events as te\n"
+            "print(json.dumps({{m: te._run(m, np.array([1.0, 0.0, 0.4999]), np.array([te.W, 0.0]), 10.0, [2],"
+            " atol=1e-9)[0][1] for m in sys.argv[1:]}}))").format(tests=os.path.dirname(__file__))
+    env = dict(os.environ, KNIFEEDGE_CACHE_DIR=str(tmp_path / "cache"))
+
+    def first_steps(*methods):
+        out = subprocess.run([sys.executable, "-c", code, *methods], env=env, capture_output=True, text=True,
+                             check=True)
+        return __import__("json").loads(out.stdout.splitlines()[-1])
+
+    first_steps("DP54")  # compiled and cached in this process
+    got = first_steps("DOP853", "DP54")  # DOP853 compiled here, DP54 loaded from the cache after it
+
+    def f(t, y):
+        return np.array([y[1], -4.0 * y[0], -y[0]])
+
+    y0 = np.array([1.0, 0.0, 0.4999])
+    for method, order in (("DP54", 4), ("DOP853", 7)):
+        args = (f, 0.0, y0, 10.0, np.inf, f(0.0, y0), 1, order, 1e-10, np.full(3, 1e-9))
+        if "t_bound" not in inspect.signature(select_initial_step).parameters:  # SciPy before 1.12
+            args = args[:3] + args[5:]
+        want = select_initial_step(*args)
+        assert got[method] == pytest.approx(want, rel=1e-12), method

@@ -128,7 +128,8 @@ def _file_sha256(path) -> str:
 def stamp(py_func) -> str:
     """A hash of everything the machine code of the closure ``py_func`` depends on: its cells (:func:`_named`),
     the sources of the integrators (the code of the closures and of the helpers they call), numba, llvmlite
-    and Python."""
+    and Python.  The compiled closures in its cells are first given names of their own (:func:`_distinct_names`)."""
+    _distinct_names(py_func)
     return digest(_closure_named(py_func))
 
 
@@ -189,6 +190,25 @@ class KernelCache(FunctionCache):
 
     def index_path(self) -> Path:
         return Path(self._cache_file._index_path)
+
+
+def _distinct_names(py_func) -> None:
+    """Give every compiled closure in the cells of ``py_func`` (and in theirs) a name that stands for its cells.
+
+    numba names a compiled function's machine code after its module, its name and a per-process counter, and
+    links code of the same name only once per process.  Two closures of one factory (the initial step of DP54
+    and of DOP853) share a name; a kernel loaded from the cache, compiled in another process, could then call
+    the closure this process compiled under the same name and counter instead of its own.  Named after their
+    code and cells, closures share a name only when they are the same function."""
+    for cell in py_func.__closure__ or ():
+        contents = cell.cell_contents
+        for value in contents if isinstance(contents, tuple) else (contents,):
+            f = getattr(value, "py_func", None)
+            if f is None or not f.__closure__ or getattr(f, "__knifeedge_named__", False):
+                continue
+            _distinct_names(f)
+            f.__qualname__ = f"{f.__qualname__}_{digest(_closure_named(f))[:12]}"
+            f.__knifeedge_named__ = True
 
 
 def compiled(py_func, label: str, **options):
