@@ -235,9 +235,10 @@ def hoist_parameters(exprs, params):
     (a deterministic preorder walk of SymPy's canonical argument order) and
     the rewritten expressions.  Evaluating the constants once per
     integration and the rewritten expressions at every step gives the same
-    values, computed with fewer operations per step.
+    values, computed with fewer operations per step.  Symbols whose
+    ``hoistable`` is false (an input's slots) are never hoisted.
     """
-    params = set(params)
+    params = {x for x in params if getattr(x, "hoistable", True)}  # an input's slots vary in a run (input_slots)
     memo: dict = {}
 
     def const_symbol(e):

@@ -37,10 +37,14 @@ class Slot(sp.Symbol):
     """A parameter slot of the inputs: printed as the name it has (like a user's name), never equal to one.
 
     Named ``Symbol`` for SymPy's canonical order (as :class:`.names.Own`).  The spec's contract refuses
-    a user's name equal to a slot's (:func:`slot_names`).
+    a user's name equal to a slot's (:func:`slot_names`).  Never hoisted into ``constants(p)``
+    (:func:`.codegen.hoist_parameters`): ``q = constants(p)`` holds each slot as ``p`` does and no expression
+    of one, so a compiled run can write an input's value at every evaluation into ``q``'s slots (a function
+    of the time, ``knifeedge/inputs.py``).
     """
 
     __slots__ = ()
+    hoistable = False
 
 
 Slot.__name__ = Slot.__qualname__ = "Symbol"

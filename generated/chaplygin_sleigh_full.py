@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/sleigh.py (model 'chaplygin_sleigh',
 constraints knife_edge) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:35636a01d5778681e1aa469146c16c98004fb92654d49c310b7de619a17f4169
+SymPy 1.14.0; input hash sha256:042ab04c0c52db2cbb2629c1322cb6be3267146189fe3ea358e62ce496080abd
 
 Chaplygin sleigh: a rigid body on the plane with a knife edge at its rear contact point (x, y) that forbids sideways motion; heading phi, centre of mass at distance a ahead of the contact, radius of gyration k about the centre of mass; v is the speed along the axis.
 
@@ -60,7 +60,7 @@ MULTIPLIER_NAMES = ('knife_edge',)
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '35636a01d5778681e1aa469146c16c98004fb92654d49c310b7de619a17f4169'
+INPUT_HASH = '042ab04c0c52db2cbb2629c1322cb6be3267146189fe3ea358e62ce496080abd'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -450,4 +450,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 2
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '5c681f28726109d76af9b380559bd9d68d7edf623435686e8fa3cad64160d5d0'
+MODULE_SHA256 = '18948fb2a57f9b3e5ff8029b618aaf059b60c84f16773289d5f7c516ec300f0f'

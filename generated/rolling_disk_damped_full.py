@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk_damped',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:f7348a35ac190543dcf9b7c74f0127b3fc8fbd044bee13e263f6e6c6c27321f8
+SymPy 1.14.0; input hash sha256:751baed59521af782e41069125b5af9c58e86d3e34d3d4c7e7d9a6a6bcf3040a
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table, its rotation resisted by a viscous torque -c r^2 omega per unit mass (Rayleigh function c r^2 |omega|^2/2).
 
@@ -64,7 +64,7 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = True
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'f7348a35ac190543dcf9b7c74f0127b3fc8fbd044bee13e263f6e6c6c27321f8'
+INPUT_HASH = '751baed59521af782e41069125b5af9c58e86d3e34d3d4c7e7d9a6a6bcf3040a'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -1792,4 +1792,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 3
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '2a4de3c9531a626217cdfedb89a144a031daf7bbe4ac1f1629bed1049d784a12'
+MODULE_SHA256 = '952fb461cd48807477dc5e9a4aa1eb57441b715b2e7643acad7e1e132362c93f'

@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:86e693a79398c48c6aef7075957e3c6671c119d5edce444315f8a2a4e0c5e237
+SymPy 1.14.0; input hash sha256:d3720d842231207b7b606469974170a9c2babd0e2f05632d4e5321ecf2aa0482
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table: heading q1, lean q2 from the vertical, rotation q3 about the axle, contact point (x, y).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '86e693a79398c48c6aef7075957e3c6671c119d5edce444315f8a2a4e0c5e237'
+INPUT_HASH = 'd3720d842231207b7b606469974170a9c2babd0e2f05632d4e5321ecf2aa0482'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -1320,4 +1320,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 2
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '703ccabc69504f4b774f7ec63a197e672b41ddeed99ef4adfd59b7bc1c85c380'
+MODULE_SHA256 = '391629958dfe2471e566a28dd07f51835f18b5655edb5f264c3c4797e8dced4d'

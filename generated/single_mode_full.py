@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:a53c42c1b1b7088aac6439ddba7406ba021ab0b5b19e6042ee2b6c95a2e4b5f5
+SymPy 1.14.0; input hash sha256:c27beddb35fce4fa8d4482618706a0dcc50132c3432e8a81e764b5db63e63bd7
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'a53c42c1b1b7088aac6439ddba7406ba021ab0b5b19e6042ee2b6c95a2e4b5f5'
+INPUT_HASH = 'c27beddb35fce4fa8d4482618706a0dcc50132c3432e8a81e764b5db63e63bd7'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -633,4 +633,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 4
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '0355f2df11d6edaab278e02bdff3e068b97f854efe7bcfe5844d4157d9764e01'
+MODULE_SHA256 = '6423b74a238b4bcbde06dbbcb014ad506645d10836b3ae5d9ab532957428a5c3'

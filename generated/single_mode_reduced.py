@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py and derivation/truncation.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:10a83bc2930f841ba5bc72865a00e52e29bf205e313c1d32ff03efa1dcda83a9
+SymPy 1.14.0; input hash sha256:3357c4ccedc285f06ce82de1d3e2a0e09689f98ea6d5ae78bbbb5717b756a1c7
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '10a83bc2930f841ba5bc72865a00e52e29bf205e313c1d32ff03efa1dcda83a9'
+INPUT_HASH = '3357c4ccedc285f06ce82de1d3e2a0e09689f98ea6d5ae78bbbb5717b756a1c7'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -587,4 +587,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 4
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '9b8755ffa7d437cf7bd8c22be957f321b2957b241f8b4ceb83a2026eb97e7c54'
+MODULE_SHA256 = 'e38764ca51b7e6d7735bb79af403277ca7c78c30a2d3e7aec7e0b6f52e8466bd'

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode')
 through derivation/engine.py, derivation/truncation.py and derivation/averaging.py.
-SymPy 1.14.0; input hash sha256:de42e46130fdfb102e90fdfc5651c40280604968915fc950bced3559c73b7566
+SymPy 1.14.0; input hash sha256:432a73025822542cf2520602ff2829b185504132a28c5984ab1ef54d3940bb3d
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -71,7 +71,7 @@ HAS_DISSIPATION = False
 EXPORTS = ()
 #: conserved quantities returned by ``invariants`` (``energy`` is the averaged energy per unit mass)
 INVARIANT_NAMES = ('energy', 'log_A1_A2')
-INPUT_HASH = 'de42e46130fdfb102e90fdfc5651c40280604968915fc950bced3559c73b7566'
+INPUT_HASH = '432a73025822542cf2520602ff2829b185504132a28c5984ab1ef54d3940bb3d'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 24, 'constants': 14, 'rhs_q': 10, 'energy': 12, 'invariants': 19, 'frequencies': 12, 'growth_rates': 11, 'drive_rates': 12}
@@ -500,4 +500,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 5
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '2baf1cb06fcd9dbe537d4bc1cd4fd0602976ba286b56b6c6aff1ee8e94ae2816'
+MODULE_SHA256 = 'd762213f6101d96cb334bd205dd5f2d81484eb674247377bedc8a3c3ac26f352'

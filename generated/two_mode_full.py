@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:92bfbf48ed3c4ace247bd8a7a76ae96290049c6daa0bd08ffda965d139aebdeb
+SymPy 1.14.0; input hash sha256:a19f33a96b823a064bc48de8588e58f63fd79761e1567ca253e5fc3673db28a8
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -66,7 +66,7 @@ MULTIPLIER_NAMES = ('Const22', 'Const23')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '92bfbf48ed3c4ace247bd8a7a76ae96290049c6daa0bd08ffda965d139aebdeb'
+INPUT_HASH = 'a19f33a96b823a064bc48de8588e58f63fd79761e1567ca253e5fc3673db28a8'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -1629,4 +1629,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 5
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '2e903adc082782b21f84f5448d10635df17c0be327a0cf36ffc079206e3c3b27'
+MODULE_SHA256 = 'd981e328e026bb48bea99e2525163dfc6775046e15efb6e296e6aa108faa2e70'

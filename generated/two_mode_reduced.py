@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py and derivation/truncation.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:42870bc4c1aaff4e41a33cead75151b1b205acce8801d75cc0bec44d5de95305
+SymPy 1.14.0; input hash sha256:4b43fe17ab58497939b72d8c9c58c412339edf2d9bf03865b325dd77b1ffc44a
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -66,7 +66,7 @@ MULTIPLIER_NAMES = ('Const22', 'Const23')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '42870bc4c1aaff4e41a33cead75151b1b205acce8801d75cc0bec44d5de95305'
+INPUT_HASH = '4b43fe17ab58497939b72d8c9c58c412339edf2d9bf03865b325dd77b1ffc44a'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -1146,4 +1146,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 5
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'ddb186953bc462a4896d6a64a2d5addf572ed4966bc6f171b0d23a68ee315399'
+MODULE_SHA256 = '2cebde16fbad50d9fddef714be971571d94e64ca683a4d1fcba29419972e0a4d'

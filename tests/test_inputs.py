@@ -19,6 +19,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from numba import njit
 from scipy.integrate import solve_ivp
 
 import knifeedge as ke
@@ -124,6 +125,134 @@ def test_a_numba_function_on_a_scipy_method(model, p):
     assert np.max(np.abs(r.y - want)) < 2e-9
 
 
+#: the driven sleigh's torque ``TAU0 sin t`` (a numba function of the time, as a user gives it)
+TAU0 = 0.4
+
+
+@njit
+def sine_torque(t):
+    return TAU0 * math.sin(t)
+
+
+@pytest.fixture(scope="module")
+def sine_reference():
+    return reference(lambda t: TAU0 * math.sin(t), T_EVAL)
+
+
+# each compiles a kernel of its own (the right-hand side that calls the function): the slow tier
+FUNCTION_METHODS = [pytest.param(m, kw, marks=pytest.mark.slow)
+                    for m, kw in (("DOP853", {}), ("RK4", {"h": 2e-3}), ("gauss4", {"h": 5e-3}))]
+
+
+@pytest.mark.parametrize("method, kw", FUNCTION_METHODS)
+def test_a_numba_function_on_a_compiled_method(model, p, sine_reference, method, kw):
+    """The torque ``TAU0 sin t`` as a numba function, called at the true time by the compiled right-hand side,
+    against the hand-written ODE (SciPy, rtol 1e-13); the lateral force after the run reads the same torque."""
+    r = ke.simulate(model, Y0, (T0, T1), p, method=method, t_eval=T_EVAL, rtol=1e-11, atol=1e-13,
+                    inputs={"tau": sine_torque}, **kw)
+    assert r.success, r.message
+    assert np.max(np.abs(r.y - sine_reference)) < 2e-9
+    assert np.max(np.abs(sine_reference[1])) > 0.2  # the torque turned the sleigh
+    lam = model.multipliers(r.y, p, r.t, inputs=r.inputs)[0]
+    rates = np.array([by_hand(t, z, lambda s: TAU0 * math.sin(s)) for t, z in zip(r.t, r.y.T)]).T
+    assert np.allclose(lam, A * rates[1] + r.y[0] * r.y[1], rtol=1e-12, atol=1e-14)
+
+
+@pytest.mark.slow  # the DOP853 kernel of the function input (shared with the test above)
+def test_samples_of_the_function_agree_to_the_interpolation_error(model, p):
+    """The same torque given as samples every ``H`` (piecewise linear: off by at most ``TAU0 H^2 / 8``) moves the
+    state by about that error times the run's length over the inertia ``k^2 + a^2``: no more, and not much less
+    (the function, not the samples, drove the first run)."""
+    h = 0.01
+    ts = np.arange(0.0, T1 + h, h)
+    runs = [ke.simulate(model, Y0, (T0, T1), p, t_eval=T_EVAL, rtol=1e-11, atol=1e-13, inputs={"tau": given})
+            for given in (sine_torque, (ts, TAU0 * np.sin(ts)))]
+    bound = TAU0 * h * h / 8 * (T1 - T0) / (K * K + A * A)
+    diff = np.max(np.abs(runs[0].y - runs[1].y))
+    assert 1e-3 * bound < diff < bound, (diff, bound)
+
+
+def _function_module(folder, name: str, amplitude: float):
+    """A user's file defining the numba function ``torque`` (``amplitude sin t``), imported as ``name``."""
+    import importlib.util
+    import sys
+
+    path = folder / f"{name}.py"
+    path.write_text(f"import math\nfrom numba import njit\n\n\n@njit\ndef torque(t):\n"
+                    f"    return {amplitude!r} * math.sin(t)\n")
+    spec = importlib.util.spec_from_file_location(name, path)
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[name] = module
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_the_kernel_is_named_after_the_function(model, tmp_path):
+    """The compiled right-hand side that calls a function input is cached under a name that stands for the
+    function's file (its SHA-256) or, typed in a session, its code: a changed function gets another name on
+    every compiled method (and so is compiled, not loaded); the same function the same name."""
+    from knifeedge.inputs import Inputs, driven
+    from knifeedge.integrators import kernel_module
+
+    def names(f):
+        m = driven(model, Inputs(("tau",), ("function",), ((f, None),)))
+        return (kernel_module(m, "DOP853").path.name, kernel_module(m, "RK4").solve.py_func.__knifeedge_cache__[1])
+
+    first = names(_function_module(tmp_path, "user_torque", 0.4).torque)
+    assert names(_function_module(tmp_path, "user_torque", 0.4).torque) == first
+    changed = names(_function_module(tmp_path, "user_torque", 0.5).torque)
+    assert changed[0] != first[0] and changed[1] != first[1]
+    typed = []
+    for amplitude in (0.4, 0.5, 0.4):
+        space: dict = {"njit": njit, "math": math}
+        exec(f"@njit\ndef torque(t):\n    return {amplitude} * math.sin(t)\n", space)
+        typed.append(names(space["torque"]))
+    assert typed[0] != typed[1] and typed[0] == typed[2]
+
+
+@pytest.mark.slow  # compiles the RK4 kernel twice
+def test_a_changed_function_is_compiled_again(model, p, tmp_path):
+    """The file of the function input is changed between two runs: the second run reads the new function."""
+    t_eval = np.linspace(T0, T1, 9)
+    for amplitude in (0.4, 0.7):
+        torque = _function_module(tmp_path, "user_torque_run", amplitude).torque
+        r = ke.simulate(model, Y0, (T0, T1), p, method="RK4", h=2e-3, t_eval=t_eval, inputs={"tau": torque})
+        want = reference(lambda t: amplitude * math.sin(t), t_eval)
+        assert np.max(np.abs(r.y - want)) < 1e-9, amplitude
+
+
+def test_function_inputs_the_compiled_methods_cannot_call_are_refused(model, p):
+    """A Python function (not compiled by numba) on every compiled method, and a function without its rate
+    where the model reads the rate, are refused before any work, saying what to do."""
+    from knifeedge.inputs import Inputs, check_compiled
+
+    for method, kw in (("DOP853", {}), ("RK4", {"h": 0.1}), ("gauss6", {"h": 0.1})):
+        with pytest.raises(ValueError, match=r"`inputs\['tau'\]` is a Python function \('<lambda>'\): the compiled "
+                                             r"method .*Decorate it with @numba.njit.*sample it.*SciPy method"):
+            ke.simulate(model, Y0, (T0, T1), p, method=method, inputs={"tau": lambda t: 0.4 * math.sin(t)}, **kw)
+    reads = Inputs(("tau",), ("function",), ((sine_torque, None),), rates_read=("tau",))
+    with pytest.raises(ValueError, match=r"reads the rate dtau/dt .*inputs=\{'tau': \(u, du_dt\)\}"):
+        check_compiled(model, reads, "DOP853")
+    check_compiled(model, Inputs(("tau",), ("function",), ((sine_torque, sine_torque),), ("tau",)), "DOP853")
+
+
+def test_a_module_whose_constants_mix_the_slots_is_refused(model):
+    """``constants(p)`` must hold the slots as ``p`` and nothing made of them (as ``derive`` now writes): a
+    module derived before, whose constants held ``-input_t0``, is refused with the way out."""
+    import types
+
+    from knifeedge.inputs import Inputs, check_compiled
+
+    old = types.SimpleNamespace(PARAM_NAMES=("a",), INPUT_NAMES=("u",), __file__="old.py",
+                                constants=njit(lambda p: np.array([p[0], p[1], p[2], p[3], -p[1]])))
+    fake = types.SimpleNamespace(name="old_model", module=old)
+    with pytest.raises(ValueError, match=r"was written before its constants\(p\) held the input slots.*derive it "
+                                         r"again"):
+        check_compiled(fake, Inputs(("u",), ("function",), ((sine_torque, None),)), "RK4")
+    held = model.module.constants(np.array([0.5, 0.8, 0.1, 1.0, 2.0, 3.0]))
+    assert np.array_equal(held[3:6], [1.0, 2.0, 3.0])
+
+
 def test_every_step_output_has_each_time_once(model, p):
     r = ke.simulate(model, Y0, (T0, T1), p, rtol=1e-10, inputs={"tau": (SAMPLE_T, SAMPLE_U)})
     assert r.success and r.t[0] == T0 and r.t[-1] == T1
@@ -203,8 +332,8 @@ def test_bad_inputs_are_refused_naming_inputs(model, p):
         run(inputs={"tau": ([2.0, 10.0], [1.0, 2.0])})
     with pytest.raises(ValueError, match=r"`inputs\['tau'\]` must be a number, samples"):
         run(inputs={"tau": "0.5"})
-    with pytest.raises(ValueError, match=r"`inputs\['tau'\]` is a function of the time: the compiled method "
-                                         r"'DOP853'.*method='scipy:DOP853'"):
+    with pytest.raises(ValueError, match=r"`inputs\['tau'\]` is a Python function \('sin'\): the compiled "
+                                         r"method 'DOP853'.*@numba.njit.*method='scipy:DOP853'"):
         run(inputs={"tau": math.sin})
     with pytest.raises(ValueError, match=r"`inputs`: .* declares no inputs"):
         ke.simulate(ke.load("chaplygin_sleigh"), [0.1, 0.0], (0, 1), ke.load("chaplygin_sleigh").default_params,

@@ -5,23 +5,30 @@
 - a number: the input is constant;
 - samples ``(t_array, u_array)``: the input is the **piecewise-linear** interpolant of the samples (straight
   lines between consecutive samples, which must cover the run's ``t_span``);
-- a function of the time ``u(t)`` (a ``numba.njit`` function, or any Python callable): on the SciPy methods
-  (``method="scipy:..."``) only, which call it at every time they evaluate the right-hand side.
+- a function of the time ``u(t)``, called at every evaluation of the right-hand side at the true time: on the
+  compiled methods a ``numba.njit`` function (:func:`driven`: the compiled right-hand side calls it), on the
+  SciPy methods (``method="scipy:..."``) any Python callable.  A model that reads the input's rate (an input
+  in a constraint, ``INPUT_RATES_READ``) takes a pair ``(u, du_dt)`` of functions on the compiled methods.
 
 The generated functions read each input from parameter slots appended to ``p``, in which it is affine in
 the time (``derivation/input_slots.py``: ``input_t0``, then ``<u>_value`` and ``<u>_rate`` per input).  A
 run with samples is therefore made of one run per interval between consecutive sample times (over which
 every input is affine): exact for the piecewise-linear input, with a restart of the integrator where the
-input's slope jumps (``knifeedge.simulate._run_segments``).  Constants need one interval.  The compiled
-methods take numbers and samples; a function is refused there with the way out (sample it, or use a SciPy
-method).
+input's slope jumps (``knifeedge.simulate._run_segments``).  Constants need one interval.  A function input
+on a compiled method writes its value (and rate) at every evaluation into the slots of ``q = constants(p)``,
+which holds each slot as ``p`` does (``derivation/input_slots.py``), before the model's right-hand side reads
+them: one compiled right-hand side (:func:`driven`) for every compiled method.
 """
 from __future__ import annotations
 
+import copy
 import math
+import types
 from collections.abc import Mapping
 
 import numpy as np
+from numba import njit
+from numba.core.registry import CPUDispatcher
 
 from . import _validate
 
@@ -32,7 +39,7 @@ class Inputs:
     """The validated inputs of a run: one entry per name of ``model.input_names``, in that order.
 
     ``kinds[i]`` is one of :data:`KINDS`; ``data[i]`` a float, a pair of arrays ``(t, u)`` (increasing
-    times) or a callable.
+    times) or a pair ``(u, du_dt)`` of callables (``du_dt`` None when not given).
     """
 
     def __init__(self, names: tuple, kinds: tuple, data: tuple, rates_read: tuple = ()):
@@ -52,7 +59,8 @@ class Inputs:
 
     def slots(self, starts: np.ndarray) -> np.ndarray:
         """The slots of the intervals that start at ``starts`` (no sample time inside an interval), one row each:
-        ``[ta, u_1(ta), rate_1, u_2(ta), rate_2, ...]``."""
+        ``[ta, u_1(ta), rate_1, u_2(ta), rate_2, ...]``; a function's are zeros (a compiled run writes them at
+        every evaluation, :func:`driven`)."""
         out = np.empty((starts.size, 1 + 2 * len(self.names)))
         out[:, 0] = starts
         for i, (kind, data) in enumerate(zip(self.kinds, self.data)):
@@ -61,12 +69,12 @@ class Inputs:
             elif kind == "samples":
                 out[:, 1 + 2 * i], out[:, 2 + 2 * i] = _interpolated(data, starts)
             else:
-                raise ValueError("a function input has no slots over an interval")  # simulate never asks
+                out[:, 1 + 2 * i], out[:, 2 + 2 * i] = 0.0, 0.0
         return out
 
     def at(self, t: float) -> np.ndarray:
         """The slots at the time ``t``: ``[t, u_1(t), du_1/dt(t), ...]`` (the rate of samples: of the interval
-        that starts at ``t``; of a function: a central difference, when the model reads it)."""
+        that starts at ``t``; of a function: its ``du_dt``, else a central difference, when the model reads it)."""
         out = [t]
         for name, kind, data in zip(self.names, self.kinds, self.data):
             if kind == "constant":
@@ -75,7 +83,11 @@ class Inputs:
                 value, rate = _interpolated(data, np.array([t]))
                 out += [value[0], rate[0]]
             else:
-                out += [_call(data, t, name), _rate(data, t, name) if name in self.rates_read else 0.0]
+                f, df = data
+                rate = 0.0
+                if name in self.rates_read:
+                    rate = _call(df, t, name) if df is not None else _rate(f, t, name)
+                out += [_call(f, t, name), rate]
         return np.array(out)
 
     def parameters(self, p: np.ndarray, t) -> np.ndarray:
@@ -138,7 +150,9 @@ def _samples(value, name: str) -> tuple:
 def _one(value, name: str) -> tuple:
     """``(kind, data)`` of one input's value."""
     if callable(value):
-        return "function", value
+        return "function", (value, None)
+    if isinstance(value, (tuple, list)) and len(value) == 2 and all(map(callable, value)):
+        return "function", tuple(value)  # the input and its rate du/dt
     if isinstance(value, (tuple, list)) and len(value) == 2 and not isinstance(value[0], (str, bytes)):
         return "samples", _samples(value, name)
     if isinstance(value, (str, bytes, bool, np.bool_)) or np.ndim(value) != 0:
@@ -171,14 +185,102 @@ def check(model, inputs) -> Inputs | None:
     return Inputs(names, kinds, data, getattr(model.module, "INPUT_RATES_READ", ()))
 
 
-def refuse_function(inp: Inputs, method: str) -> None:
-    """A compiled ``method`` cannot call a function input: say what to do instead."""
-    if inp is not None and inp.has_function:
-        name = inp.names[inp.kinds.index("function")]
-        raise ValueError(f"`inputs[{name!r}]` is a function of the time: the compiled method {method!r} takes "
-                         f"numbers and samples (t_array, u_array), interpolated piecewise linearly. Sample it "
-                         f"(inputs={{{name!r}: (ts, f(ts))}}) or use a SciPy method (method='scipy:DOP853'), "
-                         f"which calls it at every time")
+def check_compiled(model, inp: Inputs, method: str) -> None:
+    """Refuse, before any work, function inputs that the compiled ``method`` cannot call: a function that numba
+    did not compile, a rate the model reads but was not given, a module whose ``constants(p)`` does not hold
+    the slots as ``p`` does (derived before it did)."""
+    if inp is None or not inp.has_function:
+        return
+    for name, kind, data in zip(inp.names, inp.kinds, inp.data):
+        if kind != "function":
+            continue
+        f, df = data
+        if name in inp.rates_read and df is None:
+            raise ValueError(f"`inputs[{name!r}]`: {model.name} reads the rate d{name}/dt (the input is in a "
+                             f"constraint); on the compiled method {method!r} give the function with its "
+                             f"derivative, inputs={{{name!r}: (u, du_dt)}}, both numba.njit functions of t")
+        for g in (f, df) if df is not None else (f,):
+            if not isinstance(g, CPUDispatcher):
+                raise ValueError(f"`inputs[{name!r}]` is a Python function ({getattr(g, '__name__', g)!r}): the "
+                                 f"compiled method {method!r} calls the input inside its compiled right-hand side. "
+                                 f"Decorate it with @numba.njit (a function of t returning a float), sample it "
+                                 f"(inputs={{{name!r}: (ts, f(ts))}}), or use a SciPy method "
+                                 f"(method='scipy:DOP853'), which calls any Python function")
+    if not _slots_held(model.module):
+        raise ValueError(f"`inputs`: the generated module of {model.name} ({model.module.__file__}) was written "
+                         f"before its constants(p) held the input slots as p does, so its compiled methods cannot "
+                         f"take a function input; derive it again (knifeedge derive FILE --out DIR), or sample "
+                         f"the input, or use a SciPy method")
+
+
+def _slots_held(module) -> bool:
+    """Whether ``q = module.constants(p)`` holds the input slots of ``p`` at the same places and nothing else
+    of ``q`` depends on them (``derivation/input_slots.py``), as :func:`driven` needs."""
+    n_p = len(module.PARAM_NAMES)
+    n = n_p + 1 + 2 * len(module.INPUT_NAMES)
+    one, two = np.full(n, 0.75), np.full(n, 0.75)
+    two[n_p:] = np.linspace(1.5, 2.5, n - n_p)
+    with np.errstate(all="ignore"):
+        q1, q2 = module.constants.py_func(one), module.constants.py_func(two)
+    rest = np.r_[0:n_p, n:q1.size]
+    return bool(np.array_equal(q2[n_p:n], two[n_p:]) and np.array_equal(q1[rest], q2[rest], equal_nan=True))
+
+
+#: the modules of :func:`driven`, by the model's module and the functions' names
+_DRIVEN: dict = {}
+
+
+def driven(model, inp: Inputs):
+    """``model`` whose compiled right-hand sides (``rhs_q_into``, ``rhs_pose_q_into``) first write each function
+    input of ``inp`` into its slots of ``q`` at the time ``t`` they are called at, then call the model's.
+
+    The slots of input ``u`` (its value and rate ``q[NP + 1 + 2 i]``, ``q[NP + 2 + 2 i]``, read as ``value +
+    rate (t - q[NP])``) get ``u(t) - r (t - q[NP])`` and ``r = du_dt(t)`` (``r = 0`` and ``u(t)`` where the
+    model does not read the rate), so that the model reads ``u(t)`` and ``du_dt(t)`` while the other inputs'
+    slots (numbers, samples of the interval starting at ``q[NP]``) stay as they are.  Every compiled method
+    takes it as the model's right-hand side (the adaptive ones through the path of a right-hand side without
+    IR, :class:`~knifeedge.integrators.erk.AdaptiveKernel`); the kernel's cache name names the functions by
+    their module files' SHA-256 (:mod:`knifeedge.integrators.cache`).  ``check_compiled`` must have passed.
+    """
+    from .integrators.cache import digest
+
+    module = model.module
+    n_p = len(module.PARAM_NAMES)
+    functions = tuple((n_p + 1 + 2 * i, data[0], data[1] if name in inp.rates_read else None)
+                      for i, (name, kind, data) in enumerate(zip(inp.names, inp.kinds, inp.data))
+                      if kind == "function")
+    key = digest(functions)[:16]
+    name = f"{module.__name__}__inputs_{key}"
+    if (name, id(module)) not in _DRIVEN:
+        ns = types.ModuleType(name)
+        ns.__dict__.update({k: v for k, v in vars(module).items() if k != "__name__"})
+        ns.LLVM_IR = {k: v for k, v in getattr(module, "LLVM_IR", {}).items() if not k.startswith("rhs")}
+        for rhs_name in ("rhs_q_into", "rhs_pose_q_into"):
+            if hasattr(module, rhs_name):
+                rhs = getattr(module, rhs_name)
+                for slot, f, df in functions:
+                    rhs = _writing(rhs, slot, n_p, f, df)
+                setattr(ns, rhs_name, rhs)
+        _DRIVEN[(name, id(module))] = (ns, module)
+    out = copy.copy(model)
+    out.module = _DRIVEN[(name, id(module))][0]
+    return out
+
+
+def _writing(rhs, SLOT: int, T0: int, f, df):
+    """``rhs(t, s, q, ds)`` after writing the input ``f`` (and its rate ``df``, or none) into ``q[SLOT]``,
+    ``q[SLOT + 1]`` (see :func:`driven`)."""
+    if df is None:
+        def rhs_with_input(t, s, q, ds):
+            q[SLOT] = f(t)
+            rhs(t, s, q, ds)
+    else:
+        def rhs_with_input(t, s, q, ds):
+            r = df(t)
+            q[SLOT] = f(t) - r * (t - q[T0])
+            q[SLOT + 1] = r
+            rhs(t, s, q, ds)
+    return njit(error_model="numpy")(rhs_with_input)
 
 
 def read_samples(path, name: str) -> tuple:

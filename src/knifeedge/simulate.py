@@ -839,7 +839,7 @@ def check_inputs(model: Model, y0, t_span, p, method: str = "DOP853", rtol: floa
     if inp is not None:
         inp.cover(t0, t1)
         if spec is not None:
-            _inputs.refuse_function(inp, method)
+            _inputs.check_compiled(model, inp, method)
     return _Run(model, y0, t0, t1, p, rtol, atol, t_eval, max_step, h, max_steps, error_control, events, inp)
 
 
@@ -900,8 +900,9 @@ def simulate(
         ``knifeedge/integrators/blocks.py``).
     inputs : ``{name: value}`` for each of ``model.input_names`` (a model that declares ``inputs``): a
         number, samples ``(t_array, u_array)`` covering ``t_span`` (interpolated piecewise linearly: the run
-        restarts at each sample time, exact for that input), or a function of ``t`` (SciPy methods only).
-        See :mod:`knifeedge.inputs`.
+        restarts at each sample time, exact for that input), or a function of ``t`` called at the true time
+        (a ``numba.njit`` function on the compiled methods; any callable on the SciPy ones; ``(u, du_dt)``
+        where the model reads the input's rate).  See :mod:`knifeedge.inputs`.
 
     Returns
     -------
@@ -910,7 +911,12 @@ def simulate(
     run = check_inputs(model, y0, t_span, p, method, rtol, atol, t_eval, max_step, h=h, max_steps=max_steps,
                        error_control=error_control, events=events, inputs=inputs)
     model, t0, p = run.model, run.t0, run.p
-    if run.inputs is not None and not run.inputs.has_function:  # numbers and samples: interval by interval
+    compiled = ALIASES.get(method, method) in COMPILED_METHODS
+    if run.inputs is not None and run.inputs.has_function and compiled:  # its rhs calls them (inputs.driven)
+        with compile_mode_set("wait"):  # no SciPy twin nor compiling process: they would not call them
+            t, y, found, outcome, nfev, nsteps, nrej = _run_segments(
+                METHODS[method], dataclasses.replace(run, model=_inputs.driven(model, run.inputs)))
+    elif run.inputs is not None and not run.inputs.has_function:  # numbers and samples: interval by interval
         t, y, found, outcome, nfev, nsteps, nrej = _run_segments(METHODS[method], run)
     else:
         t, y, found, outcome, nfev, nsteps, nrej = METHODS[method](run)

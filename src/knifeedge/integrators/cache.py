@@ -18,6 +18,7 @@ from __future__ import annotations
 import errno
 import glob
 import hashlib
+import marshal
 import os
 import pickle
 import stat
@@ -107,8 +108,10 @@ def _named(value):
         f = value.py_func
         if f.__closure__:
             return _closure_named(f)
-        module = sys.modules[f.__module__]
-        return ("function", f.__module__, f.__qualname__, _file_sha256(getattr(module, "__file__", None)))
+        path = getattr(sys.modules.get(f.__module__), "__file__", None)
+        if path is None or not Path(path).is_file():  # typed in a session or run by exec: by its code
+            return ("function", f.__module__, f.__qualname__, _code_named(f))
+        return ("function", f.__module__, f.__qualname__, _file_sha256(path))
     if isinstance(value, np.ndarray):
         return ("array", value.dtype.str, value.shape, value.tobytes())
     if isinstance(value, tuple):
@@ -119,6 +122,15 @@ def _named(value):
 def _closure_named(f) -> tuple:
     return ("closure", f.__qualname__, hashlib.sha256(f.__code__.co_code).hexdigest(),
             tuple(_named(c.cell_contents) for c in f.__closure__ or ()))
+
+
+def _code_named(f) -> tuple:
+    """A function without a module file (a user's input typed in a session): its code and the numbers, arrays and
+    compiled functions among the globals it reads (numba freezes them into the machine code)."""
+    code, glob_ = f.__code__, f.__globals__
+    read = tuple((n, _named(glob_[n])) for n in code.co_names if isinstance(glob_.get(n), (int, float, complex,
+                                                                                            np.ndarray, CPUDispatcher)))
+    return ("code", hashlib.sha256(marshal.dumps(code)).hexdigest(), read)
 
 
 def _file_sha256(path) -> str:
