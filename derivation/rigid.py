@@ -3,8 +3,9 @@
 A user describes a body by its mass ``m``, its inertia tensor about the centre
 of mass in a body frame (all six components), a convex contact shape fixed in
 the body whose lowest point has a closed form (:class:`Ellipsoid`,
-:class:`Sphere`, :class:`Circle` -- the edge of a disk), gravity ``g`` and an
-optional dissipation torque ``-sigma * omega``::
+:class:`Sphere`, :class:`Circle` -- the edge of a disk), gravity ``g``, an
+optional dissipation torque ``-sigma * omega`` and an optional applied torque
+(a motor: ``torque=(0, tau, 0)`` with ``inputs=(tau,)`` given at run time)::
 
     from derivation.rigid import RigidBody, Ellipsoid, derive
     body = RigidBody(name="celt", mass=m, inertia=I, shape=Ellipsoid(a, b, c, centre=(0, 0, h)),
@@ -43,7 +44,7 @@ quasi-velocities (Hamel's equations on SE(3); they are the Newton--Euler
 equations with the contact force ``F`` as multiplier) are::
 
     d/dt(dT/dV)     + omega x dT/dV                 = F - m g n
-    d/dt(dT/domega) + omega x dT/domega + V x dT/dV = r x F - sigma omega
+    d/dt(dT/domega) + omega x dT/domega + V x dT/dV = r x F - sigma omega + torque
     dn/dt = n x omega
 
 with the momenta taken from the Lagrangian by differentiation.  Eliminating
@@ -62,6 +63,7 @@ import sympy as sp
 from knifeedge import bodies
 
 from .engine import ModelSpec, ReducedSystem
+from .names import Own, identifier
 
 #: state symbols: upward vertical in body axes, body angular velocity, vertical spin
 n_x, n_y, n_z = sp.symbols("n_x n_y n_z", real=True)
@@ -168,6 +170,11 @@ class RigidBody:
     gravity : ``g``.
     params : parameter symbols in the order of the parameter vector.
     sigma : optional dissipation coefficient: torque ``-sigma * omega`` about the centre of mass.
+    torque : optional applied torque about the centre of mass, three expressions in body axes of the
+        parameters, the state (``n``, ``omega``) and ``inputs``; its power ``torque . omega`` is the
+        module's ``power_input``.
+    inputs : symbols given at run time (``simulate(..., inputs={"tau": ...})``, as a ``ModelSpec``'s
+        ``inputs``); they may appear in ``torque`` only.  A body with inputs has fidelity ``full`` only.
     param_units : unit string of each parameter (``{"m": "kg", ...}``).
     param_domains : ``{name: "real" | "nonnegative"}`` for parameters that need
         not be positive (products of inertia, ``sigma``).
@@ -209,6 +216,8 @@ class RigidBody:
     hangs: bool = False
     #: families of steady motions (:class:`~knifeedge.derive.steady.Steady`)
     steady: tuple = ()
+    torque: tuple | None = None
+    inputs: tuple = ()
 
     def check(self) -> None:
         """Collect every problem of the description and raise one ``ValueError``."""
@@ -226,6 +235,7 @@ class RigidBody:
         undeclared = used - declared - set(N_VEC)
         if undeclared:
             problems.append(f"symbols not declared in `params`: {sorted(map(str, undeclared))}")
+        problems += _torque_problems(self)
         names = [str(p) for p in self.params]
         if len(set(names)) != len(names):
             problems.append("`params` has repeated names")
@@ -245,6 +255,34 @@ class RigidBody:
             problems += _physical_problems(self, inertia)
         if problems:
             raise ValueError(f"{self.name}: " + "; ".join(problems))
+
+
+def _torque_problems(body: RigidBody) -> list:
+    """What is wrong with ``body.torque`` and ``body.inputs``."""
+    from .input_slots import slot_names
+
+    problems = []
+    inputs = tuple(body.inputs)
+    if inputs and body.torque is None:
+        problems.append(f"`inputs` {[str(u) for u in inputs]} must appear in `torque` (the applied torque)")
+    if body.torque is not None:
+        try:
+            torque = _vec(body.torque)
+        except ValueError:
+            return [f"`torque` must be three expressions (body axes), got {body.torque!r}"]
+        allowed = set(body.params) | set(inputs) | set(N_VEC) | set(OMEGA)
+        bad = set().union(*(sp.sympify(c).free_symbols for c in torque)) - allowed
+        if bad:
+            problems.append(f"`torque` holds symbols that are not parameters, inputs, n_x..n_z or omega_x..omega_z: "
+                            f"{sorted(map(str, bad))} (declare run-time quantities in `inputs`)")
+    taken = {str(q) for q in body.params} | set(STATE_UNITS) | {"t"} | set(slot_names(inputs))
+    clash = sorted({str(u) for u in inputs} & taken)
+    if clash:
+        problems.append(f"`inputs` names clash with parameter, state or slot names: {clash}; rename them")
+    if inputs and body.small:
+        problems.append("a body with `inputs` has fidelity 'full' only: the small-tilt fidelities (`small`) expand "
+                        "about a free spin, which an applied torque does not keep; leave `small` empty")
+    return problems
 
 
 def _rest_vertical(body: RigidBody, problems: list):
@@ -370,7 +408,7 @@ def equations(body: RigidBody) -> dict:
         return X.jacobian(V) * V_dot + X.jacobian(w) * wd + X.jacobian(n) * n_dot
 
     force = (rate(P) + w.cross(P) + m * g * n).xreplace(v_sub)
-    torque = -(body.sigma or 0) * w
+    torque = -(body.sigma or 0) * w + (_vec(body.torque) if body.torque is not None else sp.zeros(3, 1))
     residual = (rate(K) + w.cross(K) + V.cross(P)).xreplace(v_sub) - r.cross(force) - torque
     M = residual.jacobian(wd)
     f = -residual.xreplace(dict.fromkeys(wd, 0))
@@ -412,6 +450,10 @@ class RigidSpec:
     param_units: dict
     quasi_velocities: tuple = ()
     drawing: object = None
+    #: run-time inputs (:attr:`RigidBody.inputs`) and their rates' symbols (never read: a torque is not
+    #: differentiated), as :class:`~derivation.engine.ModelSpec` has them
+    inputs: tuple = ()
+    input_rates: tuple = ()
 
 
 def spec_of(body: RigidBody, parts: dict) -> RigidSpec:
@@ -426,6 +468,8 @@ def spec_of(body: RigidBody, parts: dict) -> RigidSpec:
         pose=POSE,
         description=body.description,
         param_units={**STATE_UNITS, **{str(k): v for k, v in body.param_units.items()}},
+        inputs=tuple(body.inputs),
+        input_rates=tuple(Own(f"_rate_{identifier(str(u))}", real=True) for u in body.inputs),
     )
 
 
@@ -455,6 +499,7 @@ def derive(body: RigidBody) -> RollingSystem:
         contact=parts["contact"],
         height=parts["height"],
         power=(body.sigma or sp.S.Zero) * OMEGA.dot(OMEGA),
+        power_input=_vec(body.torque).dot(OMEGA) if body.torque is not None else None,
         omega_dot=omega_dot,
     )
 

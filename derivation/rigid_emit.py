@@ -17,7 +17,8 @@ from pathlib import Path
 
 import sympy as sp
 
-from . import codegen, drawing, jacobian, rigid, steady
+from . import codegen, drawing, input_slots, jacobian, rigid, steady
+from .names import t as _t
 from .codegen import (USER_MODULE_PREFIX, Constant, ModuleParts, const, cse_block, expression_function,
                       provenance, regenerate_hint, rhs_functions, unpack)
 
@@ -33,6 +34,8 @@ def input_hash(system: rigid.RollingSystem, fidelity: str) -> str:
         inspect.getsource(rigid), inspect.getsource(model_file) if model_file else "", Path(__file__).read_text(),
         Path(codegen.__file__).read_text(), drawing.source_text(), repr(sorted(body.param_units.items())),
         repr(sorted(body.param_domains.items())), body.description,
+        *((inspect.getsource(input_slots), *(sp.srepr(sp.sympify(c)) for c in body.torque), *map(sp.srepr, body.inputs))
+          if body.torque is not None else ()),
     ):
         h.update(part.encode())
         h.update(b"\0")
@@ -140,9 +143,14 @@ def _rigid_defaults(body: rigid.RigidBody, params: list, state: list) -> tuple:
 
 
 def module_parts(system: rigid.RollingSystem) -> ModuleParts:
-    """What the generated module of a derived rigid body (fidelity ``full``) holds."""
+    """What the generated module of a derived rigid body (fidelity ``full``) holds.
+
+    A body with ``inputs`` reads them from parameter slots after its parameters, as every model does
+    (:func:`.input_slots.lowered`); its functions then take the time ``(s, p, t)``."""
+    if system.spec.inputs:
+        system = input_slots.lowered(system)
     spec, body = system.spec, system.body
-    state, pose, params = [str(s) for s in system.state], [str(q) for q in spec.pose], [str(p) for p in spec.params]
+    state, pose, params = [str(s) for s in system.state], [str(q) for q in spec.pose], [str(p) for p in body.params]
     n = len(state)
     digest = input_hash(system, "full")
     units = {**rigid.STATE_UNITS, **{str(k): v for k, v in body.param_units.items()}}
@@ -169,7 +177,7 @@ def module_parts(system: rigid.RollingSystem) -> ModuleParts:
 def _constants(system: rigid.RollingSystem, units: dict, domains: dict, digest: str) -> tuple:
     """The metadata of a rigid body's module."""
     spec, body = system.spec, system.body
-    state, pose, params = [str(s) for s in system.state], [str(q) for q in spec.pose], [str(p) for p in spec.params]
+    state, pose, params = [str(s) for s in system.state], [str(q) for q in spec.pose], [str(p) for p in body.params]
     defaults, default_state = _rigid_defaults(body, params, state)
     presets = {k: {p: float(v[p]) for p in params} for k, v in sorted(body.presets.items())}
     return (
@@ -200,7 +208,20 @@ def _constants(system: rigid.RollingSystem, units: dict, domains: dict, digest: 
         const("PRESETS", presets, "named parameter sets (SI units); sources in PRESET_SOURCES"),
         const("PRESET_SOURCES", dict(sorted(body.preset_sources.items()))),
         const("SOURCE", body.source, "the model file the body comes from"),
+        *_driven_metadata(system),
         *provenance(digest))
+
+
+def _driven_metadata(system: rigid.RollingSystem) -> tuple:
+    """The constants of a body with an applied torque (none without): its inputs, and that its functions take
+    the time."""
+    if system.power_input is None:
+        return ()
+    return (*input_slots.metadata(system.spec),
+            const("TIME_DEPENDENT", True, "an applied torque: energy, multipliers, pose_rates, power_dissipated and "
+                  "power_input take the time\nas a third argument ``(s, p, t)``; energy(t) = energy(0) + integral of "
+                  "(power_input - power_dissipated)"),
+            const("HAS_POWER_INPUT", True))
 
 
 def _dissipative(body: rigid.RigidBody) -> bool:
@@ -212,25 +233,30 @@ def _body(system: rigid.RollingSystem) -> tuple:
     spec, body = system.spec, system.body
     n, npose = len(system.state), len(spec.pose)
     rates = system.state_rhs()
-    allowed = set(system.state) | set(spec.params)
+    driven = system.power_input is not None
+    args = "s, p, t" if driven else "s, p"
+    allowed = set(system.state) | set(spec.params) | ({_t} if driven else set())
     unpack_s, unpack_p = unpack([str(s) for s in system.state], "s"), unpack([str(p) for p in spec.params], "p")
     pose_exprs = [system.pose_rates[q] for q in spec.pose]
     lam = list(system.multipliers)
-    power = (expression_function("power_dissipated", "s, p", "Power dissipated by the damping torque",
+    power = (expression_function("power_dissipated", args, "Power dissipated by the damping torque",
                                  [sp.sympify(system.power)], ["power"], allowed, (unpack_s, unpack_p), "power"),)
+    power += (expression_function("power_input", args, "Power of the applied torque, torque . omega",
+                                  [sp.sympify(system.power_input)], ["power"], allowed, (unpack_s, unpack_p), "power"),
+              ) if driven else ()
     return (
         *rhs_functions(system.state, spec.params, rates, spec.pose, pose_exprs),
-        expression_function("pose_rates", "s, p", "Return (psi_dot, x_dot, y_dot) at the pose-extended state ``s``",
+        expression_function("pose_rates", args, "Return (psi_dot, x_dot, y_dot) at the pose-extended state ``s``",
                             pose_exprs, [f"out[{i}]" for i in range(npose)], allowed | set(spec.pose),
                             (unpack_s, unpack([str(q) for q in spec.pose], "s", start=n), unpack_p), "out",
                             (f"    out = np.empty({npose})",)),
-        expression_function("energy", "s, p", "Mechanical energy", [system.energy], ["energy"], allowed,
+        expression_function("energy", args, "Mechanical energy", [system.energy], ["energy"], allowed,
                             (unpack_s, unpack_p), "energy"),
-        *(power if _dissipative(body) else ()),
-        expression_function("multipliers", "s, p", "Contact force on the body in body axes", lam,
+        *(power if _dissipative(body) else power[1:]),
+        expression_function("multipliers", args, "Contact force on the body in body axes", lam,
                             [f"out[{i}]" for i in range(len(lam))], allowed, (unpack_s, unpack_p), "out",
                             (f"    out = np.empty({len(lam)})",)),
         _INITIAL_STATE.format(n=n, n_pose=n + npose, VERTICAL=VERTICAL_CHECK),
-        body_values_source(body, spec.params), drawing.module_source(system),
+        body_values_source(body, body.params), drawing.module_source(system),
         jacobian.block_source(rates, system.state, spec.params),
         steady.block_source(body.steady, system.state, spec.params, steady.rigid_invariants(system.state)))

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/rigid_small_emit.py (make derive) from the rigid body 'celt'
 through derivation/rigid.py and derivation/rigid_small.py.
-SymPy 1.14.0; input hash sha256:2a72a8b6b02f0f307ceabbe9505320a03413836cb60895c8793440599f5e61e0
+SymPy 1.14.0; input hash sha256:9b7a40c1175013b675dfcb16c63cd95b48d91e7a32de970513125c5798349fa7
 
 Classical rattleback (celt): a rigid body with an ellipsoidal bottom (semi-axes a, b, c along the body axes x, y, z; centre of mass a distance h below the ellipsoid's centre), inertia tensor about the centre of mass with entries I_xx..I_yz in body axes, rolling without slipping on a horizontal table under gravity g, dissipation torque -sigma*omega.  State: upward vertical n and angular velocity omega in body axes, vertical spin omega_n = omega.n; pose: heading psi of the body x axis, centre of mass (x, y).
 
@@ -63,7 +63,7 @@ EXPORTS = ('PRESETS', 'PRESET_SOURCES', 'initial_state', 'modes', 'moffatt_tokie
 PRESETS = {'kane_levinson_1982': {'a': 0.2, 'b': 0.03, 'c': 0.02, 'h': 0.01, 'm': 1.0, 'g': 9.81, 'I_xx': 0.0002, 'I_yy': 0.0016, 'I_zz': 0.0017, 'I_xy': 2e-05, 'sigma': 0.0}, 'schoemer': {'a': 1.618033988749895, 'b': 1.0, 'c': 1.0, 'h': 0.1875, 'm': 0.2, 'g': 9.81, 'I_xx': 0.05796875, 'I_yy': 0.09032943, 'I_zz': 0.12236068, 'I_xy': -0.025, 'sigma': 0.0}}
 PRESET_SOURCES = {'kane_levinson_1982': 'Kane & Levinson, Int. J. Non-Linear Mech. 17 (1982) 175-186', 'schoemer': "E. Schoemer's rattleback (golden-ratio ellipsoid)"}
 SOURCE = 'knifeedge.derive.celt'
-INPUT_HASH = '2a72a8b6b02f0f307ceabbe9505320a03413836cb60895c8793440599f5e61e0'
+INPUT_HASH = '9b7a40c1175013b675dfcb16c63cd95b48d91e7a32de970513125c5798349fa7'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 688, 'constants': 669, 'rhs_q': 22, 'energy': 208, 'power_dissipated': 780, 'modes': 133, 'moffatt_tokieda': 351}
@@ -3496,4 +3496,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 11
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'f7a33af5258d4b765be0ab5e105339e687c20e72db8fbef7e674b6604a8fe645'
+MODULE_SHA256 = '76465289e209d57df55020ab63715855b32d38ea15c69a1058518a8818784deb'

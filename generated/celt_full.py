@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/rigid_emit.py (make derive) from the rigid body 'celt'
 through derivation/rigid.py (Lagrange-d'Alembert in body quasi-velocities).
-SymPy 1.14.0; input hash sha256:7103d895b2628628e8306402a5c032ebedb7bc13b4ce73ef58f33b67b97af744
+SymPy 1.14.0; input hash sha256:84509a1cb1e7948489d51af781e806e677695b5542c3993e6bc58e2a321269d4
 
 Classical rattleback (celt): a rigid body with an ellipsoidal bottom (semi-axes a, b, c along the body axes x, y, z; centre of mass a distance h below the ellipsoid's centre), inertia tensor about the centre of mass with entries I_xx..I_yz in body axes, rolling without slipping on a horizontal table under gravity g, dissipation torque -sigma*omega.  State: upward vertical n and angular velocity omega in body axes, vertical spin omega_n = omega.n; pose: heading psi of the body x axis, centre of mass (x, y).
 
@@ -81,7 +81,7 @@ PRESETS = {'kane_levinson_1982': {'a': 0.2, 'b': 0.03, 'c': 0.02, 'h': 0.01, 'm'
 PRESET_SOURCES = {'kane_levinson_1982': 'Kane & Levinson, Int. J. Non-Linear Mech. 17 (1982) 175-186', 'schoemer': "E. Schoemer's rattleback (golden-ratio ellipsoid)"}
 #: the model file the body comes from
 SOURCE = 'knifeedge.derive.celt'
-INPUT_HASH = '7103d895b2628628e8306402a5c032ebedb7bc13b4ce73ef58f33b67b97af744'
+INPUT_HASH = '84509a1cb1e7948489d51af781e806e677695b5542c3993e6bc58e2a321269d4'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 247, 'constants': 23, 'rhs_q': 250, 'rhs_pose': 285, 'rhs_pose_q': 286, 'pose_rates': 71, 'energy': 72, 'power_dissipated': 6, 'multipliers': 265}
@@ -3195,4 +3195,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 13
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '1d33ff995ac34220b48eed948c286e2aaeb37bece3234ac9ed258a56c8b7d0ce'
+MODULE_SHA256 = '00b8d14ea18187ad5eaeb99c7aa9b2414af529d8a0c6a573d9cd6bf1eff9dc29'

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/rigid_small_emit.py (make derive) from the rigid body 'celt'
 through derivation/rigid.py and derivation/rigid_small.py.
-SymPy 1.14.0; input hash sha256:f4059169e0a668f2363f41aa289899fb8316e0dd1607134d3ddb094d36d3b6b5
+SymPy 1.14.0; input hash sha256:643f42d86a6d56d82fc938b1f2865cdf770bb3056a81434a6343d3e091b1b347
 
 Classical rattleback (celt): a rigid body with an ellipsoidal bottom (semi-axes a, b, c along the body axes x, y, z; centre of mass a distance h below the ellipsoid's centre), inertia tensor about the centre of mass with entries I_xx..I_yz in body axes, rolling without slipping on a horizontal table under gravity g, dissipation torque -sigma*omega.  State: upward vertical n and angular velocity omega in body axes, vertical spin omega_n = omega.n; pose: heading psi of the body x axis, centre of mass (x, y).
 
@@ -65,7 +65,7 @@ EXPORTS = ('PRESETS', 'PRESET_SOURCES', 'initial_state')
 PRESETS = {'kane_levinson_1982': {'a': 0.2, 'b': 0.03, 'c': 0.02, 'h': 0.01, 'm': 1.0, 'g': 9.81, 'I_xx': 0.0002, 'I_yy': 0.0016, 'I_zz': 0.0017, 'I_xy': 2e-05, 'sigma': 0.0}, 'schoemer': {'a': 1.618033988749895, 'b': 1.0, 'c': 1.0, 'h': 0.1875, 'm': 0.2, 'g': 9.81, 'I_xx': 0.05796875, 'I_yy': 0.09032943, 'I_zz': 0.12236068, 'I_xy': -0.025, 'sigma': 0.0}}
 PRESET_SOURCES = {'kane_levinson_1982': 'Kane & Levinson, Int. J. Non-Linear Mech. 17 (1982) 175-186', 'schoemer': "E. Schoemer's rattleback (golden-ratio ellipsoid)"}
 SOURCE = 'knifeedge.derive.celt'
-INPUT_HASH = 'f4059169e0a668f2363f41aa289899fb8316e0dd1607134d3ddb094d36d3b6b5'
+INPUT_HASH = '643f42d86a6d56d82fc938b1f2865cdf770bb3056a81434a6343d3e091b1b347'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 606, 'constants': 511, 'rhs_q': 108, 'energy': 85, 'power_dissipated': 6}
@@ -2623,4 +2623,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 11
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'ab67a41b02da6743397f313585745f7901300abc5fc412ef2b713a6fa9a7fd46'
+MODULE_SHA256 = 'aff1e1f7bbd944e81c3e6e5f791ca80b93cb7a333e3875364b251323dfd20e6b'

@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/rigid_emit.py (make derive) from the rigid body 'two_mode_rigid'
 through derivation/rigid.py (Lagrange-d'Alembert in body quasi-velocities).
-SymPy 1.14.0; input hash sha256:8aeccfcd6e86a1038001c5dbc951b1b9ce8bde341eb375b57a41a2555125cc32
+SymPy 1.14.0; input hash sha256:513c9d093f57db150998c5b6d66768516bb0a6b18f4d5ae56b94bf5b66ea944f
 
 Chiral knife edge of the paper's section III as the real rigid body: massless inverted-U bar of half-length L, masses M/2 a distance ell below its ends, contact at the lowest point of a circle of radius D in a vertical plane at the chiral angle alpha to the bar; per unit mass, exact in the tilts.
 
@@ -72,7 +72,7 @@ PRESETS = {}
 PRESET_SOURCES = {}
 #: the model file the body comes from
 SOURCE = 'knifeedge.derive.rigid_knife_edge'
-INPUT_HASH = '8aeccfcd6e86a1038001c5dbc951b1b9ce8bde341eb375b57a41a2555125cc32'
+INPUT_HASH = '513c9d093f57db150998c5b6d66768516bb0a6b18f4d5ae56b94bf5b66ea944f'
 SYMPY_VERSION = '1.14.0'
 #: floating-point operation counts of each function body (SymPy count_ops after CSE)
 OP_COUNTS = {'rhs': 253, 'constants': 25, 'rhs_q': 221, 'rhs_pose': 293, 'rhs_pose_q': 261, 'pose_rates': 73, 'energy': 56, 'multipliers': 267}
@@ -2726,4 +2726,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 5
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '23abca9604ea156686f618b8af78ff506303fcbb6555feb6ef91be84f675da61'
+MODULE_SHA256 = 'a570badfe2a8920e028fbf010ee6ce3a0ef4823fd6af54bff3a94ae49eb4f58e'
