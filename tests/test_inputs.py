@@ -139,19 +139,27 @@ def sine_reference():
     return reference(lambda t: TAU0 * math.sin(t), T_EVAL)
 
 
-# each compiles a kernel of its own (the right-hand side that calls the function): the slow tier
-FUNCTION_METHODS = [pytest.param(m, kw, marks=pytest.mark.slow)
-                    for m, kw in (("DOP853", {}), ("RK4", {"h": 2e-3}), ("gauss4", {"h": 5e-3}))]
+#: every compiled method (each compiles a kernel of its own, the right-hand side that calls the function: the slow
+#: tier) with its step
+FUNCTION_METHODS = {"DOP853": {}, "DP54": {}, "Tsit5": {}, "RK4": {"h": 2e-3}, "gauss4": {"h": 5e-3},
+                    "gauss6": {"h": 1e-2}, "implicit_midpoint": {"h": 1e-3}}
 
 
-@pytest.mark.parametrize("method, kw", FUNCTION_METHODS)
-def test_a_numba_function_on_a_compiled_method(model, p, sine_reference, method, kw):
+def test_the_function_checks_cover_every_compiled_method():
+    from knifeedge.integrators import COMPILED_METHODS
+
+    assert set(FUNCTION_METHODS) == set(COMPILED_METHODS)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("method", FUNCTION_METHODS)
+def test_a_numba_function_on_a_compiled_method(model, p, sine_reference, method):
     """The torque ``TAU0 sin t`` as a numba function, called at the true time by the compiled right-hand side,
     against the hand-written ODE (SciPy, rtol 1e-13); the lateral force after the run reads the same torque."""
     r = ke.simulate(model, Y0, (T0, T1), p, method=method, t_eval=T_EVAL, rtol=1e-11, atol=1e-13,
-                    inputs={"tau": sine_torque}, **kw)
+                    inputs={"tau": sine_torque}, **FUNCTION_METHODS[method])
     assert r.success, r.message
-    assert np.max(np.abs(r.y - sine_reference)) < 2e-9
+    assert np.max(np.abs(r.y - sine_reference)) < (2e-9 if method != "implicit_midpoint" else 2e-5)
     assert np.max(np.abs(sine_reference[1])) > 0.2  # the torque turned the sleigh
     lam = model.multipliers(r.y, p, r.t, inputs=r.inputs)[0]
     rates = np.array([by_hand(t, z, lambda s: TAU0 * math.sin(s)) for t, z in zip(r.t, r.y.T)]).T
@@ -249,7 +257,7 @@ def test_a_module_whose_constants_mix_the_slots_is_refused(model):
     with pytest.raises(ValueError, match=r"was written before its constants\(p\) held the input slots.*derive it "
                                          r"again"):
         check_compiled(fake, Inputs(("u",), ("function",), ((sine_torque, None),)), "RK4")
-    held = model.module.constants(np.array([0.5, 0.8, 0.1, 1.0, 2.0, 3.0]))
+    held = model.module.constants.py_func(np.array([0.5, 0.8, 0.1, 1.0, 2.0, 3.0]))
     assert np.array_equal(held[3:6], [1.0, 2.0, 3.0])
 
 
@@ -399,24 +407,7 @@ def test_an_input_in_a_constraint_reads_its_rate(tmp_path):
     ``w = w0 + s (t - ta)``, ``v`` gains ``a (w0^2 d + w0 s d^2 + s^2 d^3 / 3)`` (d = t - ta); the torque
     that enforces the turn is the multiplier ``(k^2 + a^2) dw/dt + a v w`` (it reads the input's rate ``s``),
     and its power ``w * torque`` is ``power_input``."""
-    import sympy as sp
-
-    from knifeedge.derive import ModelSpec, emit
-    from knifeedge.derive.cli import derive_specs
-
-    a, k = sp.symbols("a k", positive=True)
-    x, y, phi, x_dot, y_dot, phi_dot, v, w = sp.symbols("x y phi x_dot y_dot phi_dot v w", real=True)
-    across, along = sp.Matrix([-sp.sin(phi), sp.cos(phi)]), sp.Matrix([sp.cos(phi), sp.sin(phi)])
-    contact = sp.Matrix([x_dot, y_dot])
-    centre = contact + a * phi_dot * across
-    spec = ModelSpec(
-        name="turned_by_input", coordinates=(x, y, phi), velocities=(x_dot, y_dot, phi_dot),
-        lagrangian=sp.Rational(1, 2) * (centre.dot(centre) + k**2 * phi_dot**2),
-        constraints=(contact.dot(across), phi_dot - w), constraint_labels=("knife_edge", "turn"),
-        dependent=(y, phi), params=(a, k), inputs=(w,), cyclic={x: 0, y: 0, phi: 0}, pose=(phi, x, y),
-        quasi_velocities=((v, x_dot, contact.dot(along)),))
-    emit.write_all(tmp_path, derive_specs([spec]), registry=False)
-    m = ke.load("turned_by_input", path=tmp_path)
+    m = _turned_by_input(tmp_path)
     assert m.state_names == ("v",) and m.module.INPUT_RATES_READ == ("w",)
     p = m.params(a=A, k=K)
     t_eval = np.linspace(T0, T1, 31)
@@ -443,6 +434,57 @@ def test_an_input_in_a_constraint_reads_its_rate(tmp_path):
     torque = (K * K + A * A) * rate + A * r["v"] * w_in
     assert np.allclose(m.multipliers(r.y, p, r.t, inputs=r.inputs)[1], torque, rtol=1e-12, atol=1e-14)
     assert np.allclose(m.power_input(r.y, p, r.t, inputs=r.inputs), w_in * torque, rtol=1e-12, atol=1e-14)
+
+
+def _turned_by_input(folder):
+    """The sleigh whose heading turns at the rate ``w`` given at run time (``phi_dot - w = 0``), derived into
+    ``folder`` and loaded."""
+    import sympy as sp
+
+    from knifeedge.derive import ModelSpec, emit
+    from knifeedge.derive.cli import derive_specs
+
+    a, k = sp.symbols("a k", positive=True)
+    x, y, phi, x_dot, y_dot, phi_dot, v, w = sp.symbols("x y phi x_dot y_dot phi_dot v w", real=True)
+    across, along = sp.Matrix([-sp.sin(phi), sp.cos(phi)]), sp.Matrix([sp.cos(phi), sp.sin(phi)])
+    contact = sp.Matrix([x_dot, y_dot])
+    centre = contact + a * phi_dot * across
+    spec = ModelSpec(
+        name="turned_by_input", coordinates=(x, y, phi), velocities=(x_dot, y_dot, phi_dot),
+        lagrangian=sp.Rational(1, 2) * (centre.dot(centre) + k**2 * phi_dot**2),
+        constraints=(contact.dot(across), phi_dot - w), constraint_labels=("knife_edge", "turn"),
+        dependent=(y, phi), params=(a, k), inputs=(w,), cyclic={x: 0, y: 0, phi: 0}, pose=(phi, x, y),
+        quasi_velocities=((v, x_dot, contact.dot(along)),))
+    emit.write_all(folder, derive_specs([spec]), registry=False)
+    return ke.load("turned_by_input", path=folder)
+
+
+@njit
+def turn_rate(t):
+    return 0.3 * math.sin(t)
+
+
+@njit
+def turn_acceleration(t):
+    return 0.3 * math.cos(t)
+
+
+@pytest.mark.slow  # derives a model and compiles its kernel
+def test_a_function_and_its_rate_on_a_compiled_method(tmp_path):
+    """The heading turned at ``w = 0.3 sin t`` given with its rate as numba functions: ``dv/dt = a w^2`` gives
+    ``v = 0.1 + 0.09 a ((t - T0)/2 - (sin 2t - sin 2T0)/4)``; the torque that turns the sleigh (the multiplier
+    ``(k^2 + a^2) dw/dt + a v w``) reads the rate.  Without the rate the compiled method refuses the input."""
+    m = _turned_by_input(tmp_path)
+    p = m.params(a=A, k=K)
+    t_eval = np.linspace(T0, T1, 31)
+    with pytest.raises(ValueError, match=r"reads the rate dw/dt"):
+        ke.simulate(m, [0.1], (T0, T1), p, inputs={"w": turn_rate})
+    r = ke.simulate(m, [0.1], (T0, T1), p, t_eval=t_eval, rtol=1e-11, atol=1e-13,
+                    inputs={"w": (turn_rate, turn_acceleration)})
+    v = 0.1 + 0.09 * A * ((t_eval - T0) / 2 - (np.sin(2 * t_eval) - np.sin(2 * T0)) / 4)
+    assert np.max(np.abs(r["v"] - v)) < 1e-9 * np.max(np.abs(v))
+    torque = (K * K + A * A) * 0.3 * np.cos(t_eval) + A * v * 0.3 * np.sin(t_eval)
+    assert np.allclose(m.multipliers(r.y, p, r.t, inputs=r.inputs)[1], torque, rtol=1e-9, atol=1e-12)
 
 
 @pytest.mark.slow  # derives and compiles two more models
