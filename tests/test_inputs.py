@@ -241,6 +241,17 @@ def test_function_inputs_the_compiled_methods_cannot_call_are_refused(model, p):
     reads = Inputs(("tau",), ("function",), ((sine_torque, None),), rates_read=("tau",))
     with pytest.raises(ValueError, match=r"reads the rate dtau/dt .*inputs=\{'tau': \(u, du_dt\)\}"):
         check_compiled(model, reads, "DOP853")
+
+
+@pytest.mark.slow  # numba compiles each function (a second each on a loaded machine)
+def test_numba_functions_that_are_not_of_the_time_are_refused(model, p):
+    """A numba function of two arguments, or returning an array, is refused before the kernel compiles."""
+    from knifeedge.inputs import Inputs, check_compiled
+
+    for bad, said in ((njit(lambda t, x: t), "numba cannot compile '<lambda>' as a function of the time t"),
+                      (njit(lambda t: np.array([t, t])), "'<lambda>' returns array.* it must return one real number")):
+        with pytest.raises(ValueError, match=rf"`inputs\['tau'\]`: {said}"):
+            ke.simulate(model, Y0, (T0, T1), p, method="RK4", h=0.1, inputs={"tau": bad})
     check_compiled(model, Inputs(("tau",), ("function",), ((sine_torque, sine_torque),), ("tau",)), "DOP853")
 
 

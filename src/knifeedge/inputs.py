@@ -206,11 +206,30 @@ def check_compiled(model, inp: Inputs, method: str) -> None:
                                  f"Decorate it with @numba.njit (a function of t returning a float), sample it "
                                  f"(inputs={{{name!r}: (ts, f(ts))}}), or use a SciPy method "
                                  f"(method='scipy:DOP853'), which calls any Python function")
+            _check_signature(g, name)
     if not _slots_held(model.module):
         raise ValueError(f"`inputs`: the generated module of {model.name} ({model.module.__file__}) was written "
                          f"before its constants(p) held the input slots as p does, so its compiled methods cannot "
                          f"take a function input; derive it again (knifeedge derive FILE --out DIR), or sample "
                          f"the input, or use a SciPy method")
+
+
+def _check_signature(f, name: str) -> None:
+    """Refuse a numba function that does not compile as ``f(t: float) -> real number`` (compiling it now, once
+    per process: milliseconds), instead of failing inside the kernel's compilation."""
+    from numba import types
+    from numba.core.errors import NumbaError
+
+    try:
+        f.compile((types.float64,))
+    except (NumbaError, TypeError) as exc:
+        first = str(exc).strip().splitlines()[0] if str(exc).strip() else type(exc).__name__
+        raise ValueError(f"`inputs[{name!r}]`: numba cannot compile {f.__name__!r} as a function of the time t (one "
+                         f"float): {first}") from None
+    returns = [sig.return_type for sig in f.nopython_signatures if sig.args == (types.float64,)]
+    if not returns or not isinstance(returns[0], (types.Float, types.Integer)):
+        raise ValueError(f"`inputs[{name!r}]`: {f.__name__!r} returns {returns[0] if returns else 'nothing'} at a "
+                         f"float t; it must return one real number")
 
 
 def _slots_held(module) -> bool:
