@@ -199,11 +199,12 @@ def test_the_kernel_is_named_after_the_function(model, tmp_path):
     """The compiled right-hand side that calls a function input is cached under a name that stands for the
     function's file (its SHA-256) or, typed in a session, its code: a changed function gets another name on
     every compiled method (and so is compiled, not loaded); the same function the same name."""
-    from knifeedge.inputs import Inputs, driven
+    from knifeedge.inputs import Inputs
     from knifeedge.integrators import kernel_module
+    from knifeedge.simulate import driven_model
 
     def names(f):
-        m = driven(model, Inputs(("tau",), ("function",), ((f, None),)))
+        m = driven_model(model, Inputs(("tau",), ("function",), ((f, None),)))
         return (kernel_module(m, "DOP853").path.name, kernel_module(m, "RK4").solve.py_func.__knifeedge_cache__[1])
 
     first = names(_function_module(tmp_path, "user_torque", 0.4).torque)

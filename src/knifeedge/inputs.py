@@ -6,8 +6,8 @@
 - samples ``(t_array, u_array)``: the input is the **piecewise-linear** interpolant of the samples (straight
   lines between consecutive samples, which must cover the run's ``t_span``);
 - a function of the time ``u(t)``, called at every evaluation of the right-hand side at the true time: on the
-  compiled methods a ``numba.njit`` function (:func:`driven`: the compiled right-hand side calls it), on the
-  SciPy methods (``method="scipy:..."``) any Python callable.  A model that reads the input's rate (an input
+  compiled methods a ``numba.njit`` function (``knifeedge.simulate.driven_model``: the compiled right-hand
+  side calls it), on the SciPy methods (``method="scipy:..."``) any Python callable.  A model that reads the input's rate (an input
   in a constraint, ``INPUT_RATES_READ``) takes a pair ``(u, du_dt)`` of functions on the compiled methods.
 
 The generated functions read each input from parameter slots appended to ``p``, in which it is affine in
@@ -17,17 +17,14 @@ every input is affine): exact for the piecewise-linear input, with a restart of 
 input's slope jumps (``knifeedge.simulate._run_segments``).  Constants need one interval.  A function input
 on a compiled method writes its value (and rate) at every evaluation into the slots of ``q = constants(p)``,
 which holds each slot as ``p`` does (``derivation/input_slots.py``), before the model's right-hand side reads
-them: one compiled right-hand side (:func:`driven`) for every compiled method.
+them: one compiled right-hand side (``knifeedge.simulate.driven_model``) for every compiled method.
 """
 from __future__ import annotations
 
-import copy
 import math
-import types
 from collections.abc import Mapping
 
 import numpy as np
-from numba import njit
 from numba.core.registry import CPUDispatcher
 
 from . import _validate
@@ -52,6 +49,13 @@ class Inputs:
     def has_function(self) -> bool:
         return "function" in self.kinds
 
+    def functions(self, n_params: int) -> tuple:
+        """``(slot, u, du_dt)`` of each function input: the index in ``p`` of its value slot (after ``n_params``
+        parameters), the function and its rate (``None`` where the model does not read the rate)."""
+        return tuple((n_params + 1 + 2 * i, data[0], data[1] if name in self.rates_read else None)
+                     for i, (name, kind, data) in enumerate(zip(self.names, self.kinds, self.data))
+                     if kind == "function")
+
     def breakpoints(self, t0: float, t1: float) -> np.ndarray:
         """``t0``, the sample times strictly inside ``(t0, t1)`` of every sampled input, and ``t1``."""
         inside = [d[0][(d[0] > t0) & (d[0] < t1)] for k, d in zip(self.kinds, self.data) if k == "samples"]
@@ -60,7 +64,7 @@ class Inputs:
     def slots(self, starts: np.ndarray) -> np.ndarray:
         """The slots of the intervals that start at ``starts`` (no sample time inside an interval), one row each:
         ``[ta, u_1(ta), rate_1, u_2(ta), rate_2, ...]``; a function's are zeros (a compiled run writes them at
-        every evaluation, :func:`driven`)."""
+        every evaluation, ``simulate.driven_model``)."""
         out = np.empty((starts.size, 1 + 2 * len(self.names)))
         out[:, 0] = starts
         for i, (kind, data) in enumerate(zip(self.kinds, self.data)):
@@ -234,7 +238,7 @@ def _check_signature(f, name: str) -> None:
 
 def _slots_held(module) -> bool:
     """Whether ``q = module.constants(p)`` holds the input slots of ``p`` at the same places and nothing else
-    of ``q`` depends on them (``derivation/input_slots.py``), as :func:`driven` needs."""
+    of ``q`` depends on them (``derivation/input_slots.py``), as ``simulate.driven_model`` needs."""
     n_p = len(module.PARAM_NAMES)
     n = n_p + 1 + 2 * len(module.INPUT_NAMES)
     one, two = np.full(n, 0.75), np.full(n, 0.75)
@@ -243,63 +247,6 @@ def _slots_held(module) -> bool:
         q1, q2 = module.constants.py_func(one), module.constants.py_func(two)
     rest = np.r_[0:n_p, n:q1.size]
     return bool(np.array_equal(q2[n_p:n], two[n_p:]) and np.array_equal(q1[rest], q2[rest], equal_nan=True))
-
-
-#: the modules of :func:`driven`, by the model's module and the functions' names
-_DRIVEN: dict = {}
-
-
-def driven(model, inp: Inputs):
-    """``model`` whose compiled right-hand sides (``rhs_q_into``, ``rhs_pose_q_into``) first write each function
-    input of ``inp`` into its slots of ``q`` at the time ``t`` they are called at, then call the model's.
-
-    The slots of input ``u`` (its value and rate ``q[NP + 1 + 2 i]``, ``q[NP + 2 + 2 i]``, read as ``value +
-    rate (t - q[NP])``) get ``u(t) - r (t - q[NP])`` and ``r = du_dt(t)`` (``r = 0`` and ``u(t)`` where the
-    model does not read the rate), so that the model reads ``u(t)`` and ``du_dt(t)`` while the other inputs'
-    slots (numbers, samples of the interval starting at ``q[NP]``) stay as they are.  Every compiled method
-    takes it as the model's right-hand side (the adaptive ones through the path of a right-hand side without
-    IR, :class:`~knifeedge.integrators.erk.AdaptiveKernel`); the kernel's cache name names the functions by
-    their module files' SHA-256 (:mod:`knifeedge.integrators.cache`).  ``check_compiled`` must have passed.
-    """
-    from .integrators.cache import digest
-
-    module = model.module
-    n_p = len(module.PARAM_NAMES)
-    functions = tuple((n_p + 1 + 2 * i, data[0], data[1] if name in inp.rates_read else None)
-                      for i, (name, kind, data) in enumerate(zip(inp.names, inp.kinds, inp.data))
-                      if kind == "function")
-    key = digest(functions)[:16]
-    name = f"{module.__name__}__inputs_{key}"
-    if (name, id(module)) not in _DRIVEN:
-        ns = types.ModuleType(name)
-        ns.__dict__.update({k: v for k, v in vars(module).items() if k != "__name__"})
-        ns.LLVM_IR = {k: v for k, v in getattr(module, "LLVM_IR", {}).items() if not k.startswith("rhs")}
-        for rhs_name in ("rhs_q_into", "rhs_pose_q_into"):
-            if hasattr(module, rhs_name):
-                rhs = getattr(module, rhs_name)
-                for slot, f, df in functions:
-                    rhs = _writing(rhs, slot, n_p, f, df)
-                setattr(ns, rhs_name, rhs)
-        _DRIVEN[(name, id(module))] = (ns, module)
-    out = copy.copy(model)
-    out.module = _DRIVEN[(name, id(module))][0]
-    return out
-
-
-def _writing(rhs, SLOT: int, T0: int, f, df):
-    """``rhs(t, s, q, ds)`` after writing the input ``f`` (and its rate ``df``, or none) into ``q[SLOT]``,
-    ``q[SLOT + 1]`` (see :func:`driven`)."""
-    if df is None:
-        def rhs_with_input(t, s, q, ds):
-            q[SLOT] = f(t)
-            rhs(t, s, q, ds)
-    else:
-        def rhs_with_input(t, s, q, ds):
-            r = df(t)
-            q[SLOT] = f(t) - r * (t - q[T0])
-            q[SLOT + 1] = r
-            rhs(t, s, q, ds)
-    return njit(error_model="numpy")(rhs_with_input)
 
 
 def read_samples(path, name: str) -> tuple:

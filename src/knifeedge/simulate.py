@@ -11,13 +11,16 @@ argument); a failed integration is reported in ``success``/``status``/
 """
 from __future__ import annotations
 
+import copy
 import math
 import threading
+import types
 import warnings
 import dataclasses
 from dataclasses import dataclass, field
 
 import numpy as np
+from numba import njit
 
 from . import _validate
 from . import inputs as _inputs
@@ -915,7 +918,7 @@ def simulate(
     if run.inputs is not None and run.inputs.has_function and compiled:  # its rhs calls them (inputs.driven)
         with compile_mode_set("wait"):  # no SciPy twin nor compiling process: they would not call them
             t, y, found, outcome, nfev, nsteps, nrej = _run_segments(
-                METHODS[method], dataclasses.replace(run, model=_inputs.driven(model, run.inputs)))
+                METHODS[method], dataclasses.replace(run, model=driven_model(model, run.inputs)))
     elif run.inputs is not None and not run.inputs.has_function:  # numbers and samples: interval by interval
         t, y, found, outcome, nfev, nsteps, nrej = _run_segments(METHODS[method], run)
     else:
@@ -1005,3 +1008,58 @@ def _run_segments(runner, r):
             break
     events = {name: np.concatenate(v) for name, v in found.items()}
     return np.concatenate(ts), np.concatenate(ys, axis=1), events, outcome, nfev, nsteps, nrej
+
+
+#: the modules of :func:`driven_model`, by name (the model's module's and a hash of the functions) and module
+_DRIVEN: dict = {}
+
+
+def driven_model(model: Model, inp) -> Model:
+    """``model`` whose compiled right-hand sides (``rhs_q_into``, ``rhs_pose_q_into``) first write each function
+    input of ``inp`` (:class:`knifeedge.inputs.Inputs`) into its slots of ``q`` at the time ``t`` they are
+    called at, then call the model's: what every compiled method runs for a function input.
+
+    The slots of input ``u`` (value and rate ``q[NP + 1 + 2 i]``, ``q[NP + 2 + 2 i]``, read as ``value + rate
+    (t - q[NP])``) get ``u(t) - r (t - q[NP])`` and ``r = du_dt(t)`` (``u(t)`` alone where the model does not
+    read the rate), so that the model reads ``u(t)`` and ``du_dt(t)`` while the other inputs' slots (numbers,
+    samples of the interval starting at ``q[NP]``) stay as they are.  The adaptive kernels take it through their
+    path of a right-hand side without IR (:class:`~knifeedge.integrators.erk.AdaptiveKernel`), the fixed-step
+    ones as their right-hand side; the kernel's cache name names the functions by their files' SHA-256
+    (:mod:`knifeedge.integrators.cache`).  :func:`knifeedge.inputs.check_compiled` must have passed.
+    """
+    from .integrators.cache import digest
+
+    module = model.module
+    n_p = len(module.PARAM_NAMES)
+    functions = inp.functions(n_p)
+    name = f"{module.__name__}__inputs_{digest(functions)[:16]}"
+    if (name, id(module)) not in _DRIVEN:
+        ns = types.ModuleType(name)
+        ns.__dict__.update({k: v for k, v in vars(module).items() if k != "__name__"})
+        ns.LLVM_IR = {k: v for k, v in getattr(module, "LLVM_IR", {}).items() if not k.startswith("rhs")}
+        for rhs_name in ("rhs_q_into", "rhs_pose_q_into"):
+            if hasattr(module, rhs_name):
+                rhs = getattr(module, rhs_name)
+                for slot, f, df in functions:
+                    rhs = _writing(rhs, slot, n_p, f, df)
+                setattr(ns, rhs_name, rhs)
+        _DRIVEN[(name, id(module))] = (ns, module)
+    out = copy.copy(model)
+    out.module = _DRIVEN[(name, id(module))][0]
+    return out
+
+
+def _writing(rhs, SLOT: int, T0: int, f, df):
+    """``rhs(t, s, q, ds)`` after writing the input ``f`` (and its rate ``df``, or none) into ``q[SLOT]``,
+    ``q[SLOT + 1]`` (see :func:`driven_model`)."""
+    if df is None:
+        def rhs_with_input(t, s, q, ds):
+            q[SLOT] = f(t)
+            rhs(t, s, q, ds)
+    else:
+        def rhs_with_input(t, s, q, ds):
+            r = df(t)
+            q[SLOT] = f(t) - r * (t - q[T0])
+            q[SLOT + 1] = r
+            rhs(t, s, q, ds)
+    return njit(error_model="numpy")(rhs_with_input)
