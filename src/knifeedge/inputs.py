@@ -195,6 +195,11 @@ def check_compiled(model, inp: Inputs, method: str) -> None:
     the slots as ``p`` does (derived before it did)."""
     if inp is None or not inp.has_function:
         return
+    if not _slots_held(model.module):
+        raise ValueError(f"`inputs`: the generated module of {model.name} ({model.module.__file__}) was written "
+                         f"before its constants(p) held the input slots as p does, so its compiled methods cannot "
+                         f"take a function input; derive it again (knifeedge derive FILE --out DIR), or sample "
+                         f"the input, or use a SciPy method")
     for name, kind, data in zip(inp.names, inp.kinds, inp.data):
         if kind != "function":
             continue
@@ -211,11 +216,6 @@ def check_compiled(model, inp: Inputs, method: str) -> None:
                                  f"(inputs={{{name!r}: (ts, f(ts))}}), or use a SciPy method "
                                  f"(method='scipy:DOP853'), which calls any Python function")
             _check_signature(g, name)
-    if not _slots_held(model.module):
-        raise ValueError(f"`inputs`: the generated module of {model.name} ({model.module.__file__}) was written "
-                         f"before its constants(p) held the input slots as p does, so its compiled methods cannot "
-                         f"take a function input; derive it again (knifeedge derive FILE --out DIR), or sample "
-                         f"the input, or use a SciPy method")
 
 
 def _check_signature(f, name: str) -> None:
