@@ -73,19 +73,21 @@ def _solve_in_place(P, X):
                 P[c, j], P[piv, j] = P[piv, j], P[c, j]
             for j in range(X.shape[1]):
                 X[c, j], X[piv, j] = X[piv, j], X[c, j]
+        inverse = 1.0 / P[c, c]
         for r in range(c + 1, n):
-            f = P[r, c] / P[c, c]
+            f = P[r, c] * inverse
             if f != 0.0:
                 for j in range(c, n):
                     P[r, j] -= f * P[c, j]
                 for j in range(X.shape[1]):
                     X[r, j] -= f * X[c, j]
     for c in range(n - 1, -1, -1):
+        inverse = 1.0 / P[c, c]
         for j in range(X.shape[1]):
             acc = X[c, j]
             for l in range(c + 1, n):
                 acc -= P[c, l] * X[l, j]
-            X[c, j] = acc / P[c, c]
+            X[c, j] = acc * inverse
 
 
 @njit(cache=True)
@@ -131,9 +133,10 @@ def expm(A, out, W):
         norm = max(norm, col)
     s = 0 if norm <= _THETA13 else int(math.ceil(math.log2(norm / _THETA13)))
     A1, A2, A4, A6, T, U = W[0], W[1], W[2], W[3], W[4], W[5]
+    scale = 0.5 ** s
     for i in range(n):
         for j in range(n):
-            A1[i, j] = A[i, j] * 0.5 ** s
+            A1[i, j] = A[i, j] * scale
     matmul(A1, A1, A2)
     matmul(A2, A2, A4)
     matmul(A4, A2, A6)
@@ -156,7 +159,9 @@ def expm(A, out, W):
     _solve_in_place(A2, out)  # (V - U)^-1 (V + U)
     for _ in range(s):
         matmul(out, out, T)
-        out[:] = T
+        for i in range(n):
+            for j in range(n):  # (a loop: a slice assignment costs seconds of compile)
+                out[i, j] = T[i, j]
 
 
 @njit(cache=True)
