@@ -12,8 +12,9 @@ The celt (Schoemer's set, undamped) from a slightly tilted spin at -2 rad/s (it 
 * **cost**, median of ``--repeats``, interleaved in one process (warm): a plain RK4 run with the same step (the
   same method and step), a plain DOP853 run at the matching tolerance, the largest exponent (``k=1``) and
   the full spectrum (5 exponents of the physical phase space), step-controlled (the tangent vectors to ``rtol``,
-  and to ``--tangent-rtol``, looser) and fixed-step; the steps of each.  The issue's bars: largest <= 3x, full
-  <= 10x a plain run at the same accuracy.
+  and to ``--tangent-rtol``, looser; each by the default tangent method -- Runge-Kutta stages for the largest,
+  Magnus steps for the spectrum -- and by the other one) and fixed-step; the steps of each (and the Magnus
+  tangent steps).  The issue's bars: largest <= 3x, full <= 10x a plain run at the same accuracy.
 * **jitcode** (optional peer, ``pip install jitcode``; skipped with a note when absent): ``jitcode_lyap`` on the
   same equations -- ``M(n) domega/dt = f(n, omega)``, ``dn/dt = n x omega`` from ``derivation.rigid.equations``
   (the derivation the generated module comes from), fed to jitcode as common subexpressions (``helpers``, from
