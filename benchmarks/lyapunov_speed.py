@@ -12,8 +12,9 @@ The celt (Schoemer's set, undamped) from a slightly tilted spin at -2 rad/s (it 
 * **cost**, median of ``--repeats``, interleaved in one process (warm): a plain RK4 run with the same step (the
   same method and step), a plain DOP853 run at the matching tolerance, the largest exponent (``k=1``) and
   the full spectrum (5 exponents of the physical phase space), step-controlled (the tangent vectors to ``rtol``,
-  and to ``--tangent-rtol``, looser) and fixed-step; the steps of each.  The issue's bars: largest <= 3x, full
-  <= 10x a plain run at the same accuracy.
+  and to ``--tangent-rtol``, looser; each by the default tangent method -- Runge-Kutta stages for the largest,
+  Magnus steps for the spectrum -- and by the other one) and fixed-step; the steps of each (and the Magnus
+  tangent steps).  The issue's bars: largest <= 3x, full <= 10x a plain run at the same accuracy.
 * **jitcode** (optional peer, ``pip install jitcode``; skipped with a note when absent): ``jitcode_lyap`` on the
   same equations -- ``M(n) domega/dt = f(n, omega)``, ``dn/dt = n x omega`` from ``derivation.rigid.equations``
   (the derivation the generated module comes from), fed to jitcode as common subexpressions (``helpers``, from
@@ -84,6 +85,8 @@ def costs(m, p, y0, span: float, rtol: float, rtol853: float, h: float, repeats:
         "largest_loose": lambda: ke.lyapunov(m, y0, p, span, k=1, tau=TAU, rtol=rtol, atol=atol,
                                              tangent_rtol=tangent_rtol),
         "full_loose": lambda: ke.lyapunov(m, y0, p, span, tau=TAU, rtol=rtol, atol=atol, tangent_rtol=tangent_rtol),
+        "largest_magnus": lambda: ke.lyapunov(m, y0, p, span, k=1, tau=TAU, rtol=rtol, atol=atol, tangents="magnus"),
+        "full_rk_tangents": lambda: ke.lyapunov(m, y0, p, span, tau=TAU, rtol=rtol, atol=atol, tangents="rk"),
         "largest_rk4": lambda: ke.lyapunov(m, y0, p, span, k=1, h=h, tau=TAU),
         "full_rk4": lambda: ke.lyapunov(m, y0, p, span, h=h, tau=TAU),
     }
@@ -92,6 +95,8 @@ def costs(m, p, y0, span: float, rtol: float, rtol853: float, h: float, repeats:
     _end(m, y0, p, 1.0, rtol=rtol853, atol=rtol853 * 1e-2)
     _end(m, y0, p, 1.0, method="RK4", h=h)
     ke.lyapunov(m, y0, p, 1.0, k=1, tau=TAU, rtol=rtol)
+    ke.lyapunov(m, y0, p, 1.0, k=1, tau=TAU, rtol=rtol, tangents="magnus")
+    ke.lyapunov(m, y0, p, 1.0, tau=TAU, rtol=rtol, tangents="rk")
     ke.lyapunov(m, y0, p, 1.0, k=1, h=h, tau=TAU)
     samples = {k: [] for k in runs}
     out = {}
@@ -104,19 +109,23 @@ def costs(m, p, y0, span: float, rtol: float, rtol853: float, h: float, repeats:
     e0 = float(m.energy(y0, p))
     drift = lambda y: abs(float(m.energy(y, p)) - e0) / abs(e0)  # noqa: E731
     steps = {k: (r.nsteps if k.startswith("plain") else r.steps) for k, r in out.items()}
+    tangent_steps = {k: r.tangent_steps for k, r in out.items() if not k.startswith("plain") and r.tangent_steps}
     return {
-        "seconds": med, "samples": samples, "steps": steps, "tangent_rtol": tangent_rtol,
+        "seconds": med, "samples": samples, "steps": steps, "tangent_steps": tangent_steps, "tangent_rtol": tangent_rtol,
         "ratio_largest_vs_dp54": med["largest"] / med["plain_dp54"], "ratio_full_vs_dp54": med["full"] / med["plain_dp54"],
         "ratio_largest_loose_vs_dp54": med["largest_loose"] / med["plain_dp54"],
         "ratio_full_loose_vs_dp54": med["full_loose"] / med["plain_dp54"],
         "ratio_largest_vs_dop853": med["largest"] / med["plain_dop853"],
         "ratio_full_vs_dop853": med["full"] / med["plain_dop853"],
+        "ratio_largest_magnus_vs_dp54": med["largest_magnus"] / med["plain_dp54"],
+        "ratio_full_rk_tangents_vs_dp54": med["full_rk_tangents"] / med["plain_dp54"],
         "ratio_largest_rk4_vs_rk4": med["largest_rk4"] / med["plain_rk4"],
         "ratio_full_rk4_vs_rk4": med["full_rk4"] / med["plain_rk4"],
         "steps_dp54_loop": out["full"].steps, "rejected_dp54_loop": out["full"].rejected,
         "exponents": [float(x) for x in out["full"].exponents], "uncertainty": [float(x) for x in out["full"].uncertainty],
         "exponents_rk4": [float(x) for x in out["full_rk4"].exponents],
         "exponents_loose": [float(x) for x in out["full_loose"].exponents],
+        "exponents_rk_tangents": [float(x) for x in out["full_rk_tangents"].exponents],
         "largest": float(out["largest"].exponents[0]),
         "energy_drift": {"dp54_loop": drift(out["full"].y), "plain_dp54": drift(out["plain_dp54"].y[:, -1]),
                          "plain_dop853": drift(out["plain_dop853"].y[:, -1]), "rk4_loop": drift(out["full_rk4"].y)},

@@ -110,7 +110,7 @@ LAYERS = (
     ("knifeedge.models", "knifeedge.inputs"),
     ("knifeedge.integrators",),
     ("knifeedge.simulate", "knifeedge.runspec", "knifeedge.sections", "knifeedge.reversal", "knifeedge.stability",
-     "knifeedge.lyapunov", "knifeedge.background", "knifeedge.store"),
+     "knifeedge.lyapunov", "knifeedge.magnus", "knifeedge.background", "knifeedge.store"),
     ("knifeedge.sweep", "knifeedge.workers", "knifeedge.scenes", "knifeedge.figures", "knifeedge.animation"),
     ("knifeedge.cli", "knifeedge.__main__", "knifeedge"),
 )

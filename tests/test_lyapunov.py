@@ -70,7 +70,7 @@ def test_step_control_gives_the_fixed_steps_exponents():
 
 
 def test_a_looser_tangent_tolerance_takes_fewer_steps_for_nearly_the_same_exponents():
-    """``tangent_rtol`` weighs the tangent vectors' errors apart from the state's: looser, fewer steps, and the
+    """``tangent_rtol`` weighs the tangent vectors' errors apart from the state's: looser, fewer tangent steps, and the
     exponents move by about the looser tolerance (not by the exponents' size, as controlling the state alone did);
     the re-orthonormalizations fall at the ends of the steps at or past each multiple of ``tau``, the last at the
     end of the span."""
@@ -79,7 +79,7 @@ def test_a_looser_tangent_tolerance_takes_fewer_steps_for_nearly_the_same_expone
     y0 = m.state(theta1=0.02, theta2=0.01, theta1_dot=0.0, theta2_dot=0.0, phi_dot=0.3)
     tight = ke.lyapunov(m, y0, p, 40.0, tau=0.5, rtol=1e-10)
     loose = ke.lyapunov(m, y0, p, 40.0, tau=0.5, rtol=1e-10, tangent_rtol=1e-6)
-    assert loose.steps < tight.steps
+    assert loose.tangent_steps < tight.tangent_steps and loose.steps == tight.steps  # the state's steps are its own
     np.testing.assert_allclose(loose.exponents, tight.exponents, rtol=0, atol=1e-5)
     assert np.abs(loose.exponents - tight.exponents).max() > 1e-12  # the tangents' steps did change
     t = tight.history_t
@@ -118,6 +118,8 @@ def test_bad_arguments_are_named():
         ke.lyapunov(m, y0, p, 1.0, h=0.01, atol=1e-9)
     with pytest.raises(ValueError, match="`rtol`"):
         ke.lyapunov(m, y0, p, 1.0, rtol=-1.0)
+    with pytest.raises(ValueError, match="`tangents`"):
+        ke.lyapunov(m, y0, p, 1.0, rtol=1e-8, tangents="euler")
 
 
 @pytest.mark.slow
@@ -147,3 +149,110 @@ def test_on_an_integrable_body_the_exponents_fall_like_log_t_over_t():
         assert 0.3 < largest[t_end] * t_end / np.log(t_end) < 3.0
     expected = (np.log(1e4) / 1e4) / (np.log(1e3) / 1e3)  # 0.133
     assert largest[1e4] / largest[1e3] == pytest.approx(expected, rel=0.3)
+
+
+def test_the_matrix_exponential_is_scipys():
+    """``magnus.expm`` (scaling and squaring, [13/13] Pade, after balancing by powers of 2) against
+    ``scipy.linalg.expm`` on matrices from the round-off scale to norms of hundreds, and on a badly scaled one like
+    the celt's Jacobian (tilts against rates)."""
+    from scipy.linalg import expm as scipy_expm
+
+    magnus = importlib.import_module("knifeedge.magnus")
+    rng = np.random.default_rng(3)
+    out, W, d = np.empty((7, 7)), np.empty((6, 7, 7)), np.empty(7)
+    scaling = np.diag(2.0 ** np.arange(-4, 3))
+    for norm in (1e-6, 0.1, 1.0, 5.0, 20.0, 100.0):
+        for A in (rng.standard_normal((7, 7)), scaling @ rng.standard_normal((7, 7)) @ np.linalg.inv(scaling)):
+            A = A * norm / np.abs(A).sum(axis=0).max()
+            expected = scipy_expm(A)
+            magnus.expm(A, out, W)
+            assert np.abs(out - expected).max() <= 1e-12 * np.abs(expected).max(), norm
+            B = A.copy()
+            magnus.balance(B, d)  # D^-1 A D, D = diag(d) exactly
+            np.testing.assert_array_equal(B, A / d[:, None] * d[None, :])
+
+
+def test_the_magnus_step_is_of_sixth_order_with_a_fifth_order_error_estimate():
+    """One step of ``dV/dt = A(t) V`` (a smooth, non-commuting A(t)) against SciPy's DOP853 at rtol 1e-13: halving
+    the step divides the error by about 2^7 (local error of a sixth-order method) and the estimate (Omega6 -
+    Omega4) V by about 2^5 (the fourth-order method's local error), Blanes, Casas & Ros (2000)."""
+    from scipy.integrate import solve_ivp
+
+    magnus = importlib.import_module("knifeedge.magnus")
+    rng = np.random.default_rng(0)
+    n = 5
+    A0, A1, A2 = (rng.standard_normal((n, n)) for _ in range(3))
+    A = lambda t: A0 + t * A1 + np.sin(3 * t) * A2  # noqa: E731
+    Q = np.ascontiguousarray(np.eye(n)[:, :3])
+    errors, estimates = [], []
+    for h in (0.1, 0.05, 0.025):
+        J = np.array([A(c * h) for c in magnus.GAUSS_NODES])
+        Q_new = np.empty_like(Q)
+        estimates.append(magnus.magnus_step(J, h, Q, Q_new, np.empty((8, n, n)), np.empty((6, n, n)), np.empty(n),
+                                            1.0))
+        ref = solve_ivp(lambda t, v: (A(t) @ v.reshape(n, 3)).ravel(), (0, h), Q.ravel(), method="DOP853",
+                        rtol=1e-13, atol=1e-15).y[:, -1].reshape(n, 3)
+        errors.append(np.abs(Q_new - ref).max())
+    assert 2 ** 6.5 < errors[0] / errors[1] < 2 ** 7.5 and 2 ** 6.5 < errors[1] / errors[2] < 2 ** 7.5, errors
+    assert 2 ** 4.7 < estimates[0] / estimates[1] < 2 ** 5.3 and 2 ** 4.7 < estimates[1] / estimates[2] < 2 ** 5.3
+
+
+def test_magnus_tangents_of_a_constant_linear_flow_are_exact():
+    """For ``dy/dt = A y`` the tangent flow is ``exp(A t)``: the loop's Magnus steps are exact whatever steps the
+    state takes, so one re-orthonormalization after T gives log |R_jj| of the QR of ``expm(A T) Q0`` (numpy's QR,
+    SciPy's expm), to round-off; and a tangent step spans as many state steps as the loop holds (J is constant: the
+    error estimate is 0)."""
+    from numba import njit
+    from scipy.linalg import expm as scipy_expm
+
+    ly = importlib.import_module("knifeedge.lyapunov")
+    n = 4
+
+    @njit
+    def rhs_into(t, s, p, ds):
+        for i in range(n):
+            ds[i] = 0.0
+            for j in range(n):
+                ds[i] += p[i * n + j] * s[j]
+
+    @njit
+    def jvp_into(s, p, V, ds, out):
+        rhs_into(0.0, s, p, ds)
+        for i in range(n):
+            for c in range(V.shape[1]):
+                out[i, c] = 0.0
+                for j in range(n):
+                    out[i, c] += p[i * n + j] * V[j, c]
+
+    @njit
+    def gradients(s, p):
+        return np.zeros((0, n))
+
+    A = np.array([[-0.1, 2.0, 0.0, 0.0], [-2.0, -0.1, 0.0, 0.0], [0.3, 0.0, 0.05, 1.0], [0.0, 0.2, -1.0, 0.05]])
+    Q0 = np.ascontiguousarray(np.linalg.qr(np.arange(1.0, 17.0).reshape(4, 4) + np.eye(4))[0][:, :3])
+    T = 20.0
+    y, Q, sums, hist_t, hist, steps, rejected, tangent_steps, _ = ly._magnus_kernel()(
+        rhs_into, jvp_into, gradients, importlib.import_module("knifeedge.magnus").magnus_step,
+        np.array([1.0, 0.0, 0.5, 0.0]), Q0.copy(), A.ravel().copy(), T, 1, 1e-8,
+        1e-10, 1e-8, 1e-3, 10**6)
+    expected = np.log(np.abs(np.diag(np.linalg.qr(scipy_expm(A * T) @ Q0)[1])))
+    np.testing.assert_allclose(sums, expected, rtol=1e-12, atol=1e-12)
+    assert hist_t[-1] == T and steps > 100 and tangent_steps <= steps // ly._HELD + 5  # 5: the first steps' growth
+
+
+@pytest.mark.slow  # the full celt's jvp_into and both step-controlled loops (~15 s of CPU cold)
+def test_magnus_tangents_agree_with_runge_kutta_tangents_through_a_reversal():
+    """Schoemer's celt spun the wrong way (-2 rad/s, tilted 0.05 rad) reverses within 20 s (scene
+    ``celt_schoemer``): along this strongly varying Jacobian the Magnus tangent steps (their own steps, J from the
+    state's dense output) and Dormand-Prince stages on the variational equations are two discretizations of the same
+    tangent flow, so over 60 s their five exponents agree to about the tolerance, on the same trajectory."""
+    m = ke.load("celt")
+    p = m.preset("schoemer", sigma=0.0)
+    y0 = m.initial_state(n0=(np.sin(0.05), 0.0, np.cos(0.05)), omega0=(0.0, 0.0, -2.0))
+    magnus = ke.lyapunov(m, y0, p, 60.0, tau=1.0, rtol=1e-10)
+    rk = ke.lyapunov(m, y0, p, 60.0, tau=1.0, rtol=1e-10, tangents="rk")
+    assert magnus.method.endswith("Magnus tangents") and 0 < magnus.tangent_steps < magnus.steps
+    omega_z = m.closed_state_names.index("omega_z")
+    assert y0[omega_z] < 0 < magnus.y[omega_z]  # it reversed
+    np.testing.assert_allclose(magnus.exponents, rk.exponents, rtol=0, atol=1e-8)
+    np.testing.assert_allclose(magnus.y, rk.y, rtol=0, atol=1e-8)

@@ -1,12 +1,14 @@
 """Lyapunov exponents of the physical phase space by the Benettin/QR method on the emitted variational equations.
 
-The state and ``k`` tangent vectors are stepped together by the classical fourth-order Runge-Kutta method in one
-compiled loop (the generated ``jvp_into``: the rates and the Jacobian-vector product ``J(y) Q`` of the ``k``
-tangent vectors in one call; no Python call per step); every ``tau`` of time the tangent vectors are
-re-orthonormalized (modified Gram-Schmidt, the QR of ChaosTools.jl's ``lyapunovspectrum``) and the logarithms of
-the diagonal of R are summed.  The tangent vectors start orthogonal to the gradients of the
+With a fixed step, the state and ``k`` tangent vectors are stepped together by the classical fourth-order
+Runge-Kutta method in one compiled loop (the generated ``jvp_into``: the rates and the Jacobian-vector product
+``J(y) Q`` of the ``k`` tangent vectors in one call; no Python call per step); every ``tau`` of time the tangent
+vectors are re-orthonormalized (modified Gram-Schmidt, the QR of ChaosTools.jl's ``lyapunovspectrum``) and the
+logarithms of the diagonal of R are summed.  The tangent vectors start orthogonal to the gradients of the
 closed state's invariants (``STATE_INVARIANTS``), so they span the physical phase space, which the tangent flow
-keeps (the round-off that leaks out of it is projected away before each re-orthonormalization).
+keeps (the round-off that leaks out of it is projected away before each re-orthonormalization).  With step
+control (``rtol``) the state takes Dormand-Prince 5(4) steps and the tangent vectors, by default, exponential
+(Magnus) steps of their own (:func:`_benettin_magnus`).
 """
 from __future__ import annotations
 
@@ -16,7 +18,9 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit, types
 
-from .integrators.rk_tableaus import DP54_A, DP54_B, DP54_E
+from .integrators.rk_tableaus import DP54_A, DP54_B, DP54_E, DP54_P
+from . import magnus
+from .magnus import GAUSS_NODES
 from .models import Model
 
 @njit(cache=True)
@@ -227,6 +231,160 @@ def _adaptive_kernel():
     return _benettin_adaptive.overloads[_ADAPTIVE_SIGNATURE].entry_point
 
 
+#: the state's dense output at the Gauss nodes is Shampine's quartic of Dormand-Prince 5(4) (``DP54_P``)
+_P = DP54_P
+_RHS = types.FunctionType(types.none(types.float64, _VECTOR, _VECTOR, _VECTOR))
+_TENSOR = types.float64[:, :, ::1]
+#: :func:`knifeedge.magnus.magnus_step`, called through its address (not inlined: the loop compiles in a third of
+#: the time)
+_MAGNUS_STEP = types.FunctionType(types.float64(_TENSOR, types.float64, _MATRIX, _MATRIX, _TENSOR, _TENSOR, _VECTOR,
+                                                types.float64))
+_MAGNUS_SIGNATURE = (_RHS, _JVP, _MATRIX_OF_STATE, _MAGNUS_STEP, _VECTOR, _MATRIX, _VECTOR, types.float64,
+                     types.int64, types.float64, types.float64, types.float64, types.float64, types.int64)
+#: state steps held for the tangent steps (a tangent step spans at most this many state steps)
+_HELD = 32
+
+
+@njit(cache=True)
+def _copy(dst, src):
+    """``dst = src`` (vectors; a loop compiles in a fraction of the time of a slice assignment)."""
+    for i in range(src.size):
+        dst[i] = src[i]
+
+
+@njit(cache=True)
+def _state_step(rhs_into, y, p, K, yt, y_new, step, rtol, atol):
+    """One Dormand-Prince 5(4) step of the state from ``y`` (``K[0]`` its rate) into ``y_new`` (``K[1:]`` the
+    stages, ``K[6]`` the rate at ``y_new``); returns the scaled RMS error estimate."""
+    for s in range(1, 6):
+        _stage_point(yt, y, step, K, s)
+        rhs_into(0.0, yt, p, K[s])
+    _stage_point(y_new, y, step, K, 6)
+    rhs_into(0.0, y_new, p, K[6])
+    return math.sqrt(_error_squares(y, y_new, K, step, rtol, atol) / y.size)
+
+
+@njit(cache=True)
+def _dense(out, time, held_t, held_h, held_y, held_K, n_held, y, t):
+    """The state at ``time`` from the dense output of the held step that contains it (``y`` at ``t`` past them;
+    ``held_K``: a step's stages in a row)."""
+    for i in range(n_held):
+        if held_t[i] <= time <= held_t[i] + held_h[i]:
+            x, h = (time - held_t[i]) / held_h[i], held_h[i]
+            for c in range(out.size):
+                acc = 0.0
+                for s in range(7):
+                    acc += (((_P[s, 3] * x + _P[s, 2]) * x + _P[s, 1]) * x + _P[s, 0]) * x * held_K[i, s * out.size + c]
+                out[c] = held_y[i, c] + h * acc
+            return
+    _copy(out, y)
+
+
+@njit(cache=True)
+def _hold(held_y, held_K, i, y, K):
+    """Hold a step: its first point ``y`` in row ``i`` of ``held_y``, its stages ``K`` in row ``i`` of ``held_K``."""
+    n = y.size
+    for c in range(n):
+        held_y[i, c] = y[c]
+    for s in range(7):
+        for c in range(n):
+            held_K[i, s * n + c] = K[s, c]
+
+
+@njit(cache=True)
+def _drop_before(time, held_t, held_h, held_y, held_K, n_held):
+    """Drop the held steps that end at or before ``time`` (``held_K`` with a step's stages in a row); returns how
+    many are left."""
+    first = 0
+    while first < n_held and held_t[first] + held_h[first] <= time:
+        first += 1
+    for i in range(first, n_held):
+        held_t[i - first], held_h[i - first] = held_t[i], held_h[i]
+        for c in range(held_y.shape[1]):
+            held_y[i - first, c] = held_y[i, c]
+        for c in range(held_K.shape[1]):
+            held_K[i - first, c] = held_K[i, c]
+    return n_held - first
+
+
+@njit(cache=True)
+def _controlled(h, step, err):
+    """The next step after ``step`` (tried as ``h`` or clipped below it) with the scaled error ``err`` (order 5)."""
+    factor = 10.0 if err == 0.0 else min(10.0, max(0.2, 0.9 * err ** -0.2))
+    return step * factor if (err > 1.0 or step == h) else max(h, step * factor)
+
+
+@njit(cache=True)
+def _benettin_magnus(rhs_into, jvp_into, gradients, magnus_step, y, Q, p, tau, n_blocks, rtol, atol, tangent_tol, h,
+                     max_steps):
+    """As :func:`_benettin_adaptive`, the state stepped by Dormand-Prince 5(4) with its own error control, the tangent
+    vectors by the sixth-order Magnus step (:func:`knifeedge.magnus.magnus_step`) with ``J`` at the Gauss nodes
+    from the state's dense output, over tangent steps of their own (controlled to ``tangent_tol``, at most ``tau``,
+    each within the state steps already taken).  Returns as the other loops, and the tangent steps taken and
+    rejected."""
+    n, k = Q.shape
+    sums, hist, hist_t = np.zeros(k), np.empty((n_blocks, k)), np.empty(n_blocks)
+    K, yt, y_new, ds, eye = np.empty((7, n)), np.empty(n), np.empty(n), np.empty(n), np.zeros((n, n))
+    for i in range(n):
+        eye[i, i] = 1.0
+    J, M, W, d, Q_new = np.empty((3, n, n)), np.empty((8, n, n)), np.empty((6, n, n)), np.empty(n), np.empty((n, k))
+    held_t, held_h, held_y, held_K = np.empty(_HELD), np.empty(_HELD), np.empty((_HELD, n)), np.empty((_HELD, 7 * n))
+    t_final, t_qr, b, n_held = n_blocks * tau, tau, 0, 0
+    accepted, rejected, tangent_steps, tangent_rejected = 0, 0, 0, 0
+    t, T, H = 0.0, 0.0, min(h, tau)
+    rhs_into(0.0, y, p, K[0])
+    while t_final - T > 1e-12 * tau:
+        # the state runs ahead of the tangent vectors until their next step lies within its steps
+        while t < min(T + H, t_final) and t_final - t > 1e-12 * tau and n_held < _HELD:
+            step = min(h, t_final - t)
+            err = _state_step(rhs_into, y, p, K, yt, y_new, step, rtol, atol)
+            if err <= 1.0:
+                held_t[n_held], held_h[n_held] = t, step
+                _hold(held_y, held_K, n_held, y, K)
+                n_held += 1
+                t = t_final if step == t_final - t else t + step
+                _copy(y, y_new)
+                _copy(K[0], K[6])
+                accepted += 1
+            else:
+                rejected += 1
+            h = _controlled(h, step, err)
+            if accepted + rejected >= max_steps:
+                return y, Q, sums, hist_t[:b], hist[:b], -1, rejected, tangent_steps, tangent_rejected
+        step = min(H, t - T)
+        for g in range(3):
+            _dense(yt, T + GAUSS_NODES[g] * step, held_t, held_h, held_y, held_K, n_held, y, t)
+            jvp_into(yt, p, eye, ds, J[g])
+        err = magnus_step(J, step, Q, Q_new, M, W, d, tangent_tol)
+        if err <= 1.0:
+            T = t if step == t - T else T + step
+            for i in range(n):
+                for j in range(k):
+                    Q[i, j] = Q_new[i, j]
+            tangent_steps += 1
+            n_held = _drop_before(T, held_t, held_h, held_y, held_K, n_held)
+            if T >= t_qr - 1e-12 * tau:
+                _dense(yt, T, held_t, held_h, held_y, held_K, n_held, y, t)
+                _project_out(gradients(yt, p), Q)
+                _orthonormalize(Q, sums)
+                hist_t[b] = T
+                for j in range(k):
+                    hist[b, j] = sums[j] / T
+                b += 1
+                t_qr = min(t_final, (math.floor(T / tau + 1e-9) + 1) * tau)
+        else:
+            tangent_rejected += 1
+        H = min(tau, _controlled(H, step, err))
+    return y, Q, sums, hist_t[:b], hist[:b], accepted, rejected, tangent_steps, tangent_rejected
+
+
+def _magnus_kernel():
+    """The compiled loop with Magnus tangent steps (compiled on first use, then loaded from numba's cache)."""
+    if _MAGNUS_SIGNATURE not in _benettin_magnus.overloads:
+        _benettin_magnus.compile(_MAGNUS_SIGNATURE)
+    return _benettin_magnus.overloads[_MAGNUS_SIGNATURE].entry_point
+
+
 @dataclass(frozen=True)
 class LyapunovResult:
     """Lyapunov exponents (1/time, largest first) and their running estimates.
@@ -249,6 +407,8 @@ class LyapunovResult:
     steps: int = 0
     rejected: int = 0
     method: str = "RK4"
+    tangent_steps: int = 0
+    tangent_rejected: int = 0
 
 
 def _jacobian(mod, y: np.ndarray, p: np.ndarray) -> np.ndarray:
@@ -274,7 +434,7 @@ def _physical_basis(m: Model, y: np.ndarray, p: np.ndarray, k: int | None) -> np
 
 def lyapunov(m: Model, y0, p, t_end: float, k: int | None = None, h: float | None = None,
              tau: float | None = None, t0: float = 0.0, rtol: float | None = None, atol: float | None = None,
-             max_steps: int = 10**8, tangent_rtol: float | None = None) -> LyapunovResult:
+             max_steps: int = 10**8, tangent_rtol: float | None = None, tangents: str | None = None) -> LyapunovResult:
     """The ``k`` largest Lyapunov exponents (default: all, of the physical phase space) from ``y0`` over
     ``(t0, t_end)``.
 
@@ -285,9 +445,16 @@ def lyapunov(m: Model, y0, p, t_end: float, k: int | None = None, h: float | Non
     length after each re-orthonormalization, to ``tangent_rtol``, default ``rtol``, relative and absolute), ``h``
     the first step; the tangent vectors are re-orthonormalized at the end of the first step at or past each
     multiple of ``tau`` (default ``span / 1000``, rounded to divide the span), the last time at ``t_end``;
-    ``max_steps`` bounds the steps.  A looser ``tangent_rtol`` takes fewer steps where the tangent vectors
-    oscillate faster than the state moves (a settled spin); the exponents then move by about that tolerance
-    (docs/performance.md, "Lyapunov exponents").
+    ``max_steps`` bounds the steps.  ``tangents`` (with ``rtol``): ``"magnus"`` steps the tangent vectors by the
+    sixth-order Magnus exponential (:mod:`knifeedge.magnus`; ``J`` at the Gauss nodes of the state's dense output)
+    over steps of their own, each within the state's steps, so that where ``J`` hardly changes (a settled spin)
+    neither they nor the state take more steps than the state alone; ``"rk"`` steps them with the state's
+    Dormand-Prince stages (the steps then also resolve the tangent vectors' oscillation; a step costs less: one
+    Jacobian-vector product per vector and stage, no full Jacobian, no matrix exponential).  Default: Magnus for
+    more than one exponent, Runge-Kutta for the largest alone (measured: docs/performance.md).  A looser
+    ``tangent_rtol``
+    takes fewer tangent steps; the exponents then move by about that tolerance (docs/performance.md, "Lyapunov
+    exponents").
     """
     p = m.check_params(p)
     y = m._closed(y0).copy()
@@ -309,7 +476,12 @@ def lyapunov(m: Model, y0, p, t_end: float, k: int | None = None, h: float | Non
         raise ValueError(f"`h` must be a positive step no longer than the span, got {h!r}")
     Q = _physical_basis(m, y, p, k)
     functions = (mod.jvp_into, mod.invariant_gradients)
+    if tangents not in (None, "magnus", "rk"):
+        raise ValueError(f"`tangents` must be 'magnus', 'rk' or None (Magnus for more than one exponent), got "
+                         f"{tangents!r}")
     if rtol is not None:
+        if tangents == "magnus" or (tangents is None and Q.shape[1] > 1):
+            functions = (mod.rhs_into, *functions)
         return _adaptive(functions, y, Q, p, span, float(t0), h, tau, rtol, atol, max_steps, tangent_rtol)
     if atol is not None or tangent_rtol is not None:
         raise ValueError("`atol` and `tangent_rtol` need `rtol` (the adaptive method); with a fixed step `h` leave "
@@ -338,18 +510,25 @@ def _adaptive(functions, y, Q, p, span, t0, h, tau, rtol, atol, max_steps, tange
     n_blocks = max(1, int(round(span / tau)))
     tau = span / n_blocks
     tolerances = float(rtol), float(atol), float(tangent_rtol)
-    y, Q, sums, hist_t, hist, accepted, rejected = _adaptive_kernel()(*functions, y, Q, p, tau, n_blocks,
-                                                                      *tolerances, min(h, tau), max_steps)
+    tangent_steps = tangent_rejected = 0
+    if len(functions) == 3:
+        y, Q, sums, hist_t, hist, accepted, rejected, tangent_steps, tangent_rejected = _magnus_kernel()(
+            *functions, magnus.magnus_step, y, Q, p, tau, n_blocks, *tolerances, min(h, tau), max_steps)
+    else:
+        y, Q, sums, hist_t, hist, accepted, rejected = _adaptive_kernel()(*functions, y, Q, p, tau, n_blocks,
+                                                                          *tolerances, min(h, tau), max_steps)
     if accepted < 0:
         raise RuntimeError(f"the variational equations needed more than `max_steps` = {max_steps} steps; raise it "
                            f"or loosen `rtol`")
-    method = f"DP54 rtol {rtol:g} atol {atol:g}" + (f" tangent_rtol {tangent_rtol:g}" if tangent_rtol != rtol else "")
-    return _result(y, hist_t + t0, hist, span / accepted, tau, accepted, method, rejected)
+    method = (f"DP54 rtol {rtol:g} atol {atol:g}" + (f" tangent_rtol {tangent_rtol:g}" if tangent_rtol != rtol else "")
+              + (", Magnus tangents" if len(functions) == 3 else ""))
+    return _result(y, hist_t + t0, hist, span / accepted, tau, accepted, method, rejected, tangent_steps,
+                   tangent_rejected)
 
 
-def _result(y, hist_t, hist, h, tau, steps, method, rejected=0) -> LyapunovResult:
+def _result(y, hist_t, hist, h, tau, steps, method, rejected=0, tangent_steps=0, tangent_rejected=0) -> LyapunovResult:
     order = np.argsort(-hist[-1], kind="stable")
     hist = hist[:, order]
     tail = hist[-max(1, len(hist_t) // 4):]
     return LyapunovResult(hist[-1].copy(), hist_t, hist, 0.5 * (tail.max(axis=0) - tail.min(axis=0)), y, h, tau,
-                          steps, rejected, method)
+                          steps, rejected, method, tangent_steps, tangent_rejected)
