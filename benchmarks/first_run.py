@@ -18,6 +18,12 @@ that every scene shares (compiled once per machine, by ``knifeedge demo``
 into a cache that is restored at the same path before each scene: numba's
 cache is keyed by the kernel file's path), then warm.
 
+``--compiles`` runs ``knifeedge figures`` once in one process with every
+cache empty and numba's compile events recorded: the CPU seconds of each
+scene and animation, how much of it was numba compiling, and the functions
+that took longest to compile (the kernels' own LLVM parts are not numba
+compiles: they count in the scene's time only).
+
 ``--test-command`` also times the README's test command (the set-up line that
 ends in ``pytest``: a virtual environment, the install, the tests) from a fresh
 clone of this repository's committed ``HEAD``, with empty caches, ``--repeats``
@@ -105,6 +111,61 @@ def measure_per_scene(work: Path) -> dict:
     return rows
 
 
+def compile_profile() -> dict:
+    """``make_figures`` in this process, one task after the other, with numba's top-level compile events recorded
+    per task (run it with empty caches: :func:`measure_compiles`)."""
+    import collections
+
+    from numba.core import event
+
+    from knifeedge import figures
+
+    task, depth, compiles, cpu = ["import"], [0], collections.Counter(), collections.Counter()
+    per_task = collections.Counter()
+
+    class Listener(event.Listener):
+        def on_start(self, ev):
+            depth[0] += 1
+            if depth[0] == 1:
+                self.t0 = time.process_time()
+
+        def on_end(self, ev):
+            if depth[0] == 1:
+                f = getattr(ev.data.get("dispatcher"), "py_func", None)
+                name = f"{f.__module__}.{f.__qualname__}" if f else "?"
+                compiles[name] += time.process_time() - self.t0
+                per_task[task[0]] += time.process_time() - self.t0
+            depth[0] -= 1
+
+    def timed(kind, render):
+        def run(name, out):
+            task[0], t = f"{kind} {name}", time.process_time()
+            try:
+                return render(name, out)
+            finally:
+                cpu[task[0]] += time.process_time() - t
+        return run
+
+    event.register("numba:compile", Listener())
+    figures.render_scene = timed("scene", figures.render_scene)
+    figures.render_animation = timed("animation", figures.render_animation)
+    with tempfile.TemporaryDirectory() as out:
+        figures.make_figures(out, max_workers=1, progress=False)
+    return {"tasks": {k: {"cpu_s": round(v, 2), "numba_compile_s": round(per_task[k], 2)} for k, v in cpu.most_common()},
+            "compiles": {k: round(v, 2) for k, v in compiles.most_common(25)}}
+
+
+def measure_compiles(work: Path) -> dict:
+    env = _cold_env(Path(tempfile.mkdtemp(prefix="compiles-", dir=work)))
+    code = "import json; from benchmarks.first_run import compile_profile; print(json.dumps(compile_profile()))"
+    out = subprocess.run([sys.executable, "-c", code], env=dict(env, KNIFEEDGE_COMPILE="wait"), cwd=ROOT,
+                         capture_output=True, text=True, check=True)
+    result = json.loads(out.stdout.strip().splitlines()[-1])
+    for k, v in result["tasks"].items():
+        print(f"  {v['cpu_s']:6.2f} s CPU, {v['numba_compile_s']:5.2f} s of it numba compiling: {k}", flush=True)
+    return result
+
+
 ROOT = Path(__file__).resolve().parents[1]
 
 
@@ -140,6 +201,8 @@ def main(argv=None) -> int:
     ap.add_argument("--skip-figures", action="store_true")
     ap.add_argument("--per-scene", action="store_true",
                     help="also time each scene alone, cold but for the shared DOP853 integrator")
+    ap.add_argument("--compiles", action="store_true",
+                    help="also profile a cold `knifeedge figures` in one process: CPU and numba compiles per scene")
     ap.add_argument("--test-command", action="store_true",
                     help="also time the README's test command from a fresh clone (minutes per repeat)")
     args = ap.parse_args(argv)
@@ -154,6 +217,9 @@ def main(argv=None) -> int:
         if args.per_scene:
             print("each scene alone", flush=True)
             results["per_scene"] = measure_per_scene(work)
+        if args.compiles:
+            print("knifeedge figures in one process, compiles recorded", flush=True)
+            results["compiles"] = measure_compiles(work)
         if args.test_command:
             print("the README's test command", flush=True)
             results["test_command"] = measure_test_command(args.repeats, work)

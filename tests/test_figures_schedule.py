@@ -84,3 +84,15 @@ def test_figures_compile_other_models_parts_while_the_first_integrator_compiles(
         start = min(e[0] for e in log if e[1] == kind and e[2] == n)
         for key in needs:
             assert max(e[0] for e in log if e[1] == "warm end" and e[2] == key) < start, (kind, n, key)
+
+
+def test_a_scene_that_needs_nothing_compiled_leaves_the_first_processes_to_the_compilations(monkeypatch, tmp_path):
+    """Started first, ``celt_stability`` and ``bicycle_stability`` held both processes while the first integrator
+    and the Lyapunov loop, which every other scene waits for, had to wait for them."""
+    log = _scheduled(monkeypatch, tmp_path, ["predictability", "celt_stability", "bicycle_stability", "numerical2"])
+    starts = [e for e in log if e[1] in ("warm start", "scene", "parts")]
+    assert [e[1] for e in starts[:2]] == ["warm start", "warm start"]  # the first integrator and the loop
+    assert {e[2][0] == "lyapunov" for e in starts[:2]} == {True, False}
+    first_end = min(e[0] for e in log if e[1] == "warm end")
+    for name in ("celt_stability", "bicycle_stability"):
+        assert min(e[0] for e in log if e[1] == "scene" and e[2] == name) > first_end

@@ -73,7 +73,8 @@ def test_first_reversal_and_spin_at_rtol_1e10(m, case):
     assert m.energy(end, p) == pytest.approx(_f(c["energy_end"]), rel=1e-9)
 
 
-@pytest.mark.parametrize("case", CASES)
+#: the default tier keeps Schoemer's case (a crossing, the longest span); the others run in the slow tier
+@pytest.mark.parametrize("case", [pytest.param(c, marks=() if c == "schoemer" else pytest.mark.slow) for c in CASES])
 def test_two_double_formulations_agree_with_it_at_tight_tolerance(m, case):
     """At rtol 1e-13 both the front end's closed form (compiled DOP853) and the Newton--Euler equations
     (SciPy DOP853) give every crossing of omega . n within 1e-11 relative of the 34-digit times (measured:

@@ -499,6 +499,9 @@ def test_rows_received_before_an_interruption_are_written(tmp_path, monkeypatch)
         assert con.execute("SELECT count(*) FROM claims").fetchone()[0] == 0
 
 
+# a pool of two workers and the one that replaces the killed worker (~10 s of CPU); the retries themselves:
+# test_runs_lost_by_the_executor_are_retried_then_left_without_result below, in the default tier
+@pytest.mark.slow
 def test_a_worker_killed_mid_sweep_costs_no_result(tmp_path, quick_table):
     """SIGKILL one worker (as the out-of-memory killer does): its runs are sent again, none becomes an error."""
     out = tmp_path / "runs.sqlite"

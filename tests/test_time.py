@@ -101,11 +101,10 @@ def test_energy_changes_by_the_work_of_the_torque(model):
     assert np.allclose(r.energy, e, rtol=1e-8)
 
 
-def test_prescribed_turning_rate_is_a_rheonomic_constraint(tmp_path):
+@pytest.fixture(scope="module")
+def turned_sleigh(tmp_path_factory):
     """The sleigh's heading turned at the prescribed rate ``Omega(t) = w0 sin t`` (the affine constraint
-    ``phi_dot - w0 sin t = 0``).  From the equations above with ``omega = Omega(t)``: ``dv/dt = a Omega^2``, so
-    ``v(t) = v(t0) + a w0^2 [t/2 - sin(2t)/4]_{t0}^{t}``; the torque that enforces it is the multiplier
-    ``(k^2 + a^2) Omega' + a v Omega``, and its power ``Omega * torque`` is the energy's rate of change."""
+    ``phi_dot - w0 sin t = 0``)."""
     import sympy as sp
 
     from knifeedge.derive import ModelSpec, emit, t
@@ -122,17 +121,41 @@ def test_prescribed_turning_rate_is_a_rheonomic_constraint(tmp_path):
         constraints=(contact.dot(across), phi_dot - w0 * sp.sin(t)), constraint_labels=("knife_edge", "turn"),
         dependent=(y, phi), params=(a, k, w0), cyclic={x: 0, y: 0, phi: 0}, pose=(phi, x, y),
         quasi_velocities=((v, x_dot, contact.dot(axis)),))
-    emit.write_all(tmp_path, derive_specs([spec]), registry=False)
-    m = ke.load("turned_sleigh", path=tmp_path)
+    out = tmp_path_factory.mktemp("turned")
+    emit.write_all(out, derive_specs([spec]), registry=False)
+    return ke.load("turned_sleigh", path=out)
+
+
+def _turned_speed(tt, w):
+    """``v(t) = v(t0) + a w0^2 [t/2 - sin(2t)/4]_{t0}^{t}``, from ``dv/dt = a Omega^2`` with ``v(t0) = 0.1``."""
+    prim = lambda s: s / 2 - math.sin(2 * s) / 4  # noqa: E731
+    return 0.1 + A * w * w * (np.array([prim(s) for s in tt]) - prim(T0))
+
+
+# the RK4 case compiles a fixed-step kernel for this model alone: slow tier
+@pytest.mark.parametrize("method, kw", [("DOP853", {}), ("scipy:DOP853", {}),
+                                        pytest.param("RK4", {"h": 2e-3}, marks=pytest.mark.slow)])
+def test_prescribed_turning_rate_is_a_rheonomic_constraint(turned_sleigh, method, kw):
+    """The sleigh's heading turned at the prescribed rate ``Omega(t) = w0 sin t``.  From the equations above with
+    ``omega = Omega(t)``: ``dv/dt = a Omega^2``, so ``v(t) = v(t0) + a w0^2 [t/2 - sin(2t)/4]_{t0}^{t}``."""
+    m = turned_sleigh
     assert m.state_names == ("v",) and m.time_dependent and m.has_power_input
     w = 1.1
     p = m.params(a=A, k=K, w0=w)
     tt = np.linspace(T0, T1, 21)
-    prim = lambda s: s / 2 - math.sin(2 * s) / 4  # noqa: E731
-    v_exact = 0.1 + A * w * w * (np.array([prim(s) for s in tt]) - prim(T0))
-    for method, kw in (("DOP853", {}), ("RK4", {"h": 2e-3}), ("scipy:DOP853", {})):
-        r = ke.simulate(m, [0.1], (T0, T1), p, method=method, t_eval=tt, rtol=1e-11, atol=1e-13, **kw)
-        assert np.max(np.abs(r.y[0] - v_exact)) < 1e-9 * np.max(np.abs(v_exact)), method
+    v_exact = _turned_speed(tt, w)
+    r = ke.simulate(m, [0.1], (T0, T1), p, method=method, t_eval=tt, rtol=1e-11, atol=1e-13, **kw)
+    assert np.max(np.abs(r.y[0] - v_exact)) < 1e-9 * np.max(np.abs(v_exact)), method
+
+
+def test_prescribed_turning_rate_is_held_by_a_torque_whose_power_is_the_energys_rate(turned_sleigh):
+    """The torque that enforces ``phi_dot = w0 sin t`` is the multiplier ``(k^2 + a^2) Omega' + a v Omega``, and
+    its power ``Omega * torque`` is the energy's rate of change."""
+    m = turned_sleigh
+    w = 1.1
+    p = m.params(a=A, k=K, w0=w)
+    tt = np.linspace(T0, T1, 21)
+    v_exact = _turned_speed(tt, w)
     omega, omega_dot = w * np.sin(tt), w * np.cos(tt)
     torque = (K * K + A * A) * omega_dot + A * v_exact * omega
     assert np.allclose(m.multipliers(v_exact[None, :], p, tt)[1], torque, rtol=1e-12, atol=1e-14)

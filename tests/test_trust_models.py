@@ -113,9 +113,16 @@ def test_root3_a_model_module_is_what_its_header_says_derive_refuses_the_package
         with pytest.raises(DeriveError, match="inside the package's own folders"):
             derive_files([USER_MODEL], folder)
     assert before == {p.name: p.read_bytes() for p in (ROOT / "generated").glob("*.py")}
+    assert not (ROOT / "generated" / "sub").exists()
+
+
+@pytest.mark.slow  # the same refusal through `python -m knifeedge derive` (a process importing SymPy, ~4 s of CPU)
+def test_root3_a_model_module_is_what_its_header_says_derive_command_refuses_the_package_folder():
+    before = {p.name: p.read_bytes() for p in (ROOT / "generated").glob("*.py")}
     r = subprocess.run([sys.executable, "-m", "knifeedge", "derive", str(USER_MODEL), "--out",
                         str(ROOT / "generated")], capture_output=True, text=True)
     assert r.returncode != 0 and "inside the package's own folders" in r.stderr
+    assert before == {p.name: p.read_bytes() for p in (ROOT / "generated").glob("*.py")}
     assert not (ROOT / "generated" / "sub").exists()
 
 
@@ -128,6 +135,14 @@ def test_root3_a_model_module_is_what_its_header_says_users_file_not_overwritten
     mine.write_text("# my own notes, not a generated module\n")
     with pytest.raises(DeriveError, match="not a module knifeedge wrote"):
         check_out(out, [("damped_sleigh", "full")])
+    assert mine.read_text() == "# my own notes, not a generated module\n"
+
+
+@pytest.mark.slow  # the same refusal through `python -m knifeedge derive` (a process deriving, ~5 s of CPU)
+def test_root3_a_model_module_is_what_its_header_says_derive_command_keeps_the_users_file(user_folder, tmp_path):
+    out = _copy(user_folder, tmp_path)
+    mine = out / "damped_sleigh_full.py"
+    mine.write_text("# my own notes, not a generated module\n")
     r = subprocess.run([sys.executable, "-m", "knifeedge", "derive", str(USER_MODEL), "--out", str(out)],
                        capture_output=True, text=True)
     assert r.returncode != 0 and "not overwritten" in r.stderr

@@ -157,7 +157,9 @@ def _schedule(pool, workers: int, order: list, out: Path, report, progress, t0: 
     compute exponents (it shares nothing with the integrators); after that at most
     ``workers`` tasks run at once, a scene as soon as all its integrators are
     compiled, otherwise the next compilation, in the order of the first task
-    that needs it.
+    that needs it.  A scene that needs nothing compiled waits for the first
+    compilation to end: started first, it would hold a process while the
+    compilations that every other scene waits for could run.
     """
     tasks = [("scene", n) for n in order] + [("animation", n) for n in order if n in ANIMATIONS]
     tasks.sort(key=lambda t: _ORDER.index(t) if t in _ORDER else len(_ORDER))  # heaviest first
@@ -175,7 +177,7 @@ def _schedule(pool, workers: int, order: list, out: Path, report, progress, t0: 
     n_warm = len(warms)
     while scenes or running:
         while len(running) < workers:
-            ready = [n for n in scenes if needs[n] <= compiled]
+            ready = [n for n in scenes if needs[n] <= compiled and (needs[n] or compiled or not n_warm)]
             if ready:
                 scenes.remove(ready[0])
                 task = render_scene if ready[0][0] == "scene" else render_animation
