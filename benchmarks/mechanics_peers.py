@@ -6,9 +6,10 @@ Whipple bicycle of SymPy's test_kane3.py with the coordinates a Lagrangian needs
 
 * the CPU time of ``knifeedge derive FILE --out DIR`` in a child process (``from_mechanics``, the engine, the
   symmetry check at a general pose, the emitted module): the time to form the equations and generate code;
-* the time of 10 s of motion at rtol 1e-10 (``ke.simulate``, its default compiled DOP853; compiled beforehand,
-  median of 5 runs) and the largest error of its final state against a converged reference (the same run at
-  rtol 1e-13; its own distance from a run at rtol 1e-12 is printed beside it).
+* the CPU time of 10 s of motion at rtol 1e-10 (``ke.simulate``, its default compiled DOP853; compiled beforehand,
+  median of :data:`ROUNDS` batches) and the largest error of its final state against a converged reference (the
+  same run at rtol 1e-13; its own distance from a run at rtol 1e-12 is printed beside it); "fixed" is the CPU time
+  of a run over 1 ms (a few steps): what ``simulate`` costs around its compiled kernel.
 
 PyDy (``System.generate_ode_function``) is the field's own path; it is optional and skipped with a note when
 absent.  Its rows are the Whipple bicycle as SymPy's ``test_kane3.py`` writes it for Kane's method (the test's own
@@ -72,16 +73,15 @@ def row(name: str, out: Path) -> dict:
     p = m.params(m.default_params)
     y0 = _initial(name, m)
     span = (0.0, 10.0)
-    ke.simulate(m, y0, span, p, rtol=1e-10, atol=1e-12)  # compiles
-    times = []
-    for _ in range(5):
-        t0 = time.perf_counter()
-        run = ke.simulate(m, y0, span, p, rtol=1e-10, atol=1e-12)
-        times.append(time.perf_counter() - t0)
+    go = lambda span=span: ke.simulate(m, y0, span, p, rtol=1e-10, atol=1e-12)  # noqa: E731
+    run = go()  # compiles
+    times = [clocked(go, KNIFEEDGE_BATCH)[1] for _ in range(ROUNDS)]
+    fixed = [clocked(lambda: go((0.0, 1e-3)), 10 * KNIFEEDGE_BATCH)[1] for _ in range(ROUNDS)]
     ref = ke.simulate(m, y0, span, p, rtol=1e-13, atol=1e-15)
     ref12 = ke.simulate(m, y0, span, p, rtol=1e-12, atol=1e-14)
     scale = np.maximum(1.0, np.abs(ref.y[:, -1]))
     return {"model": name, "derive_cpu_s": cpu, "run_10s_ms": 1e3 * statistics.median(times),
+            "fixed_ms": 1e3 * statistics.median(fixed),
             "error": float(np.max(np.abs(run.y[:, -1] - ref.y[:, -1]) / scale)),
             "reference_error": float(np.max(np.abs(ref12.y[:, -1] - ref.y[:, -1]) / scale)),
             "rhs_ops": m.module.OP_COUNTS["rhs"], "elimination": m.module.ELIMINATION, "nfev": int(run.nfev)}
@@ -217,7 +217,7 @@ def pydy_rows(ours) -> list:
             continue
         pydy = _pydy_integrator(rhs, p, x0, integrator, rtol)
         end, nfev = pydy()  # warm
-        error = max(abs(end[index[n]] - ours.reference[n]) for n in ours.reference) / ours.scale
+        error = ours.error({n: end[i] for n, i in index.items()})
         our_rtol = matched(ours.errors, error)
         theirs, mine = [], []
         for _ in range(ROUNDS):
@@ -235,7 +235,8 @@ def pydy_rows(ours) -> list:
 
 class KnifeedgeBicycle:
     """knifeedge's bicycle (derived into ``out``) from the benchmark's state: its converged reference (rtol 1e-13;
-    final state by name), its error and evaluations at each of :data:`KNIFEEDGE_RTOLS`, its parameters by name
+    final state by name), its error (as :func:`row`'s) and evaluations at each of :data:`KNIFEEDGE_RTOLS`, its
+    parameters by name
     (``values``), and ``run(rtol)``: the 10 s run (compiled already)."""
 
     NAMES = ("q2", "q5", "q4", "q2_dot", "q5_dot", "q3_dot")
@@ -247,13 +248,15 @@ class KnifeedgeBicycle:
         self.values = dict(zip(m.param_names, self.p.tolist()))
         end = self.run(1e-13, atol=1e-15)().y[:, -1]
         self.reference = {n: float(end[m.state_names.index(n)]) for n in self.NAMES}
-        self.scale = max(1.0, max(abs(v) for v in self.reference.values()))
         self.errors, self.nfev = {}, {}
         for rtol in KNIFEEDGE_RTOLS:
             r = self.run(rtol)()
-            self.errors[rtol] = max(abs(r.y[m.state_names.index(n), -1] - v) for n, v in self.reference.items()) \
-                / self.scale
+            self.errors[rtol] = self.error({n: r.y[m.state_names.index(n), -1] for n in self.NAMES})
             self.nfev[rtol] = int(r.nfev)
+
+    def error(self, end: dict) -> float:
+        """The largest error of a final state (by name) against the reference, each relative to max(1, |value|)."""
+        return float(max(abs(end[n] - v) / max(1.0, abs(v)) for n, v in self.reference.items()))
 
     def run(self, rtol: float, atol: float | None = None):
         m, y0, p = self.model, self.y0, self.p
@@ -290,14 +293,15 @@ def main(argv=None) -> int:
         note = "pydy is not installed (pip install pydy cython): its rows are skipped"
     print(note)
     print(f"{'model':<20} {'elimination':<11} {'rhs ops':>8} {'derive CPU':>11} {'10 s at 1e-10':>14} "
-          f"{'error':>9} {'ref. error':>10}")
+          f"{'error':>9} {'ref. error':>10}  (CPU times)")
     names = ("whipple_bicycle",) if args.pydy_only else ("sympy_rolling_disc", "differential_drive", "whipple_bicycle")
     with tempfile.TemporaryDirectory() as tmp:
         for name in names:
             r = row(name, Path(tmp))
             print(f"{r['model']:<20} {r['elimination']:<11} {r['rhs_ops']:>8} {r['derive_cpu_s']:>9.1f} s "
                   f"{r['run_10s_ms']:>11.1f} ms {r['error']:>9.1e} {r['reference_error']:>10.1e} ({r['nfev']} "
-                  f"evaluations, {1e3 * r['run_10s_ms'] / r['nfev']:.2f} us each)", flush=True)
+                  f"evaluations, {1e3 * r['run_10s_ms'] / r['nfev']:.2f} us each; fixed {r['fixed_ms']:.3f} ms)",
+                  flush=True)
         if pydy is not None:
             _print_pydy(pydy_rows(KnifeedgeBicycle(Path(tmp))))
     return 0
