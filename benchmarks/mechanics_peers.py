@@ -287,7 +287,7 @@ def main(argv=None) -> int:
     args = ap.parse_args(argv)
     try:
         import pydy
-        note = f"pydy {pydy.__version__}: its rows are the bicycle of sympy's test_kane3.py, one per generator"
+        note = f"pydy {pydy.__version__}: its rows are the bicycle of sympy's test_kane3.py at equal error, one per generator and integrator"
     except ImportError:
         pydy = None
         note = "pydy is not installed (pip install pydy cython): its rows are skipped"
