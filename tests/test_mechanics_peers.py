@@ -317,3 +317,15 @@ def test_sympys_whipple_bicycle_as_written_is_refused_with_the_reason():
          namespace)
     with pytest.raises(MechanicsConversionError, match=r"speeds \[u3\(t\), u6\(t\)\] have no kinematic"):
         from_mechanics(namespace["KM"], name="whipple", cyclic={namespace["q1"]: 0})
+
+
+def test_the_peer_benchmark_matches_errors_not_tolerances():
+    """benchmarks/mechanics_peers.py compares knifeedge and PyDy at equal error: the tolerance of knifeedge whose
+    error is nearest PyDy's (in ratio), not the same nominal rtol (at rtol 1e-10 knifeedge's max-norm control is
+    20x more accurate than SciPy's RMS-norm DOP853 on the bicycle)."""
+    from benchmarks.mechanics_peers import matched
+
+    errors = {1e-10: 5.7e-14, 1e-9: 4.9e-13, 2e-9: 1.1e-12, 1e-8: 4.9e-12}
+    assert matched(errors, 1.6e-12) == 2e-9
+    assert matched(errors, 5.1e-14) == 1e-10
+    assert matched(errors, 3.5e-12) == 1e-8  # 1.4x from 4.9e-12, 3.2x from 1.1e-12
