@@ -18,8 +18,7 @@ import pytest
 
 import knifeedge as ke
 from knifeedge.integrators import COMPILED_METHODS, Status, cache, irparts, kernel, load_kernel
-from knifeedge.integrators import dop853_tableau as t8
-from knifeedge.integrators import rk_tableaus as tb
+from knifeedge.integrators import methods
 
 SINGLE = dict(g=1.0, ell=1.0, L=1.0, D=1.0)
 SINGLE_Y0 = dict(theta=1e-3, theta_dot=0.0, phi_dot=0.1)
@@ -40,19 +39,19 @@ def _two():
 # -- coefficient tables ---------------------------------------------------------
 def test_explicit_tableaus_are_consistent():
     """Row sums of A equal the nodes C; weights sum to 1; error estimators annihilate constants."""
-    np.testing.assert_allclose(t8.A.sum(axis=1), t8.C, atol=1e-14)
-    assert math.isclose(t8.B.sum(), 1.0, abs_tol=1e-14)
-    assert abs(t8.E3.sum()) < 1e-14 and abs(t8.E5.sum()) < 1e-14
-    np.testing.assert_allclose(tb.DP54_A.sum(axis=1), tb.DP54_C, atol=1e-15)
-    assert math.isclose(tb.DP54_B.sum(), 1.0, abs_tol=1e-15)
-    assert abs(tb.DP54_E.sum()) < 1e-15
-    assert math.isclose(tb.RK4_B.sum(), 1.0)
+    np.testing.assert_allclose(methods.DOP853_A.sum(axis=1), methods.DOP853_C, atol=1e-14)
+    assert math.isclose(methods.DOP853_B.sum(), 1.0, abs_tol=1e-14)
+    assert abs(methods.DOP853_E3.sum()) < 1e-14 and abs(methods.DOP853_E5.sum()) < 1e-14
+    np.testing.assert_allclose(methods.DP54_A.sum(axis=1), methods.DP54_C, atol=1e-15)
+    assert math.isclose(methods.DP54_B.sum(), 1.0, abs_tol=1e-15)
+    assert abs(methods.DP54_E.sum()) < 1e-15
+    assert math.isclose(methods.RK4.b.sum(), 1.0)
 
 
 @pytest.mark.parametrize("s", [1, 2, 3])
 def test_gauss_tableaus_satisfy_collocation_conditions(s):
     """Hairer-Lubich-Wanner GNI Sect. II.1.3: B(2s) (b.c^(k-1) = 1/k, k <= 2s) and C(s) (A c^(k-1) = c^k/k)."""
-    A, b, c = tb.GAUSS[s]
+    A, b, c = methods.GAUSS[s]
     for k in range(1, 2 * s + 1):
         assert math.isclose(b @ c ** (k - 1), 1.0 / k, rel_tol=1e-14), k
     for k in range(1, s + 1):

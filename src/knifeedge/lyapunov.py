@@ -16,7 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit, types
 
-from .integrators.rk_tableaus import DP54_A, DP54_B, DP54_E
+from .integrators.methods import DP54_A, DP54_B, DP54_E
 from .models import Model
 
 @njit(cache=True)

@@ -30,7 +30,7 @@ from numba import carray, njit, types
 from . import common as _c
 from . import fnptr as _fnptr
 from . import irparts as _irparts
-from . import tableau as _tableau
+from .methods import erk_arrays
 from .cache import cache_dir, compiled, compiled_cfunc, digest, index_path, is_cached
 from .common import NEAR, SAMPLES
 from .fnptr import call_f8, call_void
@@ -120,7 +120,7 @@ def _workspace_closure(N_EXT: int, DENSE_ROWS: int):
 
 def _driver_closure(tableau: str):
     """The integrator of ``tableau`` as a Python closure over its sizes and helpers."""
-    (_, _, _, _, _, _, _, N_STAGES, N_EXT, DENSE_ROWS, ALT, ERROR_ORDER) = _tableau.erk_arrays(tableau)
+    (_, _, _, _, _, _, _, N_STAGES, N_EXT, DENSE_ROWS, ALT, ERROR_ORDER) = erk_arrays(tableau)
     DENSE_NFEV = N_EXT - N_STAGES - 1  # evaluations of the interpolant beyond the step's (DOP853: 3)
     values = njit(error_model="numpy")(_values_)
     function_ends, locate = _c.function_ends(values), _c.locator(values)
@@ -295,7 +295,7 @@ class AdaptiveKernel:
         tab = _irparts.Tableau(tableau)
         #: the integrator's workspace, as the parts read it (offsets of K, y, y_new, work, scale, F, q)
         self.layout = _irparts.Layout(n_state, tab.n_ext, tab.dense_rows)
-        stem = digest(tableau, _tableau.erk_arrays(tableau), self._rhs, n_state, self.NQ)
+        stem = digest(tableau, erk_arrays(tableau), self._rhs, n_state, self.NQ)
         self.path = cache_dir() / "kernels" / f"erk-{tableau}-{model_module.__name__.rsplit('.', 1)[-1]}-{stem}"
         self.driver = driver(tableau)
         self._events_index = index_path(self._events_py(), f"{self.path.name}-events") if self.NV else None

@@ -1,4 +1,4 @@
-"""Fixed-step kernel for any registered :class:`~knifeedge.integrators.fixed_methods.FixedMethod`.
+"""Fixed-step kernel for any registered :class:`~knifeedge.integrators.methods.FixedMethod`.
 
 :func:`make_solve` returns the kernel of one method for one model: a numba
 function whose closure holds the method's tableau and the state size as
@@ -23,7 +23,7 @@ from numba import njit
 from . import common as _c
 from .cache import compiled, is_cached
 from .common import NEAR, SAMPLES
-from .fixed_methods import FIXED_METHODS
+from .methods import get
 
 MAX_STAGE_ITER = 100
 _EPS = 2.220446049250313e-16
@@ -35,7 +35,7 @@ _OPTIONS = {"error_model": "numpy"}
 
 def _increments(method: str, N: int, rhs):
     """``(rk4, explicit, gauss, solver_scale)``: the step functions of ``method`` on ``N`` states."""
-    m = FIXED_METHODS[method]
+    m = get(method, "fixed")
     S, GA, GC, DENOMINATOR = m.stages, m.A.copy(), m.c.copy(), m.denominator
     GB = m.b * DENOMINATOR  # the increment is h / DENOMINATOR * sum_j GB[j] K_j
 
@@ -160,7 +160,7 @@ def make_solve(method: str, model_module, rhs_name: str, N: int):
 
         values = njit(**_OPTIONS)(values_)
         function_ends, locate = _c.function_ends(values), _c.locator(values)
-    py = _solve_closure(FIXED_METHODS[method], N, rhs, constants, _increments(method, N, rhs), bool(names),
+    py = _solve_closure(get(method, "fixed"), N, rhs, constants, _increments(method, N, rhs), bool(names),
                         function_ends, locate)
     label = f"fixed-{method}-{model_module.__name__.rsplit('.', 1)[-1]}-{rhs_name}"
     return compiled(py, label)

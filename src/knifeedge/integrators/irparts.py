@@ -143,7 +143,7 @@ class Tableau:
     """The tables of a registered method as the parts use them (``tableau.erk_arrays``)."""
 
     def __init__(self, name: str):
-        from .tableau import erk_arrays
+        from .methods import erk_arrays
 
         (self.A, self.C, self.E5, self.E3, self.DD, self.P, self.hairer, self.n_stages, self.n_ext,
          self.dense_rows, _, _) = erk_arrays(name)
