@@ -273,8 +273,9 @@ def test_kernel_refuses_a_state_of_another_size():
     solve = kernel(m, "DOP853")
     y = np.zeros(5)
     with pytest.raises(ValueError, match="size this kernel was specialized to"):
-        solve(0.0, 1.0, y, y, p, 1e-6, np.full(5, 1e-9), 0.0, np.inf, np.empty(0), True, np.array([2]), 10,
-              np.full(5, -1), False, 10, np.empty(4), np.empty((4, 5)), np.empty(4), np.empty(4, dtype=np.int64))
+        solve(0.0, 1.0, y, y, p, (1e-6, np.full(5, 1e-9), 0.0, np.inf, np.full(5, -1), False),
+              (np.empty(0), True, np.array([2]), 10, 10),
+              (np.empty(4), np.empty((4, 5)), np.empty(4), np.empty(4, dtype=np.int64)))
 
 
 def test_cache_dir_follows_the_environment(tmp_path, monkeypatch):

@@ -160,8 +160,8 @@ def test_a_right_hand_side_that_raises_fails_the_run_instead_of_going_on(tmp_pat
     y0, p = np.array([0.5, 2.0, 0.0]), np.array([2.0])
     t_star = (math.asin(0.9 / math.sqrt(1.25)) - math.atan2(0.5, 1.0)) / 2
     ts, ys, ev_t, ev_k = np.empty(2), np.empty((2, 3)), np.empty(64), np.empty(64, dtype=np.int64)
-    out = solve(0.0, 10.0, y0, y0, p, 1e-8, np.full(3, 1e-11), 0.0, np.inf, np.array([5.0, 10.0]), False,
-                np.array([0]), 10**6, np.full(3, -1), False, 10**6, ts, ys, ev_t, ev_k)
+    out = solve(0.0, 10.0, y0, y0, p, (1e-8, np.full(3, 1e-11), 0.0, np.inf, np.full(3, -1), False),
+                (np.array([5.0, 10.0]), False, np.array([0]), 10**6, 10**6), (ts, ys, ev_t, ev_k))
     n_out, status, t_end = out[0], out[2], out[6]
     assert from_code(status) == Status.STEP_SIZE_UNDERFLOW and n_out == 0
     assert 0.99 * t_star < t_end < t_star + 1e-8  # the last accepted step ends where q reaches 0.9

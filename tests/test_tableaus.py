@@ -88,9 +88,10 @@ def _harmonic(method, rtol):
     m_solve = load_kernel("erk", method, _stub, "rhs_q_into", 3).solve
     y0, p = np.array([1.0, 0.0, 0.0]), np.array([2.0])
     ts, ys, ev_t, ev_k = np.empty(2), np.empty((2, 3)), np.empty(64), np.empty(64, dtype=np.int64)
-    n_out, n_ev, status, nfev = m_solve(0.0, 10.0, y0, y0, p, rtol, np.full(3, rtol * 1e-3), 0.0, np.inf,
-                                        np.array([5.0, 10.0]), False, np.array([0]), 10**6, np.full(3, -1), False,
-                                        10**6, ts, ys, ev_t, ev_k)[:4]
+    n_out, n_ev, status, nfev = m_solve(0.0, 10.0, y0, y0, p, (rtol, np.full(3, rtol * 1e-3), 0.0, np.inf,
+                                                                np.full(3, -1), False),
+                                        (np.array([5.0, 10.0]), False, np.array([0]), 10**6, 10**6),
+                                        (ts, ys, ev_t, ev_k))[:4]
     assert status == 0 and n_out == 2
     return ys, ev_t[:n_ev], nfev
 
@@ -165,9 +166,9 @@ def test_an_explicit_tableau_as_data_converges_at_its_order():
     errs = []
     for n_steps in (200, 400):
         ts, ys, ev_t, ev_k = np.empty(2), np.empty((2, 3)), np.empty(64), np.empty(64, dtype=np.int64)
-        out = solve(0.0, 10.0, y0, y0, p, 10.0 / n_steps, n_steps, 0, np.full(3, 1e-12), np.array([10.0]), False,
-                    np.empty(0, dtype=np.int64), 10**6, np.full(3, -1), 10**6, np.zeros(3), np.empty((4, 3)),
-                    ts, ys, ev_t, ev_k)
+        out = solve(0.0, 10.0, y0, y0, p, (10.0 / n_steps, n_steps, 0, np.full(3, 1e-12), np.full(3, -1),
+                                           np.zeros(3), np.empty((4, 3))),
+                    (np.array([10.0]), False, np.empty(0, dtype=np.int64), 10**6, 10**6), (ts, ys, ev_t, ev_k))
         assert out[2] == 0 and out[0] == 1
         errs.append(abs(ys[0, 0] - math.cos(20.0)))
     assert 16 * 0.8 < errs[0] / errs[1] < 16 * 1.25, errs

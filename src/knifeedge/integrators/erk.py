@@ -128,8 +128,7 @@ def _driver_closure(tableau: str):
     ERROR_EXPONENT = -1.0 / (ERROR_ORDER + 1)
     EIGHTH = ERROR_ORDER == 7  # err ** (-1/8) as three square roots, cheaper than pow (DOP853)
 
-    def solve(fns, t0, t1, y0, f0, q, p, rtol, atol, h_init, max_step, t_eval, every, events, max_steps, pair,
-              mode_scaled, chunk, ts, ys, ev_t, ev_k):
+    def solve(fns, t0, t1, y0, f0, q, p, control, request, out):
         """Integrate from ``t0`` toward ``t1 > t0``: at most ``chunk`` accepted steps, as many as the buffers hold.
 
         Parameters
@@ -138,19 +137,21 @@ def _driver_closure(tableau: str):
             :class:`AdaptiveKernel`) and the number of its event functions.
         y0 : (n,) initial state; f0 : (n,) its derivative when continuing (``h_init > 0``), else ignored.
         q : ``constants(p)`` of the right-hand side; p : the parameters (of the event functions).
-        rtol : float; atol : (n,) absolute tolerances.
-        h_init : next step when continuing a run, or 0 to start one (the first step is then chosen).
-        max_step : largest step.
-        t_eval : (m,) increasing output times in (t0, t1] still ahead (used when not ``every``).
-        every : store every accepted step instead of ``t_eval`` (the start is not stored).
-        events : (e,) int, whose zero crossings are recorded: a state component ``c >= 0``, or ``-1 - j`` for
-            the model's event function ``j`` (``event_values(s, p)[j]``), see :mod:`.common`.
-        max_steps : accepted steps allowed (the caller subtracts those already taken).
-        pair : (n,) int, partner component for ``mode_scaled`` error control (-1: none).
-        chunk : accepted steps after which the call returns with status 1 (paused).
-        ts (r,), ys (r, n) : output rows (with ``every``, the call pauses when they are full; otherwise they
-            must hold ``t_eval``); ev_t (c,), ev_k (c,) int: event times and numbers (the call pauses when
-            a step could overflow them: a step finds at most ``SAMPLES + 2`` crossings of each event).
+        control : ``(rtol, atol, h_init, max_step, pair, mode_scaled)``, the step control: ``rtol`` float, ``atol``
+            (n,) absolute tolerances; ``h_init`` the next step when continuing a run, or 0 to start one (the first
+            step is then chosen); ``max_step`` the largest step; ``pair`` (n,) int, the partner component for
+            ``mode_scaled`` error control (-1: none).
+        request : ``(t_eval, every, events, max_steps, chunk)``, what to record and for how long (the same for
+            every kernel): ``t_eval`` (m,) increasing output times in (t0, t1] still ahead (used when not
+            ``every``); ``every``: store every accepted step instead (the start is not stored); ``events`` (e,)
+            int, whose zero crossings are recorded: a state component ``c >= 0``, or ``-1 - j`` for the model's
+            event function ``j`` (``event_values(s, p)[j]``), see :mod:`.common`; ``max_steps`` accepted steps
+            allowed (the caller subtracts those already taken); ``chunk`` accepted steps after which the call
+            returns with status 1 (paused).
+        out : ``(ts, ys, ev_t, ev_k)``, the buffers filled (the same for every kernel): ``ts`` (r,), ``ys`` (r, n)
+            output rows (with ``every``, the call pauses when they are full; otherwise they must hold
+            ``t_eval``); ``ev_t`` (c,), ``ev_k`` (c,) int event times and numbers (the call pauses when a step
+            could overflow them: a step finds at most ``SAMPLES + 2`` crossings of each event).
 
         A paused run continues from the returned ``t, y, f, h_next`` (passed as ``t0, y0, f0, h_init``)
         with the steps, evaluations and results of one uninterrupted call.
@@ -159,6 +160,9 @@ def _driver_closure(tableau: str):
         -------
         n_out, n_ev, status, nfev, accepted, rejected, t, y, f, h_next
         """
+        rtol, atol, h_init, max_step, pair, mode_scaled = control
+        t_eval, every, events, max_steps, chunk = request
+        ts, ys, ev_t, ev_k = out
         N = y0.size
         rhs, attempt, dense, ev = fns[0], fns[1], fns[2], fns[3:5]
         ms, nq = np.int64(1 if mode_scaled else 0), np.int64(q.size)
@@ -364,20 +368,20 @@ class AdaptiveKernel:
             return False
         return self._events_index is None or self._events_index.is_file()
 
-    def arguments(self, t0, t1, y0, f0, p, *rest) -> tuple:
+    def arguments(self, t0, t1, y0, f0, p, control, request, out) -> tuple:
         """The integrator's arguments for the arguments of :meth:`solve`."""
         if y0.size != self.N:
             raise ValueError("the initial state does not have the size this kernel was specialized to")
         q = self.constants(p)
         if q.size != self.NQ:
             raise ValueError(f"constants(p) has {q.size} elements, not the {self.NQ} this kernel was specialized to")
-        return (self.parts(), t0, t1, y0, f0, q, p) + _one_signature(rest)
+        return self.parts(), t0, t1, y0, f0, q, p, _one_signature(control), request, out
 
     def argument_types(self, args: tuple) -> tuple:
         """numba's types of the integrator's arguments for the arguments ``args`` of :meth:`solve` (compiles
         nothing: what a separate process needs to compile the integrator)."""
-        t0, t1, y0, f0, p, *rest = args
-        sample = (np.zeros(5, dtype=np.int64), t0, t1, y0, f0, np.zeros(1), p, *_one_signature(tuple(rest)))
+        t0, t1, y0, f0, p, control, request, out = args
+        sample = (np.zeros(5, dtype=np.int64), t0, t1, y0, f0, np.zeros(1), p, _one_signature(control), request, out)
         return tuple(self.driver.typeof_pyval(a) for a in sample)
 
     def compile_types(self, types_) -> None:
@@ -385,23 +389,21 @@ class AdaptiveKernel:
         self.parts()
         self.driver.compile(types_)
 
-    def solve(self, t0, t1, y0, f0, p, rtol, atol, h_init, max_step, t_eval, every, events, max_steps, pair,
-              mode_scaled, chunk, ts, ys, ev_t, ev_k):
+    def solve(self, t0, t1, y0, f0, p, control, request, out):
         """The integrator with this model's parts (see :func:`driver`'s parameters and returns, without ``fns``
         and ``q``)."""
-        return self.driver(*self.arguments(t0, t1, y0, f0, p, rtol, atol, h_init, max_step, t_eval, every, events,
-                                           max_steps, pair, mode_scaled, chunk, ts, ys, ev_t, ev_k))
+        return self.driver(*self.arguments(t0, t1, y0, f0, p, control, request, out))
 
 
-def _one_signature(rest: tuple) -> tuple:
-    """``rest`` (``rtol`` .. ``ev_k``) with ``pair`` read-only, as ``simulate`` passes it: a writable one is
-    another numba type, and the integrator would compile a second time (3-4 s) for it."""
-    pair = rest[8]
+def _one_signature(control: tuple) -> tuple:
+    """``control`` with ``pair`` read-only, as ``simulate`` passes it: a writable one is another numba type, and
+    the integrator would compile a second time (3-4 s) for it."""
+    pair = control[4]
     if pair.flags.writeable:
         pair = pair.view()
         pair.flags.writeable = False
-        rest = rest[:8] + (pair,) + rest[9:]
-    return rest
+        control = control[:4] + (pair,) + control[5:]
+    return control
 
 
 def _n_constants(model_module) -> int:

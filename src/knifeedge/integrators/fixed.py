@@ -204,11 +204,11 @@ def _solve_closure(m, N: int, rhs, constants, increments, HAS_FUN, function_ends
     start, buffers = _start_closure(N, S, rhs), _buffers_closure(N, S)
     NO_EV = np.zeros(2, dtype=np.int64)  # the event functions are the model's own (the adaptive kernel's ``ev``)
 
-    def solve(t0, t1, y0, f0, p, h_fixed, n_steps, first, atol, t_eval, every, events, max_steps, pair, chunk,
-              comp, Z, ts, ys, ev_t, ev_k):
+    def solve(t0, t1, y0, f0, p, control, request, out):
         """Integrate from ``t0`` over steps ``first + 1 .. n_steps`` of size ``h_fixed``, at most ``chunk`` of them.
 
-        Step ``k`` ends at ``t0 + k h_fixed`` (the last at ``t1``).  ``atol`` (n,) is
+        ``control`` is ``(h_fixed, n_steps, first, atol, pair, comp, Z)``.  Step
+        ``k`` ends at ``t0 + k h_fixed`` (the last at ``t1``).  ``atol`` (n,) is
         the floor of the scale of the implicit solver's convergence test and
         ``pair`` (n,) the mode partner of each component (-1: none) whose
         magnitude also sets it (Gauss only).  ``y0`` is the state after step
@@ -216,10 +216,13 @@ def _solve_closure(m, N: int, rhs, constants, increments, HAS_FUN, function_ends
         ``comp`` (n,), the Kahan compensation, and ``Z`` (S, n), the stage
         derivatives of the last step, are carried from one call to the next and
         updated in place, so that a run in chunks takes the same steps as one
-        call.  Other arguments and the returned tuple are as for the adaptive
-        kernel (rejected steps are always 0; ``h_next`` is the index of the
-        last step taken).
+        call.  ``request``, ``out`` and the returned tuple are as for the
+        adaptive kernel (:func:`.erk.driver`; rejected steps are always 0;
+        ``h_next`` is the index of the last step taken).
         """
+        h_fixed, n_steps, first, atol, pair, comp, Z = control
+        t_eval, every, events, max_steps, chunk = request
+        ts, ys, ev_t, ev_k = out
         if y0.size != N:
             raise ValueError("the initial state does not have the size this kernel was specialized to")
         q = constants(p)
