@@ -251,7 +251,7 @@ def test_kernel_parts_are_the_models_rhs_with_the_tableau_unrolled(tmp_path):
     assert (kernel.TABLEAU, kernel.RHS_NAME, kernel.N, kernel.NQ) == ("DP54", "rhs_pose_q_into", 8,
                                                                      two_mode_full.constants(np.ones(5)).size)
     # stages unrolled with the Dormand-Prince coefficients as exact literals (a21 = 1/5, b1 = 35/384)
-    ir = irparts.module_ir(irparts.Tableau("DP54"), 8, 3, ("a", "d"), "rhs")
+    ir = irparts.module_ir(methods.erk_arrays("DP54"), 8, 3, ("a", "d"), "rhs")
     assert f"fmul contract double %h, {irparts.literal(0.2)}" in ir
     assert f"fmul contract double %h, {irparts.literal(35 / 384)}" in ir
     # the error estimate likewise (e1 = -71/57600)
@@ -259,7 +259,7 @@ def test_kernel_parts_are_the_models_rhs_with_the_tableau_unrolled(tmp_path):
     # one call of the right-hand side per stage: DP54 6 in attempt (7 stages, first same as last);
     # DOP853 12 in attempt and its 3 extra stages of the dense output in dense
     assert ir.count('call i32 @"rhs"') == 6
-    ir8 = irparts.module_ir(irparts.Tableau("DOP853"), 3, 2, ("a", "d"), "rhs")
+    ir8 = irparts.module_ir(methods.erk_arrays("DOP853"), 3, 2, ("a", "d"), "rhs")
     attempt, dense = ir8.split('define void @"d"')
     assert attempt.count('call i32 @"rhs"') == 12 and dense.count('call i32 @"rhs"') == 3
     with pytest.raises(ValueError, match="`kind`"):

@@ -16,7 +16,7 @@ import sys
 import numpy as np
 import pytest
 
-from knifeedge.integrators import Status, from_code, irparts, load_kernel
+from knifeedge.integrators import Status, from_code, irparts, load_kernel, methods
 import stub_model as _stub
 
 _D = ctypes.c_double
@@ -52,7 +52,7 @@ def _loops(method, ws, n, h, rtol, atol, pair, mode, rhs):
     """One step and its interpolant from the workspace ``ws`` (K[0], y and q set), as plain loops over the
     tableau (Hairer, Norsett & Wanner I, Sect. II.4-II.6; DOP853's dense output as in SciPy's
     ``Dop853DenseOutput``): ``(K, y_new, scale, err, F)``."""
-    t = irparts.Tableau(method)
+    t = methods.erk_arrays(method)
     K = np.zeros((t.n_ext, n))
     K[0] = ws[:n]
     lay = irparts.Layout(n, t.n_ext, t.dense_rows)
@@ -128,7 +128,7 @@ def test_the_error_norm_is_hairers_from_the_stages():
     n3) N) with n5, n3 the squared scaled 5th- and 3rd-order estimates, recomputed here in numpy from the
     stages the IR part left in the workspace."""
     mod = load_kernel("erk", "DOP853", _stub, "rhs_q_into", 3)
-    t = irparts.Tableau("DOP853")
+    t = methods.erk_arrays("DOP853")
     y, p = np.array([0.8, -0.3, 0.1]), np.array([2.0, 0.1])
     ws = _workspace(mod, y, p)
     h = 0.2

@@ -590,7 +590,7 @@ class _StepCrossings:
 
         self.names, self.codes, self.fun, self.event_values = names, codes, fun, event_values
         self.screen = common.screen.py_func
-        self.locate = common.locator(event_at=lambda F, y, alt, x, c, p, ev, work: self._at(F(x), c)).py_func
+        self.locate = common.locator(event_at=lambda step, x, c: self._at(step(x), c)).py_func
         self.events = np.array(codes, dtype=np.int64)
         self.xs, self.gs = np.empty(common.SAMPLES + 3), np.empty(common.SAMPLES + 3)
         self.ev_t = np.empty(len(codes) * (common.SAMPLES + 2))
@@ -638,8 +638,8 @@ class _StepCrossings:
             gb, sb = self._values(y, f_new, h)
             if self.screen(ga, gb, sa, sb, self.crit, self.n_crit, self.flag):
                 sol = solver.dense_output()
-                n = self.locate(self.events, lambda x: sol(t_old + x * h), None, None, t_old, h, None, None, None,
-                                ga, gb, self.crit, self.n_crit, self.flag, self.xs, self.gs, self.ev_t, self.ev_k, 0)
+                marks = (ga, gb, self.crit, self.n_crit, self.flag, self.xs, self.gs)
+                n = self.locate(self.events, lambda x: sol(t_old + x * h), t_old, h, marks, (self.ev_t, self.ev_k), 0)
                 for i in range(n):
                     self.found[self.names[self.ev_k[i]]].append(float(self.ev_t[i]))
             self.f_old = f_new

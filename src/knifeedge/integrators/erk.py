@@ -120,7 +120,8 @@ def _workspace_closure(N_EXT: int, DENSE_ROWS: int):
 
 def _driver_closure(tableau: str):
     """The integrator of ``tableau`` as a Python closure over its sizes and helpers."""
-    (_, _, _, _, _, _, _, N_STAGES, N_EXT, DENSE_ROWS, ALT, ERROR_ORDER) = erk_arrays(tableau)
+    tab = erk_arrays(tableau)
+    N_STAGES, N_EXT, DENSE_ROWS, ALT, ERROR_ORDER = tab.n_stages, tab.n_ext, tab.dense_rows, tab.alt, tab.error_order
     DENSE_NFEV = N_EXT - N_STAGES - 1  # evaluations of the interpolant beyond the step's (DOP853: 3)
     values = njit(error_model="numpy")(_values_)
     function_ends, locate = _c.function_ends(values), _c.locator(values)
@@ -247,8 +248,8 @@ def _driver_closure(tableau: str):
                 call_void(dense, (t, h, ws, nq))  # the interpolant of the step: F (DENSE_ROWS x N)
                 nfev += DENSE_NFEV
             if any_flag:
-                n_ev = locate(events, F, y, ALT, t, h, p, ev, work, ga, gb, crit, n_crit, flag, xs, gs, ev_t, ev_k,
-                              n_ev)
+                marks = (ga, gb, crit, n_crit, flag, xs, gs)
+                n_ev = locate(events, (F, y, ALT, p, ev, work), t, h, marks, (ev_t, ev_k), n_ev)
             if every:  # the common case: a row per step
                 ts[n_out] = t_new
                 for i in range(N):
@@ -296,10 +297,10 @@ class AdaptiveKernel:
         self.NV = len(getattr(model_module, "EVENT_NAMES", ()))
         self.NQ = _n_constants(model_module)
         self._rhs, self._constants = getattr(model_module, rhs_name), model_module.constants
-        tab = _irparts.Tableau(tableau)
+        tab = erk_arrays(tableau)
         #: the integrator's workspace, as the parts read it (offsets of K, y, y_new, work, scale, F, q)
         self.layout = _irparts.Layout(n_state, tab.n_ext, tab.dense_rows)
-        stem = digest(tableau, erk_arrays(tableau), self._rhs, n_state, self.NQ)
+        stem = digest(tableau, tuple(vars(tab).values()), self._rhs, n_state, self.NQ)
         self.path = cache_dir() / "kernels" / f"erk-{tableau}-{model_module.__name__.rsplit('.', 1)[-1]}-{stem}"
         self.driver = driver(tableau)
         self._events_index = index_path(self._events_py(), f"{self.path.name}-events") if self.NV else None

@@ -294,8 +294,8 @@ def _solve_closure(m, N: int, rhs, constants, increments, HAS_FUN, function_ends
             if any_flag or (ie < t_eval.size and t_eval[ie] < t_new):
                 _c.hermite_coefficients(y, y_new, f_old, f_new, h, F)
             if any_flag:
-                n_ev = locate(events, F, y, ALT, t, h, p, NO_EV, work, ga, gb, crit, n_crit, flag, xs, gs, ev_t, ev_k,
-                              n_ev)
+                marks = (ga, gb, crit, n_crit, flag, xs, gs)
+                n_ev = locate(events, (F, y, ALT, p, NO_EV, work), t, h, marks, (ev_t, ev_k), n_ev)
             if every:  # the common case: a row per step
                 ts[n_out] = t_new
                 for i in range(N):

@@ -39,6 +39,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from types import SimpleNamespace
 from typing import ClassVar
 
 import numpy as np
@@ -239,16 +240,17 @@ def get(name: str, kind: str | None = None):
     return method
 
 
-def erk_arrays(name: str) -> tuple:
+def erk_arrays(name: str) -> SimpleNamespace:
     """The tables the adaptive integrator and a model's parts use for the registered method ``name``.
 
-    Returns ``(A, C, E5, E3, DD, P, HAIRER, N_STAGES, N_EXT, DENSE_ROWS, ALT, ERROR_ORDER)``:
-    ``A`` and ``C`` over every stage (the method's, then the weights as the row of the stage at ``t + h``,
-    first same as last, then the extra stages of DOP853's interpolant); ``E5`` the error estimator
-    (and ``E3`` DOP853's second one, else zeros); ``DD`` DOP853's interpolant rows or ``P`` the power
-    series of the others (the unused one is a 1 x 1 zero); ``ALT`` the factors of the Horner scheme of
-    the interpolant ``v = (v + F[r, i]) * (1 - x if ALT[r] else x)`` (Hairer's form alternates them, the
-    power series has ``x`` throughout); ``DENSE_ROWS`` the rows of ``F``.
+    Returns a namespace of ``name``, ``A``, ``C``, ``E5``, ``E3``, ``DD``, ``P``, ``hairer``, ``n_stages``,
+    ``n_ext``, ``dense_rows``, ``alt``, ``error_order``: ``A`` and ``C`` over every stage (the method's, then
+    the weights as the row of the stage at ``t + h``, first same as last, then the extra stages of DOP853's
+    interpolant); ``E5`` the error estimator (and ``E3`` DOP853's second one, else zeros); ``DD`` DOP853's
+    interpolant rows or ``P`` the power series of the others (the unused one is a 1 x 1 zero); ``alt`` the
+    factors of the Horner scheme of the interpolant ``v = (v + F[r, i]) * (1 - x if alt[r] else x)``
+    (Hairer's form alternates them, the power series has ``x`` throughout); ``dense_rows`` the rows of ``F``;
+    ``n_stages`` the method's stages, ``n_ext`` all of them.
     """
     t = get(name, "erk")
     hairer = t.hairer is not None
@@ -272,8 +274,9 @@ def erk_arrays(name: str) -> tuple:
         DD = np.zeros((1, 1))
         P = t.P.copy()
         dense_rows = P.shape[1]
-    ALT = np.array([hairer and r % 2 == 1 for r in range(dense_rows)])
-    return A, C, E5, E3, DD, P, hairer, s, n_ext, dense_rows, ALT, t.error_order
+    alt = np.array([hairer and r % 2 == 1 for r in range(dense_rows)])
+    return SimpleNamespace(name=name, A=A, C=C, E5=E5, E3=E3, DD=DD, P=P, hairer=hairer, n_stages=s, n_ext=n_ext,
+                           dense_rows=dense_rows, alt=alt, error_order=t.error_order)
 
 
 # -- the methods -----------------------------------------------------------------------------------------------
