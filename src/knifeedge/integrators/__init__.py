@@ -10,7 +10,7 @@ import sys
 import time
 
 from .cache import cache_dir, call_repairing
-from .kernels import load_kernel
+from .kernels import kernel_module, load_kernel
 from .status import Status, from_code
 from .methods import ALIASES, COMPILED_METHODS, ExplicitTableau, FixedMethod, get, register
 from .common import SAMPLES as _SAMPLES
@@ -20,6 +20,7 @@ from .compiler import compile_mode, set_compile_mode
 EVENTS_PER_STEP = _SAMPLES + 2
 
 
+#: the ``solve`` of each kernel used so far (the first-call notice's wrapper until it has compiled)
 _KERNELS: dict = {}
 
 
@@ -30,22 +31,14 @@ def kernel(model, method: str):
     takes seconds, and says so in one line on stderr; later uses, in any
     process, load the machine code from the cache (:func:`cache_dir`).
     """
-    spec, rhs_name, key = _identity(model, method)
-    if key not in _KERNELS:
-        module = kernel_module(model, method)
+    module = kernel_module(model, method)
+    if module not in _KERNELS:
         solve = module.solve
         if not module.is_compiled():
             pose = ", pose" if model.pose else ""
-            solve = _announced(solve, f"{spec.name} for {model.name} ({model.fidelity}{pose})")
-        _KERNELS[key] = solve
-    return _KERNELS[key]
-
-
-def kernel_module(model, method: str):
-    """The kernel of ``method`` for ``model`` (:func:`load_kernel`, compiled or not: its ``solve`` compiles at
-    its first call unless the cache holds it, see :func:`kernel_compiled`)."""
-    spec, rhs_name, _ = _identity(model, method)
-    return load_kernel(spec.kind, spec.name, model.module, rhs_name, model.n_state)
+            solve = _announced(solve, f"{get(method).name} for {model.name} ({model.fidelity}{pose})")
+        _KERNELS[module] = solve
+    return _KERNELS[module]
 
 
 def kernel_compiled(model, method: str) -> bool:
@@ -55,14 +48,8 @@ def kernel_compiled(model, method: str) -> bool:
 
 def use_compiled(model, method: str) -> None:
     """Forget a first-call notice of the kernel of ``method`` for ``model`` (it was compiled elsewhere)."""
-    _KERNELS[_identity(model, method)[2]] = kernel_module(model, method).solve
-
-
-def _identity(model, method: str) -> tuple:
-    """``(spec, rhs_name, key)``: the method, the right-hand side its kernel calls, and the kernel's key."""
-    spec = get(method)
-    rhs_name = "rhs_pose_q_into" if model.pose else "rhs_q_into"
-    return spec, rhs_name, (model.module.__name__, rhs_name, spec.kind, spec.name)
+    module = kernel_module(model, method)
+    _KERNELS[module] = module.solve
 
 
 def _announced(solve, label: str):
