@@ -593,8 +593,8 @@ class _StepCrossings:
         self.locate = common.locator(event_at=lambda step, x, c: self._at(step(x), c)).py_func
         self.events = np.array(codes, dtype=np.int64)
         self.xs, self.gs = np.empty(common.SAMPLES + 3), np.empty(common.SAMPLES + 3)
-        self.ev_t = np.empty(len(codes) * (common.SAMPLES + 2))
-        self.ev_k = np.empty(len(codes) * (common.SAMPLES + 2), dtype=np.int64)
+        self.ev_t = np.empty(len(codes) * common.EVENTS_PER_STEP)
+        self.ev_k = np.empty(len(codes) * common.EVENTS_PER_STEP, dtype=np.int64)
         self.found = {e: [] for e in names}
         self.f_old = self._rate(solver) if codes else None
         # the screen's flags and Hermite extrema, as the kernels keep them

@@ -13,11 +13,8 @@ from .cache import cache_dir, call_repairing
 from .kernels import kernel_module, load_kernel
 from .status import Status, from_code
 from .methods import ALIASES, COMPILED_METHODS, ExplicitTableau, FixedMethod, get, register
-from .common import SAMPLES as _SAMPLES
+from .common import EVENTS_PER_STEP
 from .compiler import compile_mode, set_compile_mode
-
-#: most zero crossings of one event a kernel finds in one step (room the event buffers keep per event)
-EVENTS_PER_STEP = _SAMPLES + 2
 
 
 #: the ``solve`` of each kernel used so far (the first-call notice's wrapper until it has compiled)

@@ -51,6 +51,8 @@ from numba import njit
 _EPS = np.finfo(np.float64).eps
 #: interior samples of a suspected step: SAMPLES - 1 equally spaced points, plus the Hermite extrema
 SAMPLES = 8
+#: most zero crossings of one event a kernel finds in one step (room the event buffers keep per event)
+EVENTS_PER_STEP = SAMPLES + 2
 #: a Hermite extremum within this fraction of the larger end value of zero makes the step suspect
 NEAR = 0.5
 #: Illinois iterations (it stops at the resolution of x, a few ulps, long before)

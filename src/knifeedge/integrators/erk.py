@@ -32,7 +32,7 @@ from . import fnptr as _fnptr
 from . import irparts as _irparts
 from .methods import erk_arrays
 from .cache import cache_dir, compiled, compiled_cfunc, digest, index_path, is_cached
-from .common import NEAR, SAMPLES
+from .common import EVENTS_PER_STEP, NEAR
 from .fnptr import call_f8, call_void
 
 SAFETY = 0.9
@@ -152,7 +152,7 @@ def _driver_closure(tableau: str):
         out : ``(ts, ys, ev_t, ev_k)``, the buffers filled (the same for every kernel): ``ts`` (r,), ``ys`` (r, n)
             output rows (with ``every``, the call pauses when they are full; otherwise they must hold
             ``t_eval``); ``ev_t`` (c,), ``ev_k`` (c,) int event times and numbers (the call pauses when a step
-            could overflow them: a step finds at most ``SAMPLES + 2`` crossings of each event).
+            could overflow them: a step finds at most ``EVENTS_PER_STEP`` crossings of each event).
 
         A paused run continues from the returned ``t, y, f, h_next`` (passed as ``t0, y0, f0, h_init``)
         with the steps, evaluations and results of one uninterrupted call.
@@ -180,7 +180,7 @@ def _driver_closure(tableau: str):
             if n_acc >= max_steps:
                 status = -2
                 break
-            if n_acc >= chunk or (every and n_out == ts.size) or n_ev + ne * (SAMPLES + 2) > ev_t.size:
+            if n_acc >= chunk or (every and n_out == ts.size) or n_ev + ne * EVENTS_PER_STEP > ev_t.size:
                 status = 1
                 break
             # the attempts of a step, the events' screen, their crossings and the output, written out (common.py

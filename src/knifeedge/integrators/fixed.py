@@ -22,7 +22,7 @@ from numba import njit
 
 from . import common as _c
 from .cache import compiled, is_cached
-from .common import NEAR, SAMPLES
+from .common import EVENTS_PER_STEP, NEAR
 from .methods import get
 
 MAX_STAGE_ITER = 100
@@ -237,7 +237,7 @@ def _solve_closure(m, N: int, rhs, constants, increments, HAS_FUN, function_ends
             if n_acc >= max_steps:
                 status = -2
                 break
-            if n_acc >= chunk or (every and n_out == ts.size) or n_ev + ne * (SAMPLES + 2) > ev_t.size:
+            if n_acc >= chunk or (every and n_out == ts.size) or n_ev + ne * EVENTS_PER_STEP > ev_t.size:
                 status = 1
                 break
             step += 1
