@@ -51,8 +51,8 @@ def per_evaluation(scene, rtol=1e-10, repeats=7) -> dict:
     bufs = (np.empty(1), np.empty((1, n)), np.empty(64), np.empty(64, dtype=np.int64))
 
     def run_kernel():
-        return solve(0.0, scene.t_end, y0, y0, p, rtol, atol, 0.0, np.inf, te, False, events, 10**8, pair, False,
-                     10**8, *bufs)
+        return solve(0.0, scene.t_end, y0, y0, p, (rtol, atol, 0.0, np.inf, pair, False),
+                     (te, False, events, 10**8, 10**8), bufs)
 
     nfev = run_kernel()[3]
     t_kernel = median_time(run_kernel, repeats)
@@ -161,8 +161,8 @@ def integrator_floor(repeats=7) -> list:
             bufs = (np.empty(1), np.empty((1, n)), np.empty(64), np.empty(64, dtype=np.int64))
 
             def run(solve=solve, y0=y0, p=p, atol=atol, te=te, pair=pair, none=np.empty(0, dtype=np.int64), bufs=bufs):
-                return solve(0.0, 300.0, y0, y0, p, 1e-10, atol, 0.0, np.inf, te, False, none, 10**8, pair, False,
-                             10**8, *bufs)
+                return solve(0.0, 300.0, y0, y0, p, (1e-10, atol, 0.0, np.inf, pair, False),
+                             (te, False, none, 10**8, 10**8), bufs)
 
             nfev = run()[3]
             out.append({"n_state": n, "method": method, "nfev": int(nfev),

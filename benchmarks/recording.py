@@ -74,8 +74,8 @@ def recording_row(scene, repeats: int) -> dict:
     bufs = (np.empty(rows + 1), np.empty((rows + 1, m.n_state)), np.empty(10**5), np.empty(10**5, dtype=np.int64))
 
     def kernel_every_step():
-        return solve(0.0, t1, run.y0, run.y0, run.p, run.rtol, run.atol, 0.0, np.inf, np.empty(0), True, events,
-                     run.max_steps, pair, False, 2**62, *bufs)
+        return solve(0.0, t1, run.y0, run.y0, run.p, (run.rtol, run.atol, 0.0, np.inf, pair, False),
+                     (np.empty(0), True, events, run.max_steps, 2**62), bufs)
 
     out = kernel_every_step()
     assert out[2] == 0 and out[0] == rows - 1, "the kernel alone must take the run's steps in one call"

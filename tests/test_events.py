@@ -34,12 +34,12 @@ def _run(method, y0, p, t1, events, rtol=1e-10, h=None, atol=None):
     ev_t, ev_k = np.empty(4096), np.empty(4096, dtype=np.int64)
     pair, empty = np.full(3, -1), np.empty(0)
     if template == "erk":
-        out = solve(0.0, t1, y0, y0, p, rtol, np.full(3, atol or rtol * 1e-3), 0.0, np.inf, empty, True, events, 10**7,
-                    pair, False, 10**7, ts, ys, ev_t, ev_k)
+        out = solve(0.0, t1, y0, y0, p, (rtol, np.full(3, atol or rtol * 1e-3), 0.0, np.inf, pair, False),
+                    (empty, True, events, 10**7, 10**7), (ts, ys, ev_t, ev_k))
     else:
         n = math.ceil(t1 / h)
-        out = solve(0.0, t1, y0, y0, p, t1 / n, n, 0, np.full(3, 1e-6), empty, True, events, 10**7, pair, 10**7,
-                    np.zeros(3), np.empty((4, 3)), ts, ys, ev_t, ev_k)
+        out = solve(0.0, t1, y0, y0, p, (t1 / n, n, 0, np.full(3, 1e-6), pair, np.zeros(3), np.empty((4, 3))),
+                    (empty, True, events, 10**7, 10**7), (ts, ys, ev_t, ev_k))
     n_out, n_ev, status = out[:3]
     assert status == 0
     return np.concatenate([[0.0], ts[:n_out]]), ev_t[:n_ev], ev_k[:n_ev]
@@ -127,9 +127,9 @@ def test_event_buffers_hold_every_crossing_a_step_can_find():
     found, t, y, f, h = [], 0.0, y0, y0, 0.0
     for _ in range(10_000):
         ev_t, ev_k = np.empty(EVENTS_PER_STEP), np.empty(EVENTS_PER_STEP, dtype=np.int64)
-        out = solve(t, 10.0, y, f, p, 1e-10, np.full(3, 1e-13), h, np.inf, np.empty(0), True,
-                    np.array([2], dtype=np.int64), 10**7, np.full(3, -1), False, 10**7, np.empty(10**5),
-                    np.empty((10**5, 3)), ev_t, ev_k)
+        out = solve(t, 10.0, y, f, p, (1e-10, np.full(3, 1e-13), h, np.inf, np.full(3, -1), False),
+                    (np.empty(0), True, np.array([2], dtype=np.int64), 10**7, 10**7),
+                    (np.empty(10**5), np.empty((10**5, 3)), ev_t, ev_k))
         found += list(ev_t[:out[1]])
         t, y, f, h = out[6:]
         if out[2] != 1:

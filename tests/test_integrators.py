@@ -18,8 +18,7 @@ import pytest
 
 import knifeedge as ke
 from knifeedge.integrators import COMPILED_METHODS, Status, cache, irparts, kernel, load_kernel
-from knifeedge.integrators import dop853_tableau as t8
-from knifeedge.integrators import rk_tableaus as tb
+from knifeedge.integrators import methods
 
 SINGLE = dict(g=1.0, ell=1.0, L=1.0, D=1.0)
 SINGLE_Y0 = dict(theta=1e-3, theta_dot=0.0, phi_dot=0.1)
@@ -40,19 +39,19 @@ def _two():
 # -- coefficient tables ---------------------------------------------------------
 def test_explicit_tableaus_are_consistent():
     """Row sums of A equal the nodes C; weights sum to 1; error estimators annihilate constants."""
-    np.testing.assert_allclose(t8.A.sum(axis=1), t8.C, atol=1e-14)
-    assert math.isclose(t8.B.sum(), 1.0, abs_tol=1e-14)
-    assert abs(t8.E3.sum()) < 1e-14 and abs(t8.E5.sum()) < 1e-14
-    np.testing.assert_allclose(tb.DP54_A.sum(axis=1), tb.DP54_C, atol=1e-15)
-    assert math.isclose(tb.DP54_B.sum(), 1.0, abs_tol=1e-15)
-    assert abs(tb.DP54_E.sum()) < 1e-15
-    assert math.isclose(tb.RK4_B.sum(), 1.0)
+    np.testing.assert_allclose(methods.DOP853_A.sum(axis=1), methods.DOP853_C, atol=1e-14)
+    assert math.isclose(methods.DOP853_B.sum(), 1.0, abs_tol=1e-14)
+    assert abs(methods.DOP853_E3.sum()) < 1e-14 and abs(methods.DOP853_E5.sum()) < 1e-14
+    np.testing.assert_allclose(methods.DP54_A.sum(axis=1), methods.DP54_C, atol=1e-15)
+    assert math.isclose(methods.DP54_B.sum(), 1.0, abs_tol=1e-15)
+    assert abs(methods.DP54_E.sum()) < 1e-15
+    assert math.isclose(methods.RK4.b.sum(), 1.0)
 
 
 @pytest.mark.parametrize("s", [1, 2, 3])
 def test_gauss_tableaus_satisfy_collocation_conditions(s):
     """Hairer-Lubich-Wanner GNI Sect. II.1.3: B(2s) (b.c^(k-1) = 1/k, k <= 2s) and C(s) (A c^(k-1) = c^k/k)."""
-    A, b, c = tb.GAUSS[s]
+    A, b, c = methods.GAUSS[s]
     for k in range(1, 2 * s + 1):
         assert math.isclose(b @ c ** (k - 1), 1.0 / k, rel_tol=1e-14), k
     for k in range(1, s + 1):
@@ -252,7 +251,7 @@ def test_kernel_parts_are_the_models_rhs_with_the_tableau_unrolled(tmp_path):
     assert (kernel.TABLEAU, kernel.RHS_NAME, kernel.N, kernel.NQ) == ("DP54", "rhs_pose_q_into", 8,
                                                                      two_mode_full.constants(np.ones(5)).size)
     # stages unrolled with the Dormand-Prince coefficients as exact literals (a21 = 1/5, b1 = 35/384)
-    ir = irparts.module_ir(irparts.Tableau("DP54"), 8, 3, ("a", "d"), "rhs")
+    ir = irparts.module_ir(methods.erk_arrays("DP54"), 8, 3, ("a", "d"), "rhs")
     assert f"fmul contract double %h, {irparts.literal(0.2)}" in ir
     assert f"fmul contract double %h, {irparts.literal(35 / 384)}" in ir
     # the error estimate likewise (e1 = -71/57600)
@@ -260,7 +259,7 @@ def test_kernel_parts_are_the_models_rhs_with_the_tableau_unrolled(tmp_path):
     # one call of the right-hand side per stage: DP54 6 in attempt (7 stages, first same as last);
     # DOP853 12 in attempt and its 3 extra stages of the dense output in dense
     assert ir.count('call i32 @"rhs"') == 6
-    ir8 = irparts.module_ir(irparts.Tableau("DOP853"), 3, 2, ("a", "d"), "rhs")
+    ir8 = irparts.module_ir(methods.erk_arrays("DOP853"), 3, 2, ("a", "d"), "rhs")
     attempt, dense = ir8.split('define void @"d"')
     assert attempt.count('call i32 @"rhs"') == 12 and dense.count('call i32 @"rhs"') == 3
     with pytest.raises(ValueError, match="`kind`"):
@@ -274,8 +273,9 @@ def test_kernel_refuses_a_state_of_another_size():
     solve = kernel(m, "DOP853")
     y = np.zeros(5)
     with pytest.raises(ValueError, match="size this kernel was specialized to"):
-        solve(0.0, 1.0, y, y, p, 1e-6, np.full(5, 1e-9), 0.0, np.inf, np.empty(0), True, np.array([2]), 10,
-              np.full(5, -1), False, 10, np.empty(4), np.empty((4, 5)), np.empty(4), np.empty(4, dtype=np.int64))
+        solve(0.0, 1.0, y, y, p, (1e-6, np.full(5, 1e-9), 0.0, np.inf, np.full(5, -1), False),
+              (np.empty(0), True, np.array([2]), 10, 10),
+              (np.empty(4), np.empty((4, 5)), np.empty(4), np.empty(4, dtype=np.int64)))
 
 
 def test_cache_dir_follows_the_environment(tmp_path, monkeypatch):

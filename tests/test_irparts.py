@@ -16,7 +16,7 @@ import sys
 import numpy as np
 import pytest
 
-from knifeedge.integrators import Status, from_code, irparts, load_kernel
+from knifeedge.integrators import Status, from_code, irparts, load_kernel, methods
 import stub_model as _stub
 
 _D = ctypes.c_double
@@ -52,7 +52,7 @@ def _loops(method, ws, n, h, rtol, atol, pair, mode, rhs):
     """One step and its interpolant from the workspace ``ws`` (K[0], y and q set), as plain loops over the
     tableau (Hairer, Norsett & Wanner I, Sect. II.4-II.6; DOP853's dense output as in SciPy's
     ``Dop853DenseOutput``): ``(K, y_new, scale, err, F)``."""
-    t = irparts.Tableau(method)
+    t = methods.erk_arrays(method)
     K = np.zeros((t.n_ext, n))
     K[0] = ws[:n]
     lay = irparts.Layout(n, t.n_ext, t.dense_rows)
@@ -128,7 +128,7 @@ def test_the_error_norm_is_hairers_from_the_stages():
     n3) N) with n5, n3 the squared scaled 5th- and 3rd-order estimates, recomputed here in numpy from the
     stages the IR part left in the workspace."""
     mod = load_kernel("erk", "DOP853", _stub, "rhs_q_into", 3)
-    t = irparts.Tableau("DOP853")
+    t = methods.erk_arrays("DOP853")
     y, p = np.array([0.8, -0.3, 0.1]), np.array([2.0, 0.1])
     ws = _workspace(mod, y, p)
     h = 0.2
@@ -160,8 +160,8 @@ def test_a_right_hand_side_that_raises_fails_the_run_instead_of_going_on(tmp_pat
     y0, p = np.array([0.5, 2.0, 0.0]), np.array([2.0])
     t_star = (math.asin(0.9 / math.sqrt(1.25)) - math.atan2(0.5, 1.0)) / 2
     ts, ys, ev_t, ev_k = np.empty(2), np.empty((2, 3)), np.empty(64), np.empty(64, dtype=np.int64)
-    out = solve(0.0, 10.0, y0, y0, p, 1e-8, np.full(3, 1e-11), 0.0, np.inf, np.array([5.0, 10.0]), False,
-                np.array([0]), 10**6, np.full(3, -1), False, 10**6, ts, ys, ev_t, ev_k)
+    out = solve(0.0, 10.0, y0, y0, p, (1e-8, np.full(3, 1e-11), 0.0, np.inf, np.full(3, -1), False),
+                (np.array([5.0, 10.0]), False, np.array([0]), 10**6, 10**6), (ts, ys, ev_t, ev_k))
     n_out, status, t_end = out[0], out[2], out[6]
     assert from_code(status) == Status.STEP_SIZE_UNDERFLOW and n_out == 0
     assert 0.99 * t_star < t_end < t_star + 1e-8  # the last accepted step ends where q reaches 0.9

@@ -3,13 +3,14 @@
 Scenes as in test_integrators.py: the single-mode knife edge of the paper's Fig. 'numerical'
 (g = ell = L = D = 1, theta(0) = 1e-3, phi_dot(0) = 0.1), whose spin reversal is at t = 106.361.
 """
+import dataclasses
 import math
 
 import numpy as np
 import pytest
 
 import knifeedge as ke
-from knifeedge.integrators import TABLEAUS, ExplicitTableau, load_kernel, register, tableau
+from knifeedge.integrators import COMPILED_METHODS, ExplicitTableau, FixedMethod, load_kernel, methods, register
 import stub_model as _stub
 
 SINGLE = dict(g=1.0, ell=1.0, L=1.0, D=1.0)
@@ -46,22 +47,28 @@ def test_an_inconsistent_tableau_is_refused_at_construction(over, match):
         _euler_heun(**over)
 
 
-def test_registered_tableaus_are_consistent_and_names_are_unique():
-    assert {"DOP853", "DP54", "Tsit5"} <= set(TABLEAUS)
-    for name, t in TABLEAUS.items():
-        assert t.name == name and name in ke.METHODS
-        assert ExplicitTableau(**{f: getattr(t, f) for f in ExplicitTableau.__dataclass_fields__}).stages == t.stages
+def test_registered_methods_are_consistent_and_names_are_unique():
+    """One registry for every kind of method: each registered method rebuilds (its checks pass), is a method of
+    ``ke.simulate``, and a name is registered once; asking for a method of another kind is refused."""
+    builtin = ["DOP853", "DP54", "Tsit5", "RK4", "implicit_midpoint", "gauss4", "gauss6"]
+    assert list(COMPILED_METHODS)[:7] == builtin and set(builtin) <= set(ke.METHODS)  # (a test may add more)
+    for name, t in COMPILED_METHODS.items():
+        assert t.name == name
+        assert type(t)(**{f.name: getattr(t, f.name) for f in dataclasses.fields(t)}).stages == t.stages
     with pytest.raises(ValueError, match="already registered"):
         register(_euler_heun(name="DP54"))
-    with pytest.raises(ValueError, match="unknown explicit method"):
-        tableau.get("nope")
+    with pytest.raises(ValueError, match="unknown erk method 'nope'"):
+        methods.get("nope", "erk")
+    with pytest.raises(ValueError, match="unknown erk method 'RK4'"):
+        methods.get("RK4", "erk")
+    assert methods.get("RK45") is COMPILED_METHODS["DP54"]
 
 
 def test_tsit5_satisfies_the_order_conditions():
     """Tsitouras (2011): order 5 for the step (all 17 conditions up to order 5 hold for an explicit method whose
     rows sum to c and which satisfies the quadrature and the first-column conditions; we check the quadrature
     conditions b.c^k = 1/(k+1) and the tall trees b.A^k c), order 4 for the embedded solution b - e."""
-    t = TABLEAUS["Tsit5"]
+    t = COMPILED_METHODS["Tsit5"]
     b, c, A = t.b, t.c, t.A
     for k in range(5):
         assert math.isclose(b @ c**k, 1 / (k + 1), abs_tol=1e-14), k
@@ -81,9 +88,10 @@ def _harmonic(method, rtol):
     m_solve = load_kernel("erk", method, _stub, "rhs_q_into", 3).solve
     y0, p = np.array([1.0, 0.0, 0.0]), np.array([2.0])
     ts, ys, ev_t, ev_k = np.empty(2), np.empty((2, 3)), np.empty(64), np.empty(64, dtype=np.int64)
-    n_out, n_ev, status, nfev = m_solve(0.0, 10.0, y0, y0, p, rtol, np.full(3, rtol * 1e-3), 0.0, np.inf,
-                                        np.array([5.0, 10.0]), False, np.array([0]), 10**6, np.full(3, -1), False,
-                                        10**6, ts, ys, ev_t, ev_k)[:4]
+    n_out, n_ev, status, nfev = m_solve(0.0, 10.0, y0, y0, p, (rtol, np.full(3, rtol * 1e-3), 0.0, np.inf,
+                                                                np.full(3, -1), False),
+                                        (np.array([5.0, 10.0]), False, np.array([0]), 10**6, 10**6),
+                                        (ts, ys, ev_t, ev_k))[:4]
     assert status == 0 and n_out == 2
     return ys, ev_t[:n_ev], nfev
 
@@ -128,17 +136,16 @@ def test_fixed_step_methods_are_registered_data_checked_when_built():
     by its tableau), the Gauss-Legendre methods of 1-3 stages (Hairer, Lubich & Wanner, Geometric Numerical
     Integration, Table II.1.1: implicit, rows of A summing to c); a tableau whose rows do not sum to c, or whose
     weights do not sum to one, is refused when built."""
-    from knifeedge.integrators import COMPILED_METHODS, FIXED_METHODS, FixedMethod
-
-    assert list(FIXED_METHODS)[:4] == ["RK4", "implicit_midpoint", "gauss4", "gauss6"]  # (a test may add more)
-    assert all(COMPILED_METHODS[name].fixed_step for name in FIXED_METHODS)
-    assert FIXED_METHODS["RK4"].is_classical_rk4 and not FIXED_METHODS["RK4"].implicit
+    fixed = [name for name, m in COMPILED_METHODS.items() if m.fixed_step]
+    assert fixed[:4] == ["RK4", "implicit_midpoint", "gauss4", "gauss6"]  # (a test may add more)
+    assert all(isinstance(COMPILED_METHODS[name], FixedMethod) for name in fixed)
+    assert COMPILED_METHODS["RK4"].is_classical_rk4 and not COMPILED_METHODS["RK4"].implicit
     for name, s in (("implicit_midpoint", 1), ("gauss4", 2), ("gauss6", 3)):
-        m = FIXED_METHODS[name]
+        m = COMPILED_METHODS[name]
         assert m.implicit and m.stages == s and m.order == 2 * s
         # the collocation polynomial through the nodes reproduces itself: extrapolating a constant is constant
         np.testing.assert_allclose(m.extrapolation.sum(axis=1), 1.0, rtol=1e-13)
-    with pytest.raises(ValueError, match="rows of A do not sum to c"):
+    with pytest.raises(ValueError, match="of A do not sum to c"):
         FixedMethod("bad", [[0.0, 0.0], [0.4, 0.0]], [0.5, 0.5], [0.0, 0.5], 2, "rows off")
     with pytest.raises(ValueError, match="weights b sum to"):
         FixedMethod("bad", [[0.0, 0.0], [0.5, 0.0]], [0.5, 0.4], [0.0, 0.5], 2, "weights off")
@@ -149,21 +156,19 @@ def test_an_explicit_tableau_as_data_converges_at_its_order():
     """An explicit fixed-step method given only as its tableau (Kutta's 3/8 rule, order 4: E. Hairer, S. P.
     Norsett, G. Wanner, Solving ODEs I, Table II.1.2) runs through the kernel's general stage loops: on the stub
     oscillator q'' = -4 q its error at t = 10 against cos(20) falls 16-fold when the step halves (order 4)."""
-    from knifeedge.integrators.fixed_methods import FIXED_METHODS, FixedMethod, register_fixed
-
     name = "kutta38_test"
-    if name not in FIXED_METHODS:
-        register_fixed(FixedMethod(name, [[0, 0, 0, 0], [1 / 3, 0, 0, 0], [-1 / 3, 1, 0, 0], [1, -1, 1, 0]],
+    if name not in COMPILED_METHODS:
+        register(FixedMethod(name, [[0, 0, 0, 0], [1 / 3, 0, 0, 0], [-1 / 3, 1, 0, 0], [1, -1, 1, 0]],
                                    [1 / 8, 3 / 8, 3 / 8, 1 / 8], [0, 1 / 3, 2 / 3, 1], 4, "Kutta's 3/8 rule", 8.0))
-    assert not FIXED_METHODS[name].is_classical_rk4
+    assert not COMPILED_METHODS[name].is_classical_rk4
     solve = load_kernel("fixed", name, _stub, "rhs_q_into", 3).solve
     y0, p = np.array([1.0, 0.0, 0.0]), np.array([2.0])
     errs = []
     for n_steps in (200, 400):
         ts, ys, ev_t, ev_k = np.empty(2), np.empty((2, 3)), np.empty(64), np.empty(64, dtype=np.int64)
-        out = solve(0.0, 10.0, y0, y0, p, 10.0 / n_steps, n_steps, 0, np.full(3, 1e-12), np.array([10.0]), False,
-                    np.empty(0, dtype=np.int64), 10**6, np.full(3, -1), 10**6, np.zeros(3), np.empty((4, 3)),
-                    ts, ys, ev_t, ev_k)
+        out = solve(0.0, 10.0, y0, y0, p, (10.0 / n_steps, n_steps, 0, np.full(3, 1e-12), np.full(3, -1),
+                                           np.zeros(3), np.empty((4, 3))),
+                    (np.array([10.0]), False, np.empty(0, dtype=np.int64), 10**6, 10**6), (ts, ys, ev_t, ev_k))
         assert out[2] == 0 and out[0] == 1
         errs.append(abs(ys[0, 0] - math.cos(20.0)))
     assert 16 * 0.8 < errs[0] / errs[1] < 16 * 1.25, errs

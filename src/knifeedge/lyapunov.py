@@ -18,10 +18,11 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit, types
 
-from .integrators.rk_tableaus import DP54_A, DP54_B, DP54_E, DP54_P
+from .integrators.methods import DP54_A, DP54_B, DP54_E, DP54_P
 from . import magnus
 from .magnus import GAUSS_NODES
 from .models import Model
+from .stability import jacobian
 
 @njit(cache=True)
 def _orthonormalize(Q, sums):
@@ -411,14 +412,6 @@ class LyapunovResult:
     tangent_rejected: int = 0
 
 
-def _jacobian(mod, y: np.ndarray, p: np.ndarray) -> np.ndarray:
-    """``J(y)``, the Jacobian-vector product of the identity: the loop's own compiled function (the module's full
-    ``jacobian``, slower to compile, is not needed)."""
-    out = np.empty((y.size, y.size))
-    mod.jvp_into(y, p, np.eye(y.size), np.empty(y.size), out)
-    return out
-
-
 def _physical_basis(m: Model, y: np.ndarray, p: np.ndarray, k: int | None) -> np.ndarray:
     from .stability import _basis
 
@@ -470,7 +463,7 @@ def lyapunov(m: Model, y0, p, t_end: float, k: int | None = None, h: float | Non
                          f"older knifeedge: regenerate it (make derive, or knifeedge derive)")
     p = np.ascontiguousarray(p, dtype=float)
     if h is None:
-        rho = float(np.max(np.abs(np.linalg.eigvals(_jacobian(mod, y, p)))))
+        rho = float(np.max(np.abs(np.linalg.eigvals(jacobian(m, y, p)))))
         h = min(2 * math.pi / rho / 50 if rho > 0 else span / 1e4, span / 100)
     if not (isinstance(h, (int, float)) and math.isfinite(h) and 0 < h <= span):
         raise ValueError(f"`h` must be a positive step no longer than the span, got {h!r}")

@@ -389,14 +389,15 @@ class _CompiledRun:
         self.f, self.carry = np.array(sv.f, dtype=float), float(sv.h_abs)
 
     def _kernel_args(self, left: int, chunk: int) -> tuple:
-        """The kernel's arguments before its output tails, for at most ``chunk`` of ``left`` steps."""
+        """The kernel's arguments ``t0, t1, y0, f0, p, control, request`` (before the output tails), for at most
+        ``chunk`` of ``left`` steps."""
         r = self.r
-        ahead = self.t_eval if self.every else self.t_eval[self.used:]
+        request = (self.t_eval if self.every else self.t_eval[self.used:], self.every, self.events, left, chunk)
         if self.spec.fixed_step:
-            return (r.t0, r.t1, self.y, self.f, r.p, self.h, self.n_steps, int(self.carry), r.atol, ahead,
-                    self.every, self.events, left, self.pair, chunk, self.comp, self.Z)
-        return (self.t, r.t1, self.y, self.f, r.p, r.rtol, r.atol, self.carry, r.max_step, ahead, self.every,
-                self.events, left, self.pair, r.error_control == "mode", chunk)
+            control = (self.h, self.n_steps, int(self.carry), r.atol, self.pair, self.comp, self.Z)
+            return r.t0, r.t1, self.y, self.f, r.p, control, request
+        control = (r.rtol, r.atol, self.carry, r.max_step, self.pair, r.error_control == "mode")
+        return self.t, r.t1, self.y, self.f, r.p, control, request
 
     def step_to_end(self) -> None:
         """Call the kernel chunk by chunk until it stops for a reason other than a pause (``code`` 1)."""
@@ -405,7 +406,7 @@ class _CompiledRun:
             chunk = min(CHUNK_STEPS, left)
             tails = (self.ts[self.used:], self.ys[self.used:], self.ev_t[self.n_ev:], self.ev_k[self.n_ev:])
             n_out, n_new, code, nf, na, nr, self.t, self.y, self.f, self.carry = _call_kernel(
-                self.solve, *self._kernel_args(left, chunk), *tails)
+                self.solve, *self._kernel_args(left, chunk), tails)
             self.used, self.n_ev = self.used + n_out, self.n_ev + n_new
             self.nfev, self.nacc, self.nrej = self.nfev + nf, self.nacc + na, self.nrej + nr
             self.code = code
@@ -482,8 +483,9 @@ def _while_compiling(r: _Run, spec, twin: str, names: tuple, events: np.ndarray,
     model = r.model
     module = kernel_module(model, spec.name)
     n = model.n_state
-    probe = (r.t0, r.t1, r.y0, r.y0, r.p, r.rtol, r.atol, 0.0, r.max_step, np.empty(0), True, events, 1, pair,
-             False, 1, np.empty(1), np.empty((1, n)), np.empty(1), np.empty(1, dtype=np.int64))
+    out = (np.empty(1), np.empty((1, n)), np.empty(1), np.empty(1, dtype=np.int64))
+    probe = (r.t0, r.t1, r.y0, r.y0, r.p, (r.rtol, r.atol, 0.0, r.max_step, pair, False),
+             (np.empty(0), True, events, 1, 1), out)
     pending = compiler.start(model, spec.name, module, module.argument_types(probe))
     label = f"{spec.name} for {model.name} ({model.fidelity}{', pose' if model.pose else ''})"
     print(f"knifeedge: compiling {label} in a background process (once: it is then cached in {cache_dir()}); "
@@ -591,11 +593,11 @@ class _StepCrossings:
 
         self.names, self.codes, self.fun, self.event_values = names, codes, fun, event_values
         self.screen = common.screen.py_func
-        self.locate = common.locator(event_at=lambda F, y, alt, x, c, p, ev, work: self._at(F(x), c)).py_func
+        self.locate = common.locator(event_at=lambda step, x, c: self._at(step(x), c)).py_func
         self.events = np.array(codes, dtype=np.int64)
         self.xs, self.gs = np.empty(common.SAMPLES + 3), np.empty(common.SAMPLES + 3)
-        self.ev_t = np.empty(len(codes) * (common.SAMPLES + 2))
-        self.ev_k = np.empty(len(codes) * (common.SAMPLES + 2), dtype=np.int64)
+        self.ev_t = np.empty(len(codes) * common.EVENTS_PER_STEP)
+        self.ev_k = np.empty(len(codes) * common.EVENTS_PER_STEP, dtype=np.int64)
         self.found = {e: [] for e in names}
         self.f_old = self._rate(solver) if codes else None
         # the screen's flags and Hermite extrema, as the kernels keep them
@@ -639,8 +641,8 @@ class _StepCrossings:
             gb, sb = self._values(y, f_new, h)
             if self.screen(ga, gb, sa, sb, self.crit, self.n_crit, self.flag):
                 sol = solver.dense_output()
-                n = self.locate(self.events, lambda x: sol(t_old + x * h), None, None, t_old, h, None, None, None,
-                                ga, gb, self.crit, self.n_crit, self.flag, self.xs, self.gs, self.ev_t, self.ev_k, 0)
+                marks = (ga, gb, self.crit, self.n_crit, self.flag, self.xs, self.gs)
+                n = self.locate(self.events, lambda x: sol(t_old + x * h), t_old, h, marks, (self.ev_t, self.ev_k), 0)
                 for i in range(n):
                     self.found[self.names[self.ev_k[i]]].append(float(self.ev_t[i]))
             self.f_old = f_new

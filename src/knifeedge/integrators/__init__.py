@@ -1,6 +1,6 @@
 """Integrators compiled with numba that call a generated right-hand side directly.
 
-:data:`COMPILED_METHODS` lists them; :func:`kernel` returns the compiled
+:data:`COMPILED_METHODS` lists them (the methods as data, :mod:`.methods`); :func:`kernel` returns the compiled
 ``solve`` function of one method specialized to one model (compiled on first
 use, then cached on disk across processes, see :mod:`.cache`).
 """
@@ -8,59 +8,16 @@ from __future__ import annotations
 
 import sys
 import time
-from dataclasses import dataclass
 
-from . import dop853_tableau, rk_tableaus, tsit5
 from .cache import cache_dir, call_repairing
-from .kernels import load_kernel
+from .kernels import kernel_module, load_kernel
 from .status import Status, from_code
-from .fixed_methods import FIXED_METHODS, FixedMethod, register_fixed
-from .tableau import TABLEAUS, ExplicitTableau, register
-from .common import SAMPLES as _SAMPLES
+from .methods import ALIASES, COMPILED_METHODS, ExplicitTableau, FixedMethod, get, register
+from .common import EVENTS_PER_STEP
 from .compiler import compile_mode, set_compile_mode
 
-#: most zero crossings of one event a kernel finds in one step (room the event buffers keep per event)
-EVENTS_PER_STEP = _SAMPLES + 2
 
-# the adaptive methods: one registered tableau each (a new method is its file and one line here)
-register(dop853_tableau.DOP853)
-register(rk_tableaus.DP54)
-register(tsit5.TSIT5)
-
-
-@dataclass(frozen=True)
-class CompiledMethod:
-    """A compiled integration method.
-
-    Attributes
-    ----------
-    name : str
-    template : str  -- kernel template (``"erk"`` adaptive, ``"fixed"`` fixed step)
-    variant : str -- the registered method (an ``ExplicitTableau`` or a ``FixedMethod``)
-    order : int     -- classical order of accuracy
-    fixed_step : bool -- needs a step ``h`` instead of tolerances
-    description : str
-    """
-
-    name: str
-    template: str
-    variant: str | int
-    order: int
-    fixed_step: bool
-    description: str
-
-
-COMPILED_METHODS = {
-    m.name: m
-    for m in (
-        *(CompiledMethod(t.name, "erk", t.name, t.order, False, t.description) for t in TABLEAUS.values()),
-        *(CompiledMethod(m.name, "fixed", m.name, m.order, True, m.description) for m in FIXED_METHODS.values()),
-    )
-}
-#: other accepted names of compiled methods
-ALIASES = {"RK45": "DP54"}
-
-
+#: the ``solve`` of each kernel used so far (the first-call notice's wrapper until it has compiled)
 _KERNELS: dict = {}
 
 
@@ -71,22 +28,14 @@ def kernel(model, method: str):
     takes seconds, and says so in one line on stderr; later uses, in any
     process, load the machine code from the cache (:func:`cache_dir`).
     """
-    spec, rhs_name, key = _identity(model, method)
-    if key not in _KERNELS:
-        module = kernel_module(model, method)
+    module = kernel_module(model, method)
+    if module not in _KERNELS:
         solve = module.solve
         if not module.is_compiled():
             pose = ", pose" if model.pose else ""
-            solve = _announced(solve, f"{spec.name} for {model.name} ({model.fidelity}{pose})")
-        _KERNELS[key] = solve
-    return _KERNELS[key]
-
-
-def kernel_module(model, method: str):
-    """The kernel of ``method`` for ``model`` (:func:`load_kernel`, compiled or not: its ``solve`` compiles at
-    its first call unless the cache holds it, see :func:`kernel_compiled`)."""
-    spec, rhs_name, _ = _identity(model, method)
-    return load_kernel(spec.template, spec.variant, model.module, rhs_name, model.n_state)
+            solve = _announced(solve, f"{get(method).name} for {model.name} ({model.fidelity}{pose})")
+        _KERNELS[module] = solve
+    return _KERNELS[module]
 
 
 def kernel_compiled(model, method: str) -> bool:
@@ -96,14 +45,8 @@ def kernel_compiled(model, method: str) -> bool:
 
 def use_compiled(model, method: str) -> None:
     """Forget a first-call notice of the kernel of ``method`` for ``model`` (it was compiled elsewhere)."""
-    _KERNELS[_identity(model, method)[2]] = kernel_module(model, method).solve
-
-
-def _identity(model, method: str) -> tuple:
-    """``(spec, rhs_name, key)``: the method, the right-hand side its kernel calls, and the kernel's key."""
-    spec = COMPILED_METHODS[ALIASES.get(method, method)]
-    rhs_name = "rhs_pose_q_into" if model.pose else "rhs_q_into"
-    return spec, rhs_name, (model.module.__name__, rhs_name, spec.template, spec.variant)
+    module = kernel_module(model, method)
+    _KERNELS[module] = module.solve
 
 
 def _announced(solve, label: str):
@@ -130,10 +73,6 @@ def _announced(solve, label: str):
     return first_call
 
 
-__all__ = ["COMPILED_METHODS", "ALIASES", "EVENTS_PER_STEP", "CompiledMethod", "ExplicitTableau", "FIXED_METHODS",
-           "FixedMethod", "Status", "TABLEAUS",
-           "cache_dir",
+__all__ = ["COMPILED_METHODS", "ALIASES", "EVENTS_PER_STEP", "ExplicitTableau", "FixedMethod", "Status", "cache_dir",
            "call_repairing", "compile_mode", "from_code", "kernel", "kernel_compiled", "kernel_module", "load_kernel",
-           "register",
-           "register_fixed",
-           "set_compile_mode", "use_compiled"]
+           "register", "set_compile_mode", "use_compiled"]

@@ -51,6 +51,8 @@ from numba import njit
 _EPS = np.finfo(np.float64).eps
 #: interior samples of a suspected step: SAMPLES - 1 equally spaced points, plus the Hermite extrema
 SAMPLES = 8
+#: most zero crossings of one event a kernel finds in one step (room the event buffers keep per event)
+EVENTS_PER_STEP = SAMPLES + 2
 #: a Hermite extremum within this fraction of the larger end value of zero makes the step suspect
 NEAR = 0.5
 #: Illinois iterations (it stops at the resolution of x, a few ulps, long before)
@@ -109,8 +111,9 @@ def interpolate(F, y, alt, x, i):
 
 
 def _interpolant_event(values):
-    def event_at(F, y, alt, x, c, p, ev, work):
+    def event_at(step, x, c):
         """Event ``c`` (a component, or ``-1 - j``: event function ``j``) of the interpolant at ``x``."""
+        F, y, alt, p, ev, work = step
         if c >= 0:
             return interpolate(F, y, alt, x, c)
         xm = 1.0 - x
@@ -130,21 +133,26 @@ def _no_values(s, p, ev):
 
 
 def locator(values=None, event_at=None):
-    """``locate(...)``, the one zero-crossing locator of every path: the crossings of the flagged events inside
-    the step from ``t`` (length ``h``), the state components' (``events[k] >= 0``) first, then the model's
-    event functions' (``events[k] = -1 - j``), appended to ``ev_t``, ``ev_k`` from ``n_ev``; returns the new
-    count.  ``xs``, ``gs`` (SAMPLES + 3): work arrays.
+    """``locate(events, step, t, h, marks, found, n_ev)``, the one zero-crossing locator of every path: the
+    crossings of the flagged events inside the step from ``t`` (length ``h``), the state components'
+    (``events[k] >= 0``) first, then the model's event functions' (``events[k] = -1 - j``), appended to
+    ``found = (ev_t, ev_k)`` from ``n_ev``; returns the new count.  ``marks`` is ``(ga, gb, crit, n_crit, flag,
+    xs, gs)``: the events' values at the step's ends and the screen's verdicts (:func:`screen`), then two work
+    arrays (SAMPLES + 3).
 
-    ``event_at(F, y, alt, x, c, p, ev, work)``: event ``c`` at ``x`` in [0, 1] of the step; by default on the
-    kernels' interpolant ``F``, ``alt`` about ``y``, event function ``j`` as ``values(s, p, ev)[j]`` (a
-    compiled function; ``None`` for a model without them) at the interpolated state (into ``work``).  The
-    SciPy hand-over passes its own (on SciPy's dense output) and runs ``locate.py_func`` in Python.
+    ``event_at(step, x, c)``: event ``c`` at ``x`` in [0, 1] of the step; by default ``step`` is ``(F, y, alt,
+    p, ev, work)``, the kernels' interpolant ``F``, ``alt`` about ``y``, and event function ``j`` is
+    ``values(s, p, ev)[j]`` (a compiled function; ``None`` for a model without them) at the interpolated state
+    (into ``work``).  The SciPy hand-over passes its own (on SciPy's dense output) and runs ``locate.py_func``
+    in Python.
     """
     if event_at is None:
         event_at = njit(error_model="numpy")(_interpolant_event(
             njit(error_model="numpy")(_no_values) if values is None else values))
 
-    def locate(events, F, y, alt, t, h, p, ev, work, ga, gb, crit, n_crit, flag, xs, gs, ev_t, ev_k, n_ev):
+    def locate(events, step, t, h, marks, found, n_ev):
+        ga, gb, crit, n_crit, flag, xs, gs = marks
+        ev_t, ev_k = found
         for functions in range(2):  # the components' rows first, then the event functions'
             for k in range(events.size):
                 c = events[k]
@@ -169,7 +177,7 @@ def locator(values=None, event_at=None):
                             j -= 1
                         xs[j + 1] = x
                     for m in range(1, ns):
-                        gs[m] = event_at(F, y, alt, xs[m], c, p, ev, work)
+                        gs[m] = event_at(step, xs[m], c)
                 xs[ns] = 1.0
                 gs[ns] = gb[k]
                 ns += 1
@@ -185,7 +193,7 @@ def locator(values=None, event_at=None):
                             x = (a * fb_ - b * fa_) / (fb_ - fa_)
                             if not (a < x < b):
                                 x = 0.5 * (a + b)
-                            fx = event_at(F, y, alt, x, c, p, ev, work)
+                            fx = event_at(step, x, c)
                             if fx == 0.0:
                                 break
                             if (fx > 0.0) == (fb_ > 0.0):

@@ -154,8 +154,7 @@ def start(model, method: str, kernel_module, arg_types: tuple) -> Pending:
         return Pending(kernel_module, path, None, started=False)
     lock.unlink(missing_ok=True)
     job = {
-        "kernel": str(path), "method": method, "template": "erk",
-        "variant": kernel_module.TABLEAU, "rhs": kernel_module.RHS_NAME,
+        "kernel": str(path), "method": method,
         "model": model.module.MODEL, "fidelity": model.module.FIDELITY, "pose": bool(model.pose),
         "path": str(model.source_path.parent) if model.source_path is not None else None,
         "types": base64.b64encode(pickle.dumps(tuple(arg_types))).decode(),
@@ -178,10 +177,10 @@ def _main() -> int:
     path = Path(job["kernel"])
     try:
         from ..models import load
-        from .kernels import load_kernel
+        from .kernels import kernel_module
 
         model = load(job["model"], fidelity=job["fidelity"], pose=job["pose"], path=job["path"])
-        module = load_kernel(job["template"], job["variant"], model.module, job["rhs"], model.n_state)
+        module = kernel_module(model, job["method"])
         if Path(module.path) != path:
             raise RuntimeError(f"the kernel of this process is {module.path}, not {path}")
         module.compile_types(pickle.loads(base64.b64decode(job["types"])))

@@ -30,9 +30,9 @@ from numba import carray, njit, types
 from . import common as _c
 from . import fnptr as _fnptr
 from . import irparts as _irparts
-from . import tableau as _tableau
+from .methods import erk_arrays
 from .cache import cache_dir, compiled, compiled_cfunc, digest, index_path, is_cached
-from .common import NEAR, SAMPLES
+from .common import EVENTS_PER_STEP, NEAR
 from .fnptr import call_f8, call_void
 
 SAFETY = 0.9
@@ -120,7 +120,8 @@ def _workspace_closure(N_EXT: int, DENSE_ROWS: int):
 
 def _driver_closure(tableau: str):
     """The integrator of ``tableau`` as a Python closure over its sizes and helpers."""
-    (_, _, _, _, _, _, _, N_STAGES, N_EXT, DENSE_ROWS, ALT, ERROR_ORDER) = _tableau.erk_arrays(tableau)
+    tab = erk_arrays(tableau)
+    N_STAGES, N_EXT, DENSE_ROWS, ALT, ERROR_ORDER = tab.n_stages, tab.n_ext, tab.dense_rows, tab.alt, tab.error_order
     DENSE_NFEV = N_EXT - N_STAGES - 1  # evaluations of the interpolant beyond the step's (DOP853: 3)
     values = njit(error_model="numpy")(_values_)
     function_ends, locate = _c.function_ends(values), _c.locator(values)
@@ -128,8 +129,7 @@ def _driver_closure(tableau: str):
     ERROR_EXPONENT = -1.0 / (ERROR_ORDER + 1)
     EIGHTH = ERROR_ORDER == 7  # err ** (-1/8) as three square roots, cheaper than pow (DOP853)
 
-    def solve(fns, t0, t1, y0, f0, q, p, rtol, atol, h_init, max_step, t_eval, every, events, max_steps, pair,
-              mode_scaled, chunk, ts, ys, ev_t, ev_k):
+    def solve(fns, t0, t1, y0, f0, q, p, control, request, out):
         """Integrate from ``t0`` toward ``t1 > t0``: at most ``chunk`` accepted steps, as many as the buffers hold.
 
         Parameters
@@ -138,19 +138,21 @@ def _driver_closure(tableau: str):
             :class:`AdaptiveKernel`) and the number of its event functions.
         y0 : (n,) initial state; f0 : (n,) its derivative when continuing (``h_init > 0``), else ignored.
         q : ``constants(p)`` of the right-hand side; p : the parameters (of the event functions).
-        rtol : float; atol : (n,) absolute tolerances.
-        h_init : next step when continuing a run, or 0 to start one (the first step is then chosen).
-        max_step : largest step.
-        t_eval : (m,) increasing output times in (t0, t1] still ahead (used when not ``every``).
-        every : store every accepted step instead of ``t_eval`` (the start is not stored).
-        events : (e,) int, whose zero crossings are recorded: a state component ``c >= 0``, or ``-1 - j`` for
-            the model's event function ``j`` (``event_values(s, p)[j]``), see :mod:`.common`.
-        max_steps : accepted steps allowed (the caller subtracts those already taken).
-        pair : (n,) int, partner component for ``mode_scaled`` error control (-1: none).
-        chunk : accepted steps after which the call returns with status 1 (paused).
-        ts (r,), ys (r, n) : output rows (with ``every``, the call pauses when they are full; otherwise they
-            must hold ``t_eval``); ev_t (c,), ev_k (c,) int: event times and numbers (the call pauses when
-            a step could overflow them: a step finds at most ``SAMPLES + 2`` crossings of each event).
+        control : ``(rtol, atol, h_init, max_step, pair, mode_scaled)``, the step control: ``rtol`` float, ``atol``
+            (n,) absolute tolerances; ``h_init`` the next step when continuing a run, or 0 to start one (the first
+            step is then chosen); ``max_step`` the largest step; ``pair`` (n,) int, the partner component for
+            ``mode_scaled`` error control (-1: none).
+        request : ``(t_eval, every, events, max_steps, chunk)``, what to record and for how long (the same for
+            every kernel): ``t_eval`` (m,) increasing output times in (t0, t1] still ahead (used when not
+            ``every``); ``every``: store every accepted step instead (the start is not stored); ``events`` (e,)
+            int, whose zero crossings are recorded: a state component ``c >= 0``, or ``-1 - j`` for the model's
+            event function ``j`` (``event_values(s, p)[j]``), see :mod:`.common`; ``max_steps`` accepted steps
+            allowed (the caller subtracts those already taken); ``chunk`` accepted steps after which the call
+            returns with status 1 (paused).
+        out : ``(ts, ys, ev_t, ev_k)``, the buffers filled (the same for every kernel): ``ts`` (r,), ``ys`` (r, n)
+            output rows (with ``every``, the call pauses when they are full; otherwise they must hold
+            ``t_eval``); ``ev_t`` (c,), ``ev_k`` (c,) int event times and numbers (the call pauses when a step
+            could overflow them: a step finds at most ``EVENTS_PER_STEP`` crossings of each event).
 
         A paused run continues from the returned ``t, y, f, h_next`` (passed as ``t0, y0, f0, h_init``)
         with the steps, evaluations and results of one uninterrupted call.
@@ -159,6 +161,9 @@ def _driver_closure(tableau: str):
         -------
         n_out, n_ev, status, nfev, accepted, rejected, t, y, f, h_next
         """
+        rtol, atol, h_init, max_step, pair, mode_scaled = control
+        t_eval, every, events, max_steps, chunk = request
+        ts, ys, ev_t, ev_k = out
         N = y0.size
         rhs, attempt, dense, ev = fns[0], fns[1], fns[2], fns[3:5]
         ms, nq = np.int64(1 if mode_scaled else 0), np.int64(q.size)
@@ -175,7 +180,7 @@ def _driver_closure(tableau: str):
             if n_acc >= max_steps:
                 status = -2
                 break
-            if n_acc >= chunk or (every and n_out == ts.size) or n_ev + ne * (SAMPLES + 2) > ev_t.size:
+            if n_acc >= chunk or (every and n_out == ts.size) or n_ev + ne * EVENTS_PER_STEP > ev_t.size:
                 status = 1
                 break
             # the attempts of a step, the events' screen, their crossings and the output, written out (common.py
@@ -243,8 +248,8 @@ def _driver_closure(tableau: str):
                 call_void(dense, (t, h, ws, nq))  # the interpolant of the step: F (DENSE_ROWS x N)
                 nfev += DENSE_NFEV
             if any_flag:
-                n_ev = locate(events, F, y, ALT, t, h, p, ev, work, ga, gb, crit, n_crit, flag, xs, gs, ev_t, ev_k,
-                              n_ev)
+                marks = (ga, gb, crit, n_crit, flag, xs, gs)
+                n_ev = locate(events, (F, y, ALT, p, ev, work), t, h, marks, (ev_t, ev_k), n_ev)
             if every:  # the common case: a row per step
                 ts[n_out] = t_new
                 for i in range(N):
@@ -292,10 +297,10 @@ class AdaptiveKernel:
         self.NV = len(getattr(model_module, "EVENT_NAMES", ()))
         self.NQ = _n_constants(model_module)
         self._rhs, self._constants = getattr(model_module, rhs_name), model_module.constants
-        tab = _irparts.Tableau(tableau)
+        tab = erk_arrays(tableau)
         #: the integrator's workspace, as the parts read it (offsets of K, y, y_new, work, scale, F, q)
         self.layout = _irparts.Layout(n_state, tab.n_ext, tab.dense_rows)
-        stem = digest(tableau, _tableau.erk_arrays(tableau), self._rhs, n_state, self.NQ)
+        stem = digest(tableau, tuple(vars(tab).values()), self._rhs, n_state, self.NQ)
         self.path = cache_dir() / "kernels" / f"erk-{tableau}-{model_module.__name__.rsplit('.', 1)[-1]}-{stem}"
         self.driver = driver(tableau)
         self._events_index = index_path(self._events_py(), f"{self.path.name}-events") if self.NV else None
@@ -364,20 +369,20 @@ class AdaptiveKernel:
             return False
         return self._events_index is None or self._events_index.is_file()
 
-    def arguments(self, t0, t1, y0, f0, p, *rest) -> tuple:
+    def arguments(self, t0, t1, y0, f0, p, control, request, out) -> tuple:
         """The integrator's arguments for the arguments of :meth:`solve`."""
         if y0.size != self.N:
             raise ValueError("the initial state does not have the size this kernel was specialized to")
         q = self.constants(p)
         if q.size != self.NQ:
             raise ValueError(f"constants(p) has {q.size} elements, not the {self.NQ} this kernel was specialized to")
-        return (self.parts(), t0, t1, y0, f0, q, p) + _one_signature(rest)
+        return self.parts(), t0, t1, y0, f0, q, p, _one_signature(control), request, out
 
     def argument_types(self, args: tuple) -> tuple:
         """numba's types of the integrator's arguments for the arguments ``args`` of :meth:`solve` (compiles
         nothing: what a separate process needs to compile the integrator)."""
-        t0, t1, y0, f0, p, *rest = args
-        sample = (np.zeros(5, dtype=np.int64), t0, t1, y0, f0, np.zeros(1), p, *_one_signature(tuple(rest)))
+        t0, t1, y0, f0, p, control, request, out = args
+        sample = (np.zeros(5, dtype=np.int64), t0, t1, y0, f0, np.zeros(1), p, _one_signature(control), request, out)
         return tuple(self.driver.typeof_pyval(a) for a in sample)
 
     def compile_types(self, types_) -> None:
@@ -385,23 +390,21 @@ class AdaptiveKernel:
         self.parts()
         self.driver.compile(types_)
 
-    def solve(self, t0, t1, y0, f0, p, rtol, atol, h_init, max_step, t_eval, every, events, max_steps, pair,
-              mode_scaled, chunk, ts, ys, ev_t, ev_k):
+    def solve(self, t0, t1, y0, f0, p, control, request, out):
         """The integrator with this model's parts (see :func:`driver`'s parameters and returns, without ``fns``
         and ``q``)."""
-        return self.driver(*self.arguments(t0, t1, y0, f0, p, rtol, atol, h_init, max_step, t_eval, every, events,
-                                           max_steps, pair, mode_scaled, chunk, ts, ys, ev_t, ev_k))
+        return self.driver(*self.arguments(t0, t1, y0, f0, p, control, request, out))
 
 
-def _one_signature(rest: tuple) -> tuple:
-    """``rest`` (``rtol`` .. ``ev_k``) with ``pair`` read-only, as ``simulate`` passes it: a writable one is
-    another numba type, and the integrator would compile a second time (3-4 s) for it."""
-    pair = rest[8]
+def _one_signature(control: tuple) -> tuple:
+    """``control`` with ``pair`` read-only, as ``simulate`` passes it: a writable one is another numba type, and
+    the integrator would compile a second time (3-4 s) for it."""
+    pair = control[4]
     if pair.flags.writeable:
         pair = pair.view()
         pair.flags.writeable = False
-        rest = rest[:8] + (pair,) + rest[9:]
-    return rest
+        control = control[:4] + (pair,) + control[5:]
+    return control
 
 
 def _n_constants(model_module) -> int:

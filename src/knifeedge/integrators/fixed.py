@@ -1,4 +1,4 @@
-"""Fixed-step kernel for any registered :class:`~knifeedge.integrators.fixed_methods.FixedMethod`.
+"""Fixed-step kernel for any registered :class:`~knifeedge.integrators.methods.FixedMethod`.
 
 :func:`make_solve` returns the kernel of one method for one model: a numba
 function whose closure holds the method's tableau and the state size as
@@ -22,8 +22,8 @@ from numba import njit
 
 from . import common as _c
 from .cache import compiled, is_cached
-from .common import NEAR, SAMPLES
-from .fixed_methods import FIXED_METHODS
+from .common import EVENTS_PER_STEP, NEAR
+from .methods import get
 
 MAX_STAGE_ITER = 100
 _EPS = 2.220446049250313e-16
@@ -35,7 +35,7 @@ _OPTIONS = {"error_model": "numpy"}
 
 def _increments(method: str, N: int, rhs):
     """``(rk4, explicit, gauss, solver_scale)``: the step functions of ``method`` on ``N`` states."""
-    m = FIXED_METHODS[method]
+    m = get(method, "fixed")
     S, GA, GC, DENOMINATOR = m.stages, m.A.copy(), m.c.copy(), m.denominator
     GB = m.b * DENOMINATOR  # the increment is h / DENOMINATOR * sum_j GB[j] K_j
 
@@ -160,7 +160,7 @@ def make_solve(method: str, model_module, rhs_name: str, N: int):
 
         values = njit(**_OPTIONS)(values_)
         function_ends, locate = _c.function_ends(values), _c.locator(values)
-    py = _solve_closure(FIXED_METHODS[method], N, rhs, constants, _increments(method, N, rhs), bool(names),
+    py = _solve_closure(get(method, "fixed"), N, rhs, constants, _increments(method, N, rhs), bool(names),
                         function_ends, locate)
     label = f"fixed-{method}-{model_module.__name__.rsplit('.', 1)[-1]}-{rhs_name}"
     return compiled(py, label)
@@ -204,11 +204,11 @@ def _solve_closure(m, N: int, rhs, constants, increments, HAS_FUN, function_ends
     start, buffers = _start_closure(N, S, rhs), _buffers_closure(N, S)
     NO_EV = np.zeros(2, dtype=np.int64)  # the event functions are the model's own (the adaptive kernel's ``ev``)
 
-    def solve(t0, t1, y0, f0, p, h_fixed, n_steps, first, atol, t_eval, every, events, max_steps, pair, chunk,
-              comp, Z, ts, ys, ev_t, ev_k):
+    def solve(t0, t1, y0, f0, p, control, request, out):
         """Integrate from ``t0`` over steps ``first + 1 .. n_steps`` of size ``h_fixed``, at most ``chunk`` of them.
 
-        Step ``k`` ends at ``t0 + k h_fixed`` (the last at ``t1``).  ``atol`` (n,) is
+        ``control`` is ``(h_fixed, n_steps, first, atol, pair, comp, Z)``.  Step
+        ``k`` ends at ``t0 + k h_fixed`` (the last at ``t1``).  ``atol`` (n,) is
         the floor of the scale of the implicit solver's convergence test and
         ``pair`` (n,) the mode partner of each component (-1: none) whose
         magnitude also sets it (Gauss only).  ``y0`` is the state after step
@@ -216,10 +216,13 @@ def _solve_closure(m, N: int, rhs, constants, increments, HAS_FUN, function_ends
         ``comp`` (n,), the Kahan compensation, and ``Z`` (S, n), the stage
         derivatives of the last step, are carried from one call to the next and
         updated in place, so that a run in chunks takes the same steps as one
-        call.  Other arguments and the returned tuple are as for the adaptive
-        kernel (rejected steps are always 0; ``h_next`` is the index of the
-        last step taken).
+        call.  ``request``, ``out`` and the returned tuple are as for the
+        adaptive kernel (:func:`.erk.driver`; rejected steps are always 0;
+        ``h_next`` is the index of the last step taken).
         """
+        h_fixed, n_steps, first, atol, pair, comp, Z = control
+        t_eval, every, events, max_steps, chunk = request
+        ts, ys, ev_t, ev_k = out
         if y0.size != N:
             raise ValueError("the initial state does not have the size this kernel was specialized to")
         q = constants(p)
@@ -234,7 +237,7 @@ def _solve_closure(m, N: int, rhs, constants, increments, HAS_FUN, function_ends
             if n_acc >= max_steps:
                 status = -2
                 break
-            if n_acc >= chunk or (every and n_out == ts.size) or n_ev + ne * (SAMPLES + 2) > ev_t.size:
+            if n_acc >= chunk or (every and n_out == ts.size) or n_ev + ne * EVENTS_PER_STEP > ev_t.size:
                 status = 1
                 break
             step += 1
@@ -291,8 +294,8 @@ def _solve_closure(m, N: int, rhs, constants, increments, HAS_FUN, function_ends
             if any_flag or (ie < t_eval.size and t_eval[ie] < t_new):
                 _c.hermite_coefficients(y, y_new, f_old, f_new, h, F)
             if any_flag:
-                n_ev = locate(events, F, y, ALT, t, h, p, NO_EV, work, ga, gb, crit, n_crit, flag, xs, gs, ev_t, ev_k,
-                              n_ev)
+                marks = (ga, gb, crit, n_crit, flag, xs, gs)
+                n_ev = locate(events, (F, y, ALT, p, NO_EV, work), t, h, marks, (ev_t, ev_k), n_ev)
             if every:  # the common case: a row per step
                 ts[n_out] = t_new
                 for i in range(N):

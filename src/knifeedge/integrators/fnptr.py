@@ -15,7 +15,7 @@ as their addresses are in use.
 """
 import numpy as np
 from llvmlite import ir
-from numba import types
+from numba import njit, types
 from numba.core import cgutils
 from numba.extending import intrinsic
 
@@ -71,25 +71,13 @@ def call_void(typingctx, address, args):
     return types.none(address, args), _call_through(args, ir.VoidType())
 
 
-def _constants_at(address, p, nq):
+@njit(cache=True, error_model="numpy")
+def constants_at(address, p, nq):
     """``q`` (``nq`` values) from the ``void constants(double* p, double* q)`` at ``address``, and whether
-    every value is finite."""
+    every value is finite (compiled once per machine: one function for every model's ``constants`` part)."""
     q = np.empty(nq)
     call_void(address, (p, q))
     for i in range(nq):
         if not np.isfinite(q[i]):
             return q, False
     return q, True
-
-
-def constants_at(address: int, p, nq: int):
-    """:func:`_constants_at` compiled (once per machine: one function for every model's ``constants`` part)."""
-    global _CONSTANTS_AT
-    if _CONSTANTS_AT is None:
-        from numba import njit
-
-        _CONSTANTS_AT = njit(cache=True, error_model="numpy")(_constants_at)
-    return _CONSTANTS_AT(address, p, nq)
-
-
-_CONSTANTS_AT = None

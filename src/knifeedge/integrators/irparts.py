@@ -46,6 +46,9 @@ import stat
 import struct
 import sys
 from pathlib import Path
+from types import SimpleNamespace
+
+from .methods import erk_arrays
 
 #: the C signatures of the two parts (called by the integrator of :mod:`.erk`)
 ATTEMPT_ARGS = ("double %t", "double %h", "double %t_new", "double %rtol", "i64 %mode_scaled", "ptr %ws",
@@ -139,17 +142,6 @@ class Layout:
         self.q = o + (4 + dense_rows) * n
 
 
-class Tableau:
-    """The tables of a registered method as the parts use them (``tableau.erk_arrays``)."""
-
-    def __init__(self, name: str):
-        from .tableau import erk_arrays
-
-        (self.A, self.C, self.E5, self.E3, self.DD, self.P, self.hairer, self.n_stages, self.n_ext,
-         self.dense_rows, _, _) = erk_arrays(name)
-        self.name = name
-
-
 def _stage(w: _Writer, lay: Layout, rhs: str, nq: int, y: list, k: list, row, time: str, target: int,
            scaled: bool) -> list:
     """One stage from the ``len(k)`` stages so far: its state stored at ``target``, then ``K[len(k)] = f(time,
@@ -178,7 +170,7 @@ def _stage(w: _Writer, lay: Layout, rhs: str, nq: int, y: list, k: list, row, ti
     return values
 
 
-def attempt_ir(tab: Tableau, n: int, nq: int, name: str, rhs: str) -> str:
+def attempt_ir(tab: SimpleNamespace, n: int, nq: int, name: str, rhs: str) -> str:
     """The IR of ``attempt`` (called by the integrator of :mod:`.erk`) for ``tab`` on ``n`` states and ``nq`` constants,
     defining the symbol ``name`` and calling the right-hand side ``rhs`` (numba's native function of the
     model's ``rhs`` part)."""
@@ -225,7 +217,7 @@ def attempt_ir(tab: Tableau, n: int, nq: int, name: str, rhs: str) -> str:
     return _function("double", name, ATTEMPT_ARGS, w)
 
 
-def dense_ir(tab: Tableau, n: int, nq: int, name: str, rhs: str) -> str:
+def dense_ir(tab: SimpleNamespace, n: int, nq: int, name: str, rhs: str) -> str:
     """The IR of ``dense`` (called by the integrator of :mod:`.erk`): the interpolant's rows ``F`` (DOP853:
     its extra stages first) for ``tab`` on ``n`` states, defining ``name`` and calling the right-hand side ``rhs``."""
     lay = Layout(n, tab.n_ext, tab.dense_rows)
@@ -258,7 +250,7 @@ def _function(returns: str, name: str, args, w: _Writer) -> str:
     return f'define {returns} @"{name}"({", ".join(args)}) {{\nentry:\n' + "\n".join(w.lines) + "\n}\n"
 
 
-def module_ir(tab: Tableau, n: int, nq: int, names: tuple, rhs: str, rhs_definition: str = "",
+def module_ir(tab: SimpleNamespace, n: int, nq: int, names: tuple, rhs: str, rhs_definition: str = "",
               extra: str = "") -> str:
     """The IR module of both parts (``names``: the symbols of ``attempt`` and ``dense``, and optionally of a
     C-callable ``rhs`` part) for ``tab`` on ``n`` states and ``nq`` constants, calling the right-hand side
@@ -399,7 +391,7 @@ def load_or_compile(kernel_path, tableau: str, n: int, nq: int, model, rhs_name:
             raise RuntimeError(f"unexpected symbol of a compiled C callback: {native!r}") from None
         native, definition, link = native[len("cfunc."):], "", [compiled._library]
     extras = _extras_ir(names, ir.get("constants", ""), getattr(model, "LLVM_IR_READS", 0))
-    text = module_ir(Tableau(tableau), n, nq, names[:3], native, definition, extras)
+    text = module_ir(erk_arrays(tableau), n, nq, names[:3], native, definition, extras)
     lib = compile_library(text, f"knifeedge_parts_{Path(kernel_path).stem}", link)
     addresses = [lib.get_pointer_to_function(x) if i < 3 or i == 5 or "constants" in ir else 0
                  for i, x in enumerate(names)]

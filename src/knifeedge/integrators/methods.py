@@ -1,0 +1,586 @@
+"""Integration methods as data: every compiled method is a tableau, checked when it is built, registered by name.
+
+Two kinds, one registry (:data:`COMPILED_METHODS`, :func:`register`):
+
+- :class:`ExplicitTableau`, an embedded explicit Runge--Kutta pair with dense output, run by the adaptive
+  integrator (:mod:`.erk`: one numba closure per method, the model's parts as LLVM IR, :mod:`.irparts`).
+  Conventions (the first-same-as-last form of Dormand--Prince pairs): stage ``j < s`` is
+  ``K_j = f(t + c_j h, y + h sum_i A[j, i] K_i)``, the step is ``y_new = y + h sum_j b_j K_j`` and
+  ``K_s = f(t + h, y_new)`` is both the last term of the error estimate ``err = h sum_{j <= s} e_j K_j`` and
+  the first stage of the next step.
+- :class:`FixedMethod`, a Butcher tableau ``(A, b, c)`` taken with a fixed step (:mod:`.fixed`).  An explicit
+  tableau (strictly lower-triangular ``A``, e.g. the classical RK4) is stepped stage after stage; an implicit
+  one (the Gauss--Legendre collocation methods) by fixed-point iteration of its stage equations, started from
+  the previous step's collocation polynomial (:attr:`FixedMethod.extrapolation`).
+
+The kernels read everything they need from the registered method.  Adding a method is its tableau and one
+:func:`register` line at the end of this module; it is then a ``method`` of :func:`knifeedge.simulate`
+(a method registered later, from outside, runs through :func:`knifeedge.integrators.load_kernel` only).
+
+The methods here, with their sources:
+
+- ``DOP853``: Hairer, Norsett & Wanner, *Solving ODEs I*, Sect. II.10 and E. Hairer's Fortran DOP853; the
+  coefficients copied from SciPy's ``scipy/integrate/_ivp/dop853_coefficients.py`` (BSD-3-Clause, Copyright
+  (c) 2001-2002 Enthought, Inc. and 2003-2024 SciPy Developers), kept here so the compiled integrators do not
+  depend on a private SciPy module.
+- ``DP54``: J. R. Dormand, P. J. Prince, "A family of embedded Runge-Kutta formulae", J. Comput. Appl. Math. 6
+  (1980) 19-26; the dense-output matrix is Shampine's (Math. Comp. 46 (1986) 135-150) with the optimum c6,
+  the same tables SciPy's ``RK45`` uses.
+- ``Tsit5``: Ch. Tsitouras, "Runge--Kutta pairs of order 5(4) satisfying only the first column simplifying
+  assumption", Comput. Math. Appl. 62 (2011) 770--775 (the default explicit method of OrdinaryDiffEq.jl and
+  diffrax); its continuous weights ``b_j(x)``, as given factored in OrdinaryDiffEq.jl and diffrax, expanded
+  into the power-series matrix ``P``.
+- ``RK4``: the classical Runge--Kutta method of order 4.
+- ``implicit_midpoint``, ``gauss4``, ``gauss6``: Gauss--Legendre collocation with s = 1, 2, 3 stages (orders
+  2, 4, 6): E. Hairer, C. Lubich, G. Wanner, *Geometric Numerical Integration*, Table II.1.1 and Sect. II.1.3.
+  They are symmetric (time-reversible) and conserve every quadratic invariant.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from types import SimpleNamespace
+from typing import ClassVar
+
+import numpy as np
+from numpy.polynomial import polynomial as _poly
+
+#: tolerance of the consistency checks (the coefficients are given to about 16 digits)
+CHECK_TOL = 1e-13
+
+
+def _freeze(method, names: tuple) -> None:
+    """The attributes ``names`` of the frozen dataclass ``method`` as read-only float arrays."""
+    for attr in names:
+        arr = np.array(getattr(method, attr), dtype=float)
+        arr.flags.writeable = False
+        object.__setattr__(method, attr, arr)
+
+
+def _butcher_problems(A, b, c) -> list:
+    """What is wrong with the Butcher tableau ``(A, b, c)``: shapes, rows of ``A`` not summing to ``c``, weights
+    not summing to one."""
+    s = c.size
+    if A.shape != (s, s) or b.shape != (s,):
+        return [f"shapes: c {c.shape}, A {A.shape} (want ({s}, {s})), b {b.shape} (want ({s},))"]
+    out = []
+    rows = A.sum(axis=1)
+    bad = np.flatnonzero(np.abs(rows - c) > CHECK_TOL)
+    if bad.size:
+        out.append(f"rows {bad.tolist()} of A do not sum to c (sums {rows[bad].tolist()}, c {c[bad].tolist()})")
+    if abs(b.sum() - 1.0) > CHECK_TOL:
+        out.append(f"weights b sum to {b.sum()!r}, not 1")
+    return out
+
+
+def _refuse(kind: str, name: str, problems: list) -> None:
+    if problems:
+        raise ValueError(f"{kind} {name!r} is inconsistent: " + "; ".join(problems))
+
+
+@dataclass(frozen=True, eq=False)
+class ExplicitTableau:
+    """An embedded explicit Runge--Kutta pair with dense output, run by the adaptive integrator.
+
+    Attributes
+    ----------
+    name : str
+        Registry name (the ``method`` of :func:`knifeedge.simulate`).
+    c : (s,) nodes, ``c[0] == 0``.
+    A : (s, s) strictly lower-triangular stage coefficients.
+    b : (s,) weights of the step.
+    e : (s + 1,) error estimator: ``h sum_j e_j K_j`` over the stages and ``K_s = f(t + h, y_new)``.
+    order : order of the step.
+    error_order : order of the embedded estimate (the step-size controller uses ``-1/(error_order + 1)``).
+    P : (s + 1, m) dense output ``y(t + x h) = y + h sum_j K_j sum_r P[j, r] x^(r + 1)``;
+        ``None`` when the method has Hairer's DOP853 interpolant (``hairer``).
+    hairer : dict or None
+        DOP853 only: its second (3rd-order) estimator ``e3``, the extra
+        stages of its dense output (``c_ext``, ``A_ext`` rows over all
+        earlier stages) and the interpolant's matrix ``D``.
+    description, reference : str
+    """
+
+    #: the kernel that runs it (:func:`knifeedge.integrators.load_kernel`) and whether it takes a step ``h``
+    kind: ClassVar[str] = "erk"
+    fixed_step: ClassVar[bool] = False
+    name: str
+    c: np.ndarray
+    A: np.ndarray
+    b: np.ndarray
+    e: np.ndarray
+    order: int
+    error_order: int
+    P: np.ndarray | None
+    description: str
+    reference: str
+    hairer: dict | None = field(default=None)
+
+    def __post_init__(self):
+        _freeze(self, ("c", "A", "b", "e") + (("P",) if self.P is not None else ()))
+        _refuse("tableau", self.name, _tableau_problems(self))
+
+    @property
+    def stages(self) -> int:
+        """Stages per step (the first-same-as-last evaluation not counted)."""
+        return self.c.size
+
+
+def _tableau_problems(t: ExplicitTableau) -> list:
+    s = t.c.size
+    out = [] if isinstance(t.name, str) and t.name.isidentifier() else [f"name must be an identifier, got {t.name!r}"]
+    out += _butcher_problems(t.A, t.b, t.c)
+    if t.e.shape != (s + 1,):
+        out.append(f"shapes: e {t.e.shape} (want ({s + 1},))")
+    if any(p.startswith("shapes") for p in out):
+        return out
+    if t.c[0] != 0.0:
+        out.append(f"c[0] must be 0, got {t.c[0]!r}")
+    if np.any(np.triu(t.A) != 0.0):
+        out.append("A must be strictly lower triangular (an explicit method)")
+    if abs(t.e.sum()) > CHECK_TOL:
+        out.append(f"error estimator e sums to {t.e.sum()!r}, not 0 (it must vanish on constant derivatives)")
+    if not (isinstance(t.order, int) and isinstance(t.error_order, int) and 0 < t.error_order < t.order):
+        out.append(f"orders: need 0 < error_order < order, got {t.error_order!r}, {t.order!r}")
+    if (t.P is None) == (t.hairer is None):
+        out.append("give exactly one dense output: P (power series) or hairer (DOP853's)")
+    elif t.P is not None:
+        if t.P.ndim != 2 or t.P.shape[0] != s + 1:
+            out.append(f"P must have {s + 1} rows, got shape {t.P.shape}")
+        elif np.any(np.abs(t.P.sum(axis=1) - np.append(t.b, 0.0)) > CHECK_TOL):  # the interpolant at x = 1
+            out.append("the dense output at x = 1 is not the step (rows of P must sum to b, then 0)")
+    return out
+
+
+@dataclass(frozen=True, eq=False)
+class FixedMethod:
+    """A Runge--Kutta method taken with a fixed step.
+
+    Attributes
+    ----------
+    name : str -- registry name (the ``method`` of :func:`knifeedge.simulate`).
+    A : (s, s) stage coefficients; b : (s,) weights; c : (s,) nodes.
+    order : int; description : str.
+    denominator : float -- the step's increment is summed as ``h / denominator * sum_j (denominator b_j) K_j``
+        (RK4: 6, so that ``h/6 (K_0 + 2 K_1 + 2 K_2 + K_3)`` is computed as written); ``denominator b_j`` must
+        be exact.
+    """
+
+    kind: ClassVar[str] = "fixed"
+    fixed_step: ClassVar[bool] = True
+    name: str
+    A: np.ndarray
+    b: np.ndarray
+    c: np.ndarray
+    order: int
+    description: str
+    denominator: float = 1.0
+
+    def __post_init__(self):
+        _freeze(self, ("A", "b", "c"))
+        problems = _butcher_problems(self.A, self.b, self.c)
+        if not problems and np.any((self.b * self.denominator) / self.denominator != self.b):
+            problems.append(f"the weights times the denominator {self.denominator!r} are not exact")
+        _refuse("method", self.name, problems)
+
+    @property
+    def stages(self) -> int:
+        return self.c.size
+
+    @property
+    def implicit(self) -> bool:
+        """Whether a stage depends on itself or a later one (then the stages are iterated)."""
+        return bool(np.any(np.triu(self.A) != 0.0))
+
+    @property
+    def is_classical_rk4(self) -> bool:
+        """Whether this is the classical RK4 tableau (the kernel then runs its increment as written out)."""
+        return (self.stages == 4 and np.array_equal(self.A, RK4.A) and np.array_equal(self.b, RK4.b)
+                and np.array_equal(self.c, RK4.c))
+
+    @property
+    def extrapolation(self) -> np.ndarray:
+        """``X[i, j]``: Lagrange basis polynomial ``j`` on the nodes ``c`` at ``1 + c[i]`` (the next step's
+        starting stages from this step's collocation polynomial)."""
+        s, c = self.stages, self.c
+        if not self.implicit:  # nothing to iterate
+            return np.zeros((s, s))
+        X = np.ones((s, s))
+        for i in range(s):
+            for j in range(s):
+                for k in range(s):
+                    if k != j:
+                        X[i, j] *= (1.0 + c[i] - c[k]) / (c[j] - c[k])
+        return X
+
+
+#: the registered methods by name (adaptive and fixed-step), in the order registered
+COMPILED_METHODS: dict = {}
+#: other accepted names of compiled methods
+ALIASES = {"RK45": "DP54"}
+
+
+def register(method):
+    """Register ``method`` (an :class:`ExplicitTableau` or a :class:`FixedMethod`) under its name (a name is
+    registered once)."""
+    if not isinstance(method, (ExplicitTableau, FixedMethod)):
+        raise TypeError(f"`method` must be an ExplicitTableau or a FixedMethod, got {type(method).__name__}")
+    if method.name in COMPILED_METHODS and COMPILED_METHODS[method.name] is not method:
+        raise ValueError(f"a method named {method.name!r} is already registered")
+    COMPILED_METHODS[method.name] = method
+    return method
+
+
+def get(name: str, kind: str | None = None):
+    """The registered method called ``name`` (or its alias), of ``kind`` (``"erk"``, ``"fixed"``) if given."""
+    method = COMPILED_METHODS.get(ALIASES.get(name, name))
+    if method is None or kind not in (None, method.kind):
+        known = sorted(n for n, m in COMPILED_METHODS.items() if kind in (None, m.kind))
+        raise ValueError(f"unknown {kind or 'compiled'} method {name!r}; registered: {', '.join(known)}")
+    return method
+
+
+def erk_arrays(name: str) -> SimpleNamespace:
+    """The tables the adaptive integrator and a model's parts use for the registered method ``name``.
+
+    Returns a namespace of ``name``, ``A``, ``C``, ``E5``, ``E3``, ``DD``, ``P``, ``hairer``, ``n_stages``,
+    ``n_ext``, ``dense_rows``, ``alt``, ``error_order``: ``A`` and ``C`` over every stage (the method's, then
+    the weights as the row of the stage at ``t + h``, first same as last, then the extra stages of DOP853's
+    interpolant); ``E5`` the error estimator (and ``E3`` DOP853's second one, else zeros); ``DD`` DOP853's
+    interpolant rows or ``P`` the power series of the others (the unused one is a 1 x 1 zero); ``alt`` the
+    factors of the Horner scheme of the interpolant ``v = (v + F[r, i]) * (1 - x if alt[r] else x)``
+    (Hairer's form alternates them, the power series has ``x`` throughout); ``dense_rows`` the rows of ``F``;
+    ``n_stages`` the method's stages, ``n_ext`` all of them.
+    """
+    t = get(name, "erk")
+    hairer = t.hairer is not None
+    s = t.stages
+    n_ext = s + 1 + (t.hairer["c_ext"].size if hairer else 0)
+    A = np.zeros((n_ext, n_ext))
+    A[:s, :s] = t.A
+    A[s, :s] = t.b
+    C = np.ones(n_ext)
+    C[:s] = t.c
+    E5 = t.e.copy()
+    if hairer:
+        A[s + 1:] = t.hairer["A_ext"]
+        C[s + 1:] = t.hairer["c_ext"]
+        E3 = t.hairer["e3"].copy()
+        DD = t.hairer["D"].copy()
+        P = np.zeros((1, 1))
+        dense_rows = 3 + DD.shape[0]
+    else:
+        E3 = np.zeros(n_ext)
+        DD = np.zeros((1, 1))
+        P = t.P.copy()
+        dense_rows = P.shape[1]
+    alt = np.array([hairer and r % 2 == 1 for r in range(dense_rows)])
+    return SimpleNamespace(name=name, A=A, C=C, E5=E5, E3=E3, DD=DD, P=P, hairer=hairer, n_stages=s, n_ext=n_ext,
+                           dense_rows=dense_rows, alt=alt, error_order=t.error_order)
+
+
+# -- the methods -----------------------------------------------------------------------------------------------
+#: DOP853 (SciPy's tables): ``DOP853_A``, ``DOP853_C`` over the 12 stages of the method, then the weights as
+#: row 12 (first same as last) and 3 extra stages of the dense output; ``DOP853_E3``, ``DOP853_E5`` the 3rd- and
+#: 5th-order error estimators over the 13 stages (12 + f at the new point); ``DOP853_D`` the dense output's rows.
+DOP853_C = np.array([0.0,
+                     0.526001519587677318785587544488e-01,
+                     0.789002279381515978178381316732e-01,
+                     0.118350341907227396726757197510,
+                     0.281649658092772603273242802490,
+                     0.333333333333333333333333333333,
+                     0.25,
+                     0.307692307692307692307692307692,
+                     0.651282051282051282051282051282,
+                     0.6,
+                     0.857142857142857142857142857142,
+                     1.0,
+                     1.0,
+                     0.1,
+                     0.2,
+                     0.777777777777777777777777777778])
+
+DOP853_A = np.zeros((16, 16))
+DOP853_A[1, 0] = 5.26001519587677318785587544488e-2
+
+DOP853_A[2, 0] = 1.97250569845378994544595329183e-2
+DOP853_A[2, 1] = 5.91751709536136983633785987549e-2
+
+DOP853_A[3, 0] = 2.95875854768068491816892993775e-2
+DOP853_A[3, 2] = 8.87627564304205475450678981324e-2
+
+DOP853_A[4, 0] = 2.41365134159266685502369798665e-1
+DOP853_A[4, 2] = -8.84549479328286085344864962717e-1
+DOP853_A[4, 3] = 9.24834003261792003115737966543e-1
+
+DOP853_A[5, 0] = 3.7037037037037037037037037037e-2
+DOP853_A[5, 3] = 1.70828608729473871279604482173e-1
+DOP853_A[5, 4] = 1.25467687566822425016691814123e-1
+
+DOP853_A[6, 0] = 3.7109375e-2
+DOP853_A[6, 3] = 1.70252211019544039314978060272e-1
+DOP853_A[6, 4] = 6.02165389804559606850219397283e-2
+DOP853_A[6, 5] = -1.7578125e-2
+
+DOP853_A[7, 0] = 3.70920001185047927108779319836e-2
+DOP853_A[7, 3] = 1.70383925712239993810214054705e-1
+DOP853_A[7, 4] = 1.07262030446373284651809199168e-1
+DOP853_A[7, 5] = -1.53194377486244017527936158236e-2
+DOP853_A[7, 6] = 8.27378916381402288758473766002e-3
+
+DOP853_A[8, 0] = 6.24110958716075717114429577812e-1
+DOP853_A[8, 3] = -3.36089262944694129406857109825
+DOP853_A[8, 4] = -8.68219346841726006818189891453e-1
+DOP853_A[8, 5] = 2.75920996994467083049415600797e1
+DOP853_A[8, 6] = 2.01540675504778934086186788979e1
+DOP853_A[8, 7] = -4.34898841810699588477366255144e1
+
+DOP853_A[9, 0] = 4.77662536438264365890433908527e-1
+DOP853_A[9, 3] = -2.48811461997166764192642586468
+DOP853_A[9, 4] = -5.90290826836842996371446475743e-1
+DOP853_A[9, 5] = 2.12300514481811942347288949897e1
+DOP853_A[9, 6] = 1.52792336328824235832596922938e1
+DOP853_A[9, 7] = -3.32882109689848629194453265587e1
+DOP853_A[9, 8] = -2.03312017085086261358222928593e-2
+
+DOP853_A[10, 0] = -9.3714243008598732571704021658e-1
+DOP853_A[10, 3] = 5.18637242884406370830023853209
+DOP853_A[10, 4] = 1.09143734899672957818500254654
+DOP853_A[10, 5] = -8.14978701074692612513997267357
+DOP853_A[10, 6] = -1.85200656599969598641566180701e1
+DOP853_A[10, 7] = 2.27394870993505042818970056734e1
+DOP853_A[10, 8] = 2.49360555267965238987089396762
+DOP853_A[10, 9] = -3.0467644718982195003823669022
+
+DOP853_A[11, 0] = 2.27331014751653820792359768449
+DOP853_A[11, 3] = -1.05344954667372501984066689879e1
+DOP853_A[11, 4] = -2.00087205822486249909675718444
+DOP853_A[11, 5] = -1.79589318631187989172765950534e1
+DOP853_A[11, 6] = 2.79488845294199600508499808837e1
+DOP853_A[11, 7] = -2.85899827713502369474065508674
+DOP853_A[11, 8] = -8.87285693353062954433549289258
+DOP853_A[11, 9] = 1.23605671757943030647266201528e1
+DOP853_A[11, 10] = 6.43392746015763530355970484046e-1
+
+DOP853_A[12, 0] = 5.42937341165687622380535766363e-2
+DOP853_A[12, 5] = 4.45031289275240888144113950566
+DOP853_A[12, 6] = 1.89151789931450038304281599044
+DOP853_A[12, 7] = -5.8012039600105847814672114227
+DOP853_A[12, 8] = 3.1116436695781989440891606237e-1
+DOP853_A[12, 9] = -1.52160949662516078556178806805e-1
+DOP853_A[12, 10] = 2.01365400804030348374776537501e-1
+DOP853_A[12, 11] = 4.47106157277725905176885569043e-2
+
+DOP853_A[13, 0] = 5.61675022830479523392909219681e-2
+DOP853_A[13, 6] = 2.53500210216624811088794765333e-1
+DOP853_A[13, 7] = -2.46239037470802489917441475441e-1
+DOP853_A[13, 8] = -1.24191423263816360469010140626e-1
+DOP853_A[13, 9] = 1.5329179827876569731206322685e-1
+DOP853_A[13, 10] = 8.20105229563468988491666602057e-3
+DOP853_A[13, 11] = 7.56789766054569976138603589584e-3
+DOP853_A[13, 12] = -8.298e-3
+
+DOP853_A[14, 0] = 3.18346481635021405060768473261e-2
+DOP853_A[14, 5] = 2.83009096723667755288322961402e-2
+DOP853_A[14, 6] = 5.35419883074385676223797384372e-2
+DOP853_A[14, 7] = -5.49237485713909884646569340306e-2
+DOP853_A[14, 10] = -1.08347328697249322858509316994e-4
+DOP853_A[14, 11] = 3.82571090835658412954920192323e-4
+DOP853_A[14, 12] = -3.40465008687404560802977114492e-4
+DOP853_A[14, 13] = 1.41312443674632500278074618366e-1
+
+DOP853_A[15, 0] = -4.28896301583791923408573538692e-1
+DOP853_A[15, 5] = -4.69762141536116384314449447206
+DOP853_A[15, 6] = 7.68342119606259904184240953878
+DOP853_A[15, 7] = 4.06898981839711007970213554331
+DOP853_A[15, 8] = 3.56727187455281109270669543021e-1
+DOP853_A[15, 12] = -1.39902416515901462129418009734e-3
+DOP853_A[15, 13] = 2.9475147891527723389556272149
+DOP853_A[15, 14] = -9.15095847217987001081870187138
+
+
+DOP853_B = DOP853_A[12, :12]
+
+DOP853_E3 = np.zeros(13)
+DOP853_E3[:-1] = DOP853_B.copy()
+DOP853_E3[0] -= 0.244094488188976377952755905512
+DOP853_E3[8] -= 0.733846688281611857341361741547
+DOP853_E3[11] -= 0.220588235294117647058823529412e-1
+
+DOP853_E5 = np.zeros(13)
+DOP853_E5[0] = 0.1312004499419488073250102996e-1
+DOP853_E5[5] = -0.1225156446376204440720569753e+1
+DOP853_E5[6] = -0.4957589496572501915214079952
+DOP853_E5[7] = 0.1664377182454986536961530415e+1
+DOP853_E5[8] = -0.3503288487499736816886487290
+DOP853_E5[9] = 0.3341791187130174790297318841
+DOP853_E5[10] = 0.8192320648511571246570742613e-1
+DOP853_E5[11] = -0.2235530786388629525884427845e-1
+
+# First 3 coefficients are computed separately.
+DOP853_D = np.zeros((4, 16))  # the degree-7 interpolant
+DOP853_D[0, 0] = -0.84289382761090128651353491142e+1
+DOP853_D[0, 5] = 0.56671495351937776962531783590
+DOP853_D[0, 6] = -0.30689499459498916912797304727e+1
+DOP853_D[0, 7] = 0.23846676565120698287728149680e+1
+DOP853_D[0, 8] = 0.21170345824450282767155149946e+1
+DOP853_D[0, 9] = -0.87139158377797299206789907490
+DOP853_D[0, 10] = 0.22404374302607882758541771650e+1
+DOP853_D[0, 11] = 0.63157877876946881815570249290
+DOP853_D[0, 12] = -0.88990336451333310820698117400e-1
+DOP853_D[0, 13] = 0.18148505520854727256656404962e+2
+DOP853_D[0, 14] = -0.91946323924783554000451984436e+1
+DOP853_D[0, 15] = -0.44360363875948939664310572000e+1
+
+DOP853_D[1, 0] = 0.10427508642579134603413151009e+2
+DOP853_D[1, 5] = 0.24228349177525818288430175319e+3
+DOP853_D[1, 6] = 0.16520045171727028198505394887e+3
+DOP853_D[1, 7] = -0.37454675472269020279518312152e+3
+DOP853_D[1, 8] = -0.22113666853125306036270938578e+2
+DOP853_D[1, 9] = 0.77334326684722638389603898808e+1
+DOP853_D[1, 10] = -0.30674084731089398182061213626e+2
+DOP853_D[1, 11] = -0.93321305264302278729567221706e+1
+DOP853_D[1, 12] = 0.15697238121770843886131091075e+2
+DOP853_D[1, 13] = -0.31139403219565177677282850411e+2
+DOP853_D[1, 14] = -0.93529243588444783865713862664e+1
+DOP853_D[1, 15] = 0.35816841486394083752465898540e+2
+
+DOP853_D[2, 0] = 0.19985053242002433820987653617e+2
+DOP853_D[2, 5] = -0.38703730874935176555105901742e+3
+DOP853_D[2, 6] = -0.18917813819516756882830838328e+3
+DOP853_D[2, 7] = 0.52780815920542364900561016686e+3
+DOP853_D[2, 8] = -0.11573902539959630126141871134e+2
+DOP853_D[2, 9] = 0.68812326946963000169666922661e+1
+DOP853_D[2, 10] = -0.10006050966910838403183860980e+1
+DOP853_D[2, 11] = 0.77771377980534432092869265740
+DOP853_D[2, 12] = -0.27782057523535084065932004339e+1
+DOP853_D[2, 13] = -0.60196695231264120758267380846e+2
+DOP853_D[2, 14] = 0.84320405506677161018159903784e+2
+DOP853_D[2, 15] = 0.11992291136182789328035130030e+2
+
+DOP853_D[3, 0] = -0.25693933462703749003312586129e+2
+DOP853_D[3, 5] = -0.15418974869023643374053993627e+3
+DOP853_D[3, 6] = -0.23152937917604549567536039109e+3
+DOP853_D[3, 7] = 0.35763911791061412378285349910e+3
+DOP853_D[3, 8] = 0.93405324183624310003907691704e+2
+DOP853_D[3, 9] = -0.37458323136451633156875139351e+2
+DOP853_D[3, 10] = 0.10409964950896230045147246184e+3
+DOP853_D[3, 11] = 0.29840293426660503123344363579e+2
+DOP853_D[3, 12] = -0.43533456590011143754432175058e+2
+DOP853_D[3, 13] = 0.96324553959188282948394950600e+2
+DOP853_D[3, 14] = -0.39177261675615439165231486172e+2
+DOP853_D[3, 15] = -0.14972683625798562581422125276e+3
+
+
+
+DP54_C = np.array([0.0, 1 / 5, 3 / 10, 4 / 5, 8 / 9, 1.0])
+DP54_A = np.array([
+    [0.0, 0.0, 0.0, 0.0, 0.0],
+    [1 / 5, 0.0, 0.0, 0.0, 0.0],
+    [3 / 40, 9 / 40, 0.0, 0.0, 0.0],
+    [44 / 45, -56 / 15, 32 / 9, 0.0, 0.0],
+    [19372 / 6561, -25360 / 2187, 64448 / 6561, -212 / 729, 0.0],
+    [9017 / 3168, -355 / 33, 46732 / 5247, 49 / 176, -5103 / 18656],
+])
+DP54_B = np.array([35 / 384, 0.0, 500 / 1113, 125 / 192, -2187 / 6784, 11 / 84])
+#: error estimator over the 6 stages and f at the new point (FSAL)
+DP54_E = np.array([-71 / 57600, 0.0, 71 / 16695, -71 / 1920, 17253 / 339200, -22 / 525, 1 / 40])
+#: dense output: y(t + x h) = y + h * sum_j (K^T P)[:, j] x^(j+1)
+DP54_P = np.array([
+    [1.0, -8048581381 / 2820520608, 8663915743 / 2820520608, -12715105075 / 11282082432],
+    [0.0, 0.0, 0.0, 0.0],
+    [0.0, 131558114200 / 32700410799, -68118460800 / 10900136933, 87487479700 / 32700410799],
+    [0.0, -1754552775 / 470086768, 14199869525 / 1410260304, -10690763975 / 1880347072],
+    [0.0, 127303824393 / 49829197408, -318862633887 / 49829197408, 701980252875 / 199316789632],
+    [0.0, -282668133 / 205662961, 2019193451 / 616988883, -1453857185 / 822651844],
+    [0.0, 40617522 / 29380423, -110615467 / 29380423, 69997945 / 29380423],
+])
+
+_S3 = math.sqrt(3.0)
+_S15 = math.sqrt(15.0)
+#: stages -> (A, b, c) of the Gauss--Legendre method of order 2 s
+GAUSS = {
+    1: (np.array([[0.5]]), np.array([1.0]), np.array([0.5])),
+    2: (
+        np.array([[0.25, 0.25 - _S3 / 6], [0.25 + _S3 / 6, 0.25]]),
+        np.array([0.5, 0.5]),
+        np.array([0.5 - _S3 / 6, 0.5 + _S3 / 6]),
+    ),
+    3: (
+        np.array([
+            [5 / 36, 2 / 9 - _S15 / 15, 5 / 36 - _S15 / 30],
+            [5 / 36 + _S15 / 24, 2 / 9, 5 / 36 - _S15 / 24],
+            [5 / 36 + _S15 / 30, 2 / 9 + _S15 / 15, 5 / 36],
+        ]),
+        np.array([5 / 18, 4 / 9, 5 / 18]),
+        np.array([0.5 - _S15 / 10, 0.5, 0.5 + _S15 / 10]),
+    ),
+}
+
+
+def _tsit5() -> ExplicitTableau:
+    """Tsit5: the stages, weights and embedded 4th-order weights ``B_HAT`` (the 7th over K_s = f(t + h, y_new))
+    of Tsitouras (2011); ``P[j, r]`` the coefficient of ``x^(r+1)`` in the continuous weight ``b_j(x)`` (Sect. 3).
+    """
+    C = [0.0, 0.161, 0.327, 0.9, 0.9800255409045096857298102862870245954942, 1.0]
+    A = np.zeros((6, 6))
+    A[1, 0] = 0.161
+    A[2, :2] = [-0.008480655492356988544426874250230774675121, 0.3354806554923569885444268742502307746751]
+    A[3, :3] = [2.897153057105493432130432594192938764925, -6.359448489975074843148159912383825625953,
+                4.362295432869581411017727318190886861028]
+    A[4, :4] = [5.325864828439256604428877920840511317836, -11.74888356406282787774717033978577296189,
+                7.495539342889836208304604784564358155659, -0.09249506636175524925650207933207191611350]
+    A[5, :5] = [5.861455442946420028659251486982647890394, -12.92096931784710929170611868178335939542,
+                8.159367898576158643180400794539253485182, -0.07158497328140099722453054252582973869127,
+                -0.02826905039406838290900305721271224146718]
+    B = np.array([0.09646076681806522951816731316512876333712, 0.01, 0.4798896504144995747752495322905965199130,
+                  1.379008574103741893192274821856872770756, -3.290069515436080679901047585711363850116,
+                  2.324710524099773982415355918398765796109])
+    B_HAT = np.array([0.09468075576583945807478876255758922856118, 0.009183565540343253096776363936645313759814,
+                      0.4877705284247615707855642599631228241517, 1.234297566930478985655109673884237654036,
+                      -2.707712349983525454881109975059321670690, 1.866628418170587035753719399566211498666,
+                      1 / 66])
+    x = [0.0, 1.0]  # the polynomial x
+    factored = [  # b_j(x) = scale * product of factors (polynomials in x, lowest degree first)
+        (-1.0530884977290216, [x, [-1.3299890189751412, 1.0], [0.7139816917074209, -1.4364028541716351, 1.0]]),
+        (0.1017, [x, x, [1.2949852507374631, -2.1966568338249754, 1.0]]),
+        (2.490627285651252793, [x, x, [1.57803468208092486, -2.38535645472061657, 1.0]]),
+        (-16.54810288924490272, [x, x, [-1.21712927295533244, 1.0], [-0.61620406037800089, 1.0]]),
+        (47.37952196281928122, [x, x, [-1.203071208372362603, 1.0], [-0.658047292653547382, 1.0]]),
+        (-34.87065786149660974, [x, x, [-1.2, 1.0], [-0.666666666666666667, 1.0]]),
+        (2.5, [x, x, [-1.0, 1.0], [-0.6, 1.0]]),
+    ]
+    P = np.zeros((7, 4))
+    for j, (scale, factors) in enumerate(factored):
+        p = np.array([scale])
+        for f in factors:
+            p = _poly.polymul(p, f)
+        P[j, : p.size - 1] = p[1:]  # no constant term
+    # the published factors are rounded to ~16 digits: make b_j(1) equal the weights exactly
+    P[:6, -1] += B - P[:6].sum(axis=1)
+    P[6, -1] -= P[6].sum()
+    return ExplicitTableau(
+        name="Tsit5", c=C, A=A, b=B, e=np.append(B, 0.0) - B_HAT, order=5, error_order=4, P=P,
+        description="Tsitouras 5(4), 7 stages (first same as last), dense output of order 4",
+        reference="Ch. Tsitouras, Comput. Math. Appl. 62 (2011) 770-775",
+    )
+
+
+DOP853 = register(ExplicitTableau(
+    name="DOP853", c=DOP853_C[:12], A=DOP853_A[:12, :12], b=DOP853_B, e=DOP853_E5, order=8, error_order=7, P=None,
+    hairer={"e3": DOP853_E3, "c_ext": DOP853_C[13:], "A_ext": DOP853_A[13:], "D": DOP853_D},
+    description="Dormand-Prince 8(5,3), Hairer's DOP853, dense output of order 7",
+    reference="E. Hairer, S. P. Norsett, G. Wanner, Solving ODEs I, Sect. II.10; Hairer's Fortran DOP853",
+))
+DP54 = register(ExplicitTableau(
+    name="DP54", c=DP54_C, A=np.pad(DP54_A, ((0, 0), (0, 1))), b=DP54_B, e=DP54_E, order=5, error_order=4,
+    P=DP54_P, description="Dormand-Prince 5(4), dense output of order 4 (SciPy's RK45)",
+    reference="J. R. Dormand, P. J. Prince, J. Comput. Appl. Math. 6 (1980) 19-26; Shampine, Math. Comp. 46 (1986)",
+))
+TSIT5 = register(_tsit5())
+RK4 = register(FixedMethod("RK4", np.diag([0.5, 0.5, 1.0], k=-1), [1 / 6, 1 / 3, 1 / 3, 1 / 6], [0.0, 0.5, 0.5, 1.0], 4,
+                           "classical Runge-Kutta, fixed step", 6.0))
+IMPLICIT_MIDPOINT = register(FixedMethod("implicit_midpoint", *GAUSS[1], 2,
+                                         "implicit midpoint rule (Gauss-Legendre, 1 stage)"))
+GAUSS4 = register(FixedMethod("gauss4", *GAUSS[2], 4, "Gauss-Legendre collocation, 2 stages, order 4"))
+GAUSS6 = register(FixedMethod("gauss6", *GAUSS[3], 6, "Gauss-Legendre collocation, 3 stages, order 6"))
