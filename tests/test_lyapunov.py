@@ -69,6 +69,7 @@ def test_step_control_gives_the_fixed_steps_exponents():
         ke.lyapunov(m, y0, p, 40.0, tau=0.5, rtol=1e-11, max_steps=10)
 
 
+@pytest.mark.slow  # the step-controlled Magnus loop (~12 s of CPU cold); refusals: test_bad_arguments_are_named
 def test_a_looser_tangent_tolerance_takes_fewer_steps_for_nearly_the_same_exponents():
     """``tangent_rtol`` weighs the tangent vectors' errors apart from the state's: looser, fewer tangent steps, and the
     exponents move by about the looser tolerance (not by the exponents' size, as controlling the state alone did);
@@ -197,6 +198,7 @@ def test_the_magnus_step_is_of_sixth_order_with_a_fifth_order_error_estimate():
     assert 2 ** 4.7 < estimates[0] / estimates[1] < 2 ** 5.3 and 2 ** 4.7 < estimates[1] / estimates[2] < 2 ** 5.3
 
 
+@pytest.mark.slow  # the step-controlled Magnus loop (~12 s of CPU cold); the step itself: the two tests above
 def test_magnus_tangents_of_a_constant_linear_flow_are_exact():
     """For ``dy/dt = A y`` the tangent flow is ``exp(A t)``: the loop's Magnus steps are exact whatever steps the
     state takes, so one re-orthonormalization after T gives log |R_jj| of the QR of ``expm(A T) Q0`` (numpy's QR,
