@@ -218,8 +218,7 @@ def _benettin_adaptive(jvp_into, gradients, y, Q, p, tau, n_blocks, rtol, atol, 
                 jvp_into(y, p, Q, K[0], KQ[0])  # the derivatives of the new tangent vectors
         else:
             rejected += 1
-        factor = 10.0 if err == 0.0 else min(10.0, max(0.2, 0.9 * err ** -0.2))
-        h = step * factor if (err > 1.0 or step == h) else max(h, step * factor)
+        h = _controlled(h, step, err)
         if accepted + rejected >= max_steps:
             return y, Q, sums, hist_t[:b], hist[:b], -1, rejected
     return y, Q, sums, hist_t[:b], hist[:b], accepted, rejected
