@@ -69,6 +69,34 @@ def test_step_control_gives_the_fixed_steps_exponents():
         ke.lyapunov(m, y0, p, 40.0, tau=0.5, rtol=1e-11, max_steps=10)
 
 
+def _linear_flow(n):
+    """``rhs_into``, ``jvp_into``, ``invariant_gradients`` of ``dy/dt = A y`` in the generated modules' calling
+    convention, ``A`` (n x n) given as the parameters (row by row); no invariants."""
+    from numba import njit
+
+    @njit
+    def rhs_into(t, s, p, ds):
+        for i in range(n):
+            ds[i] = 0.0
+            for j in range(n):
+                ds[i] += p[i * n + j] * s[j]
+
+    @njit
+    def jvp_into(s, p, V, ds, out):
+        rhs_into(0.0, s, p, ds)
+        for i in range(n):
+            for c in range(V.shape[1]):
+                out[i, c] = 0.0
+                for j in range(n):
+                    out[i, c] += p[i * n + j] * V[j, c]
+
+    @njit
+    def gradients(s, p):
+        return np.zeros((0, n))
+
+    return rhs_into, jvp_into, gradients
+
+
 @pytest.mark.slow  # the step-controlled Magnus loop (~12 s of CPU cold); refusals: test_bad_arguments_are_named
 def test_a_looser_tangent_tolerance_takes_fewer_steps_for_nearly_the_same_exponents():
     """``tangent_rtol`` weighs the tangent vectors' errors apart from the state's: looser, fewer tangent steps, and the
@@ -204,32 +232,10 @@ def test_magnus_tangents_of_a_constant_linear_flow_are_exact():
     state takes, so one re-orthonormalization after T gives log |R_jj| of the QR of ``expm(A T) Q0`` (numpy's QR,
     SciPy's expm), to round-off; and a tangent step spans as many state steps as the loop holds (J is constant: the
     error estimate is 0)."""
-    from numba import njit
     from scipy.linalg import expm as scipy_expm
 
     ly = importlib.import_module("knifeedge.lyapunov")
-    n = 4
-
-    @njit
-    def rhs_into(t, s, p, ds):
-        for i in range(n):
-            ds[i] = 0.0
-            for j in range(n):
-                ds[i] += p[i * n + j] * s[j]
-
-    @njit
-    def jvp_into(s, p, V, ds, out):
-        rhs_into(0.0, s, p, ds)
-        for i in range(n):
-            for c in range(V.shape[1]):
-                out[i, c] = 0.0
-                for j in range(n):
-                    out[i, c] += p[i * n + j] * V[j, c]
-
-    @njit
-    def gradients(s, p):
-        return np.zeros((0, n))
-
+    rhs_into, jvp_into, gradients = _linear_flow(4)
     A = np.array([[-0.1, 2.0, 0.0, 0.0], [-2.0, -0.1, 0.0, 0.0], [0.3, 0.0, 0.05, 1.0], [0.0, 0.2, -1.0, 0.05]])
     Q0 = np.ascontiguousarray(np.linalg.qr(np.arange(1.0, 17.0).reshape(4, 4) + np.eye(4))[0][:, :3])
     T = 20.0
@@ -240,6 +246,31 @@ def test_magnus_tangents_of_a_constant_linear_flow_are_exact():
     expected = np.log(np.abs(np.diag(np.linalg.qr(scipy_expm(A * T) @ Q0)[1])))
     np.testing.assert_allclose(sums, expected, rtol=1e-12, atol=1e-12)
     assert hist_t[-1] == T and steps > 100 and tangent_steps <= steps // ly._HELD + 5  # 5: the first steps' growth
+
+
+@pytest.mark.slow  # the step-controlled Magnus loop, as above
+def test_magnus_tangent_steps_at_a_saddle_are_bounded_by_the_vectors_spread_not_by_tau():
+    """At an equilibrium the state's steps grow without bound (its error is 0) and, J being constant, so would the
+    exact Magnus steps: one step over the whole span would collapse the tangent vectors onto the unstable direction
+    (e^40 between the first and third here, beyond double precision).  The tangent steps are bounded by the spread
+    of the vectors' lengths they cause, whatever ``tau``, so the sums of log |R_jj| over T are the exact ones: for
+    symmetric ``A = V diag(lambda) V^T``, the QR of ``exp(A T) Q0`` has ``|R_11 ... R_jj|`` = the volume of the
+    first j columns, ``exp(T (lambda_1 + ... + lambda_j)) |det (V^T Q0)[:j, :j]|`` up to factors
+    ``1 + O(exp(-T gap))`` (Cauchy-Binet; the gap 2 makes them 1 to e^-40)."""
+    ly = importlib.import_module("knifeedge.lyapunov")
+    lam = np.array([3.0, 1.0, -1.0, -3.0])
+    V = np.linalg.qr(np.arange(16.0).reshape(4, 4) ** 0.5 + np.eye(4))[0]
+    A = V @ np.diag(lam) @ V.T
+    Q0 = np.ascontiguousarray(np.linalg.qr(np.arange(1.0, 17.0).reshape(4, 4) + np.eye(4))[0][:, :3])
+    T = 20.0
+    y, Q, sums, hist_t, hist, steps, rejected, tangent_steps, _ = ly._magnus_kernel()(
+        *_linear_flow(4), importlib.import_module("knifeedge.magnus").magnus_step, np.zeros(4), Q0.copy(),
+        A.ravel().copy(), T, 1, 1e-8, 1e-10, 1e-8, 1e-3, 10**6)
+    minors = [1.0] + [abs(np.linalg.det((V.T @ Q0)[:j, :j])) for j in (1, 2, 3)]
+    expected = lam[:3] * T + np.log(np.array(minors[1:]) / np.array(minors[:-1]))
+    np.testing.assert_allclose(sums, expected, rtol=1e-10)
+    assert hist_t[-1] == T and np.all(y == 0.0)
+    assert tangent_steps >= T * (lam[0] - lam[2]) / ly._SPREAD  # each step spreads them by at most _SPREAD
 
 
 @pytest.mark.slow  # the full celt's jvp_into and both step-controlled loops (~15 s of CPU cold)

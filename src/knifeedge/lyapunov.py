@@ -314,16 +314,23 @@ def _controlled(h, step, err):
     return step * factor if (err > 1.0 or step == h) else max(h, step * factor)
 
 
+#: the most e-folds by which one tangent step may spread the tangent vectors' lengths (log of the largest over the
+#: smallest |R_jj| of the step's QR): their Gram-Schmidt loses about ``exp(spread)`` ulps of orthogonality
+_SPREAD = 8.0
+
+
 @njit(cache=True)
 def _benettin_magnus(rhs_into, jvp_into, gradients, magnus_step, y, Q, p, tau, n_blocks, rtol, atol, tangent_tol, h,
                      max_steps):
     """As :func:`_benettin_adaptive`, the state stepped by Dormand-Prince 5(4) with its own error control, the tangent
     vectors by the sixth-order Magnus step (:func:`knifeedge.magnus.magnus_step`) with ``J`` at the Gauss nodes
-    from the state's dense output, over tangent steps of their own (controlled to ``tangent_tol``, at most ``tau``,
-    each within the state steps already taken).  Returns as the other loops, and the tangent steps taken and
-    rejected."""
+    from the state's dense output, over tangent steps of their own (controlled to ``tangent_tol``, each within the
+    state steps already taken, re-orthonormalized after each, and rejected if they spread the vectors' lengths by
+    more than ``_SPREAD`` e-folds; not bounded by ``tau``).  The running estimates are recorded at the end of the
+    first tangent step at or past each multiple of ``tau`` (a long step may pass several).  Returns as the other
+    loops, and the tangent steps taken and rejected."""
     n, k = Q.shape
-    sums, hist, hist_t = np.zeros(k), np.empty((n_blocks, k)), np.empty(n_blocks)
+    sums, step_sums, hist, hist_t = np.zeros(k), np.zeros(k), np.empty((n_blocks, k)), np.empty(n_blocks)
     K, yt, y_new, ds, eye = np.empty((7, n)), np.empty(n), np.empty(n), np.empty(n), np.zeros((n, n))
     for i in range(n):
         eye[i, i] = 1.0
@@ -356,25 +363,38 @@ def _benettin_magnus(rhs_into, jvp_into, gradients, magnus_step, y, Q, p, tau, n
             _dense(yt, T + GAUSS_NODES[g] * step, held_t, held_h, held_y, held_K, n_held, y, t)
             jvp_into(yt, p, eye, ds, J[g])
         err = magnus_step(J, step, Q, Q_new, M, W, d, tangent_tol)
-        if err <= 1.0:
-            T = t if step == t - T else T + step
+        T_new = t if step == t - T else T + step
+        passed = T_new >= t_qr - 1e-12 * tau
+        if err <= 1.0 and passed:
+            # round-off leaks into the invariants' directions (rate 0), which would outgrow decaying directions
+            _dense(yt, T_new, held_t, held_h, held_y, held_K, n_held, y, t)
+            _project_out(gradients(yt, p), Q_new)
+        for j in range(k):
+            step_sums[j] = 0.0
+        _orthonormalize(Q_new, step_sums)
+        spread = max(step_sums) - min(step_sums)
+        if err <= 1.0 and spread <= _SPREAD:
+            T = T_new
             for i in range(n):
                 for j in range(k):
                     Q[i, j] = Q_new[i, j]
+            for j in range(k):
+                sums[j] += step_sums[j]
             tangent_steps += 1
             n_held = _drop_before(T, held_t, held_h, held_y, held_K, n_held)
-            if T >= t_qr - 1e-12 * tau:
-                _dense(yt, T, held_t, held_h, held_y, held_K, n_held, y, t)
-                _project_out(gradients(yt, p), Q)
-                _orthonormalize(Q, sums)
+            if passed:
                 hist_t[b] = T
                 for j in range(k):
                     hist[b, j] = sums[j] / T
                 b += 1
                 t_qr = min(t_final, (math.floor(T / tau + 1e-9) + 1) * tau)
+            H = _controlled(H, step, err)
         else:
             tangent_rejected += 1
-        H = min(tau, _controlled(H, step, err))
+            if err <= 1e300 and spread < math.inf:
+                H = min(_controlled(H, step, err), step * 0.9 * _SPREAD / max(spread, 1e-300))
+            else:  # the exponential overflowed
+                H = 0.2 * step
     return y, Q, sums, hist_t[:b], hist[:b], accepted, rejected, tangent_steps, tangent_rejected
 
 
@@ -440,7 +460,9 @@ def lyapunov(m: Model, y0, p, t_end: float, k: int | None = None, h: float | Non
     ``max_steps`` bounds the steps.  ``tangents`` (with ``rtol``): ``"magnus"`` steps the tangent vectors by the
     sixth-order Magnus exponential (:mod:`knifeedge.magnus`; ``J`` at the Gauss nodes of the state's dense output)
     over steps of their own, each within the state's steps, so that where ``J`` hardly changes (a settled spin)
-    neither they nor the state take more steps than the state alone; ``"rk"`` steps them with the state's
+    neither they nor the state take more steps than the state alone (they are re-orthonormalized after every step,
+    which is bounded by the spread of the vectors' lengths it causes, not by ``tau``; the history is recorded at
+    the end of the first tangent step at or past each multiple of ``tau``); ``"rk"`` steps them with the state's
     Dormand-Prince stages (the steps then also resolve the tangent vectors' oscillation; a step costs less: one
     Jacobian-vector product per vector and stage, no full Jacobian, no matrix exponential).  Default: Magnus for
     more than one exponent, Runge-Kutta for the largest alone (measured: docs/performance.md).  A looser
@@ -514,13 +536,18 @@ def _adaptive(functions, y, Q, p, span, t0, h, tau, rtol, atol, max_steps, tange
                            f"or loosen `rtol`")
     method = (f"DP54 rtol {rtol:g} atol {atol:g}" + (f" tangent_rtol {tangent_rtol:g}" if tangent_rtol != rtol else "")
               + (", Magnus tangents" if len(functions) == 3 else ""))
+    # the Magnus loop's history is not evenly spaced (a long tangent step passes several multiples of tau)
+    tail_after = t0 + 0.75 * span if len(functions) == 3 else None
     return _result(y, hist_t + t0, hist, span / accepted, tau, accepted, method, rejected, tangent_steps,
-                   tangent_rejected)
+                   tangent_rejected, tail_after)
 
 
-def _result(y, hist_t, hist, h, tau, steps, method, rejected=0, tangent_steps=0, tangent_rejected=0) -> LyapunovResult:
+def _result(y, hist_t, hist, h, tau, steps, method, rejected=0, tangent_steps=0, tangent_rejected=0,
+            tail_after=None) -> LyapunovResult:
+    """The result, the exponents sorted; the uncertainty from the last quarter of the history's entries (from the
+    entries after ``tail_after``, if given: the history's times are then not evenly spaced)."""
     order = np.argsort(-hist[-1], kind="stable")
     hist = hist[:, order]
-    tail = hist[-max(1, len(hist_t) // 4):]
+    tail = hist[-max(1, len(hist_t) // 4):] if tail_after is None else hist[(hist_t > tail_after) | (hist_t == hist_t[-1])]
     return LyapunovResult(hist[-1].copy(), hist_t, hist, 0.5 * (tail.max(axis=0) - tail.min(axis=0)), y, h, tau,
                           steps, rejected, method, tangent_steps, tangent_rejected)
