@@ -559,6 +559,9 @@ def _result(y, hist_t, hist, h, tau, steps, method, rejected=0, tangent_steps=0,
     entries after ``tail_after``, if given: the history's times are then not evenly spaced)."""
     order = np.argsort(-hist[-1], kind="stable")
     hist = hist[:, order]
-    tail = hist[-max(1, len(hist_t) // 4):] if tail_after is None else hist[(hist_t > tail_after) | (hist_t == hist_t[-1])]
+    if tail_after is None:
+        tail = hist[-max(1, len(hist_t) // 4):]
+    else:
+        tail = hist[(hist_t > tail_after) | (hist_t == hist_t[-1])]
     return LyapunovResult(hist[-1].copy(), hist_t, hist, 0.5 * (tail.max(axis=0) - tail.min(axis=0)), y, h, tau,
                           steps, rejected, method, tangent_steps, tangent_rejected)
