@@ -281,7 +281,7 @@ def test_magnus_tangents_agree_with_runge_kutta_tangents_through_a_reversal():
     tangent flow, so over 60 s their five exponents agree to about the tolerance, on the same trajectory.  At their
     defaults (Magnus: ``tangent_rtol = MAGNUS_TANGENT_RTOL rtol``, its sixth-order steps being controlled by a
     fourth-order estimate) the Magnus exponents are about as accurate as the Runge-Kutta ones, both measured from
-    Magnus tangents at ``tangent_rtol = 1e-4 rtol``."""
+    Magnus tangents at ``tangent_rtol = 1e-4 rtol``; neither the Magnus steps nor the exponents depend on ``tau``."""
     m = ke.load("celt")
     p = m.preset("schoemer", sigma=0.0)
     y0 = m.initial_state(n0=(np.sin(0.05), 0.0, np.cos(0.05)), omega0=(0.0, 0.0, -2.0))
@@ -296,3 +296,9 @@ def test_magnus_tangents_agree_with_runge_kutta_tangents_through_a_reversal():
                        for kw in ({"tangent_rtol": 1e-12}, {"tangents": "rk"}, {}))
     errors = [np.abs(r.exponents - ref.exponents).max() for r in (magnus, rk)]
     assert errors[0] <= 2.0 * errors[1] and errors[1] <= 1e-3 * ref.uncertainty.min(), errors
+    # the re-orthonormalization interval: neither the Magnus steps nor (beyond the tolerance) the exponents depend
+    # on it (it sets the history's times and when the invariants' round-off is projected away)
+    for tau in (0.25, 5.0):
+        other = ke.lyapunov(m, y0, p, 60.0, tau=tau, rtol=1e-8)
+        assert other.tangent_steps == magnus.tangent_steps and len(other.history_t) == round(60.0 / tau)
+        np.testing.assert_allclose(other.exponents, magnus.exponents, rtol=0, atol=1e-7)
