@@ -27,9 +27,11 @@ _ORDER = (("scene", "predictability"), ("scene", "knife_edge_rigid"), ("scene", 
           ("scene", "numerical2"), ("animation", "numerical"), ("scene", "celt"), ("scene", "knife_edge_vs_celt"),
           ("scene", "model_fidelity"), ("scene", "table_path"), ("scene", "ellipses"), ("scene", "celt_schoemer"),
           ("scene", "amplitudes"), ("scene", "numerical"), ("scene", "rolling_disk"))
-#: scenes whose run is also animated, with the animation's settings (modest size and frame count)
+#: scenes whose run is also animated, with the animation's settings (modest size and frame count; a frame costs
+#: ~10 ms of CPU: numerical's 80 frames still put ~7 in each rocking period at its reversal, numerical2's and the
+#: celt's ~3.5 and ~3 with 150 and 100 frames, fewer would not show the rocking there)
 ANIMATIONS = {
-    "numerical": {"frames": 120, "fps": 12.5, "size": (8.0, 4.5), "dpi": 80},
+    "numerical": {"frames": 80, "fps": 12.5, "size": (8.0, 4.5), "dpi": 80},
     "numerical2": {"frames": 150, "fps": 12.5, "size": (8.0, 4.5), "dpi": 80},
     "celt": {"frames": 100, "fps": 12.5, "size": (8.0, 4.5), "dpi": 80},
 }
@@ -218,6 +220,22 @@ def _schedule(pool, workers: int, order: list, out: Path, report, progress, t0: 
                       file=sys.stderr, flush=True)
 
 
+def _preload() -> None:
+    """Set up once, before the worker processes are forked (they inherit it), what each of them would set up
+    on its own: matplotlib's pyplot and Agg modules (imported, this process's backend left as it is), and
+    numba's registries of the CPU target (about 0.9 s of CPU per process).  Nothing where the workers are not
+    forked (they would import it again)."""
+    import multiprocessing
+
+    if multiprocessing.get_start_method(allow_none=False) != "fork":
+        return
+    import matplotlib.backends.backend_agg  # noqa: F401
+    import matplotlib.pyplot  # noqa: F401
+    from numba.core.registry import cpu_target
+
+    cpu_target.target_context.refresh()
+
+
 def make_figures(out: str | Path, names=None, max_workers: int | None = None, progress: bool = True) -> list:
     """Compute the scenes ``names`` (default: all) and write PNGs and the index into ``out``.
 
@@ -253,6 +271,7 @@ def make_figures(out: str | Path, names=None, max_workers: int | None = None, pr
             if n in ANIMATIONS:
                 report("animation", render_animation(n, str(out)))
     else:
+        _preload()
         with cf.ProcessPoolExecutor(max_workers=workers) as pool:
             _schedule(pool, workers, order, out, report, progress, t0)
     recs = [records[n] for n in names]

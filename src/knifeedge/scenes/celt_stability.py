@@ -4,7 +4,8 @@ The growth rates (real parts of the physical eigenvalues, :func:`knifeedge.stabi
 spin against the spin ``Omega``, for the Kane & Levinson (1982) and Schoemer sets, undamped and damped, every
 change of stability (:func:`knifeedge.stability_boundaries`, searched in ``boundary_interval``) marked, and the
 slow-spin slopes of Moffatt & Tokieda (Nonlinearity 21 (2008) T1): pitch ``lambda Omega``, roll ``-mu Omega``
-(``celt_amplitude.moffatt_tokieda``, derived from their formulas, not from the rigid body).
+(``celt_amplitude.moffatt_tokieda``, derived from their formulas, not from the rigid body; evaluated as plain
+Python: two numbers per parameter set do not pay for its compilation).
 """
 from __future__ import annotations
 
@@ -40,7 +41,8 @@ def _params(scene: Scene, key: str, damped: bool, m) -> np.ndarray:
 def _one_set(scene: Scene, m, amp, key: str, res: SceneResult) -> None:
     s = scene.settings
     spins = np.linspace(*s["spin_range"], s["n_spins"])
-    lam, mu = (float(x) for x in amp.module.moffatt_tokieda(_params(scene, key, False, m))[:2])
+    # two numbers per set: the formula as plain Python (compiling it cost 1 s of CPU; same arithmetic)
+    lam, mu = (float(x) for x in amp.module.moffatt_tokieda.py_func(_params(scene, key, False, m))[:2])
     tables = {}
     for damped in (False, True):
         p = _params(scene, key, damped, m)
@@ -122,7 +124,8 @@ SCENE = Scene(
              "Moffatt & Tokieda's slow-spin slopes lambda Omega and -mu Omega."),
     why=("the small-tilt celt (reduced fidelity), the cheapest model that answers: the linearization at an "
          "upright steady spin is exact at first order in the tilts, so it equals the full rigid body's "
-         "(tested, slow tier); no integration, only the emitted Jacobian (the run is the Schoemer base point)"),
+         "(tested, slow tier); no integration, only the emitted Jacobian (the run is the Schoemer base point); "
+         "Moffatt & Tokieda's slopes from their formula as plain Python (not compiled: two numbers per set)"),
     run=RUN,
     plots=("growth rates of the physical modes against the spin, undamped (dots) and damped (crosses), the "
            "stability boundaries (solid: undamped, dashed: damped) and the Moffatt-Tokieda slopes"),
