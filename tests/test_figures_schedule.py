@@ -110,21 +110,25 @@ def test_a_scene_that_needs_nothing_compiled_leaves_the_first_processes_to_the_c
         assert min(e[0] for e in log if e[1] == "scene" and e[2] == name) > first_end
 
 
-def test_the_workers_inherit_pyplot_and_numbas_registries_and_the_callers_backend_is_left_alone():
+def test_the_workers_inherit_pyplot_and_numbas_registries_and_the_callers_backend_is_left_alone(monkeypatch):
     """Each forked worker imported matplotlib's pyplot and loaded numba's CPU registries on its own (~0.9 s of CPU
-    each); ``_preload`` does it once in the parent, without choosing the caller's matplotlib backend."""
+    each); ``_preload`` does it once in the parent, without choosing the caller's matplotlib backend, and not at
+    all where the workers are not forked (they would do it again)."""
     import multiprocessing
-    import subprocess
     import sys
 
-    code = ("import sys, matplotlib; before = matplotlib.rcParams._get_backend_or_none(); "
-            "from knifeedge import figures; figures._preload(); "
-            "from numba.core.registry import cpu_target; "
-            "print('matplotlib.pyplot' in sys.modules, before == matplotlib.rcParams._get_backend_or_none(), "
-            "len(cpu_target.target_context._registries) > 0)")
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout.split()
-    fork = multiprocessing.get_start_method(allow_none=False) == "fork"
-    assert out == [str(fork), "True", str(fork)]
+    import matplotlib
+    from numba.core.registry import cpu_target
+
+    calls = []
+    monkeypatch.setattr(cpu_target.target_context, "refresh", lambda: calls.append("refresh"))
+    monkeypatch.setattr(matplotlib, "use", lambda *a, **k: calls.append("use"))
+    monkeypatch.setattr(multiprocessing, "get_start_method", lambda allow_none=False: "spawn")
+    figures._preload()
+    assert calls == []
+    monkeypatch.setattr(multiprocessing, "get_start_method", lambda allow_none=False: "fork")
+    figures._preload()
+    assert calls == ["refresh"] and "matplotlib.pyplot" in sys.modules
 
 
 def test_no_integrator_compiles_beside_the_first_one_when_a_lyapunov_loop_ends_first(monkeypatch, tmp_path):
