@@ -157,7 +157,7 @@ def _next_warm(warms: list, compiled: set, running: dict) -> tuple | None:
         return None
     integrators = [w for w in warms if w[0] != "lyapunov"]
     first_running = any(kind == "warm" and what[0] != "lyapunov" for kind, what in running.values())
-    if _integrator_compiled(compiled) or not integrators and not first_running:
+    if _integrator_compiled(compiled) or (not integrators and not first_running):
         busy = {what for kind, what in running.values() if kind == "parts"}  # not compiled twice at once
         return next((w for w in warms if w not in busy), warms[0])
     if not first_running:
@@ -166,6 +166,7 @@ def _next_warm(warms: list, compiled: set, running: dict) -> tuple | None:
 
 
 def _integrator_compiled(compiled: set) -> bool:
+    """Whether an integrator (and with it the driver they share) is compiled, among the keys ``compiled``."""
     return any(w[0] != "lyapunov" for w in compiled)
 
 
