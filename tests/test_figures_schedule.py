@@ -8,8 +8,9 @@ import time
 from knifeedge import figures
 
 
-def _scheduled(monkeypatch, tmp_path, order):
-    """Run ``figures._schedule`` on threads with every compilation and scene replaced by a logged stub."""
+def _scheduled(monkeypatch, tmp_path, order, seconds=None):
+    """Run ``figures._schedule`` on threads with every compilation and scene replaced by a logged stub
+    (``seconds(key)``: how long the compilation ``key`` takes; default the first 0.5 s, the others 0.01 s)."""
     log, lock = [], threading.Lock()
 
     def record(*event):
@@ -18,7 +19,10 @@ def _scheduled(monkeypatch, tmp_path, order):
 
     def warm(*key):
         record("warm start", key)
-        time.sleep(0.5 if not any(e[1] == "warm end" for e in log) else 0.01)  # the first: long against the parts
+        if seconds is not None:
+            time.sleep(seconds(key))
+        else:
+            time.sleep(0.5 if not any(e[1] == "warm end" for e in log) else 0.01)  # the first: long against the parts
         record("warm end", key)
         return "/".join(map(str, key))
 
@@ -58,9 +62,17 @@ def test_the_lyapunov_loop_compiles_once_beside_the_first_integrator(monkeypatch
 
 
 def test_a_scene_that_integrates_nothing_compiles_no_integrator(monkeypatch, tmp_path):
-    assert figures._scene_needs("celt_stability") == set()
-    log = _scheduled(monkeypatch, tmp_path, ["celt_stability"])
-    assert [e[1:] for e in log] == [("scene", "celt_stability")]
+    assert figures._scene_needs("bicycle_stability") == set()
+    log = _scheduled(monkeypatch, tmp_path, ["bicycle_stability"])
+    assert [e[1:] for e in log] == [("scene", "bicycle_stability")]
+    # celt_stability integrates nothing either: it waits for the celt's Jacobian-vector product, which the
+    # Lyapunov loop's warm-up compiles for celt_chaos too, and for no integrator
+    assert figures._scene_needs("celt_stability") == {("lyapunov", "celt", "full")}
+    log = _scheduled(monkeypatch, tmp_path, ["celt_stability", "celt_chaos"])
+    warmed = [e[2] for e in log if e[1] == "warm start"]
+    assert warmed.count(("lyapunov", "celt", "full")) == 1
+    start = min(e[0] for e in log if e[1] == "scene" and e[2] == "celt_stability")
+    assert max(e[0] for e in log if e[1] == "warm end" and e[2] == ("lyapunov", "celt", "full")) < start
 
 
 def test_figures_compile_other_models_parts_while_the_first_integrator_compiles(monkeypatch, tmp_path):
@@ -96,3 +108,40 @@ def test_a_scene_that_needs_nothing_compiled_leaves_the_first_processes_to_the_c
     first_end = min(e[0] for e in log if e[1] == "warm end")
     for name in ("celt_stability", "bicycle_stability"):
         assert min(e[0] for e in log if e[1] == "scene" and e[2] == name) > first_end
+
+
+def test_the_workers_inherit_pyplot_and_numbas_registries_and_the_callers_backend_is_left_alone(monkeypatch):
+    """Each forked worker imported matplotlib's pyplot and loaded numba's CPU registries on its own (~0.9 s of CPU
+    each); ``_preload`` does it once in the parent, without choosing the caller's matplotlib backend, and not at
+    all where the workers are not forked (they would do it again)."""
+    import multiprocessing
+    import sys
+
+    import matplotlib
+    from numba.core.registry import cpu_target
+
+    calls = []
+    monkeypatch.setattr(cpu_target.target_context, "refresh", lambda: calls.append("refresh"))
+    monkeypatch.setattr(matplotlib, "use", lambda *a, **k: calls.append("use"))
+    monkeypatch.setattr(multiprocessing, "get_start_method", lambda allow_none=False: "spawn")
+    figures._preload()
+    assert calls == []
+    monkeypatch.setattr(multiprocessing, "get_start_method", lambda allow_none=False: "fork")
+    figures._preload()
+    assert calls == ["refresh"] and "matplotlib.pyplot" in sys.modules
+
+
+def test_no_integrator_compiles_beside_the_first_one_when_a_lyapunov_loop_ends_first(monkeypatch, tmp_path):
+    """The integrators share one driver, which the first one compiles: an integrator started before it is
+    cached compiles it again (7-8 s of CPU).  With the Lyapunov loops ending before the first integrator,
+    the other worker compiles the next loop and the models' parts, and no integrator."""
+    log = _scheduled(monkeypatch, tmp_path, ["predictability", "knife_edge_rigid", "celt_stability", "celt_chaos"],
+                     seconds=lambda key: 0.05 if key[0] == "lyapunov" else (0.6 if key[0] == "two_mode" and
+                                                                              key[1] == "reduced" else 0.01))
+    warmed = [e for e in log if e[1] == "warm start"]
+    first = next(e for e in warmed if e[2][0] != "lyapunov")
+    first_end = next(e[0] for e in log if e[1] == "warm end" and e[2] == first[2])
+    assert [e[2] for e in warmed if e[0] < first_end and e[2][0] != "lyapunov"] == [first[2]]
+    loops = [e for e in warmed if e[2][0] == "lyapunov"]
+    assert len(loops) == 2 and all(e[0] < first_end for e in loops)  # both loops beside the first integrator
+    assert any(e[1] == "parts" and e[0] < first_end for e in log)  # then the next models' parts

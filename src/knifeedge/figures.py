@@ -27,9 +27,11 @@ _ORDER = (("scene", "predictability"), ("scene", "knife_edge_rigid"), ("scene", 
           ("scene", "numerical2"), ("animation", "numerical"), ("scene", "celt"), ("scene", "knife_edge_vs_celt"),
           ("scene", "model_fidelity"), ("scene", "table_path"), ("scene", "ellipses"), ("scene", "celt_schoemer"),
           ("scene", "amplitudes"), ("scene", "numerical"), ("scene", "rolling_disk"))
-#: scenes whose run is also animated, with the animation's settings (modest size and frame count)
+#: scenes whose run is also animated, with the animation's settings (modest size and frame count; a frame costs
+#: ~10 ms of CPU: numerical's 80 frames still put ~7 in each rocking period at its reversal, numerical2's and the
+#: celt's ~3.5 and ~3 with 150 and 100 frames, fewer would not show the rocking there)
 ANIMATIONS = {
-    "numerical": {"frames": 120, "fps": 12.5, "size": (8.0, 4.5), "dpi": 80},
+    "numerical": {"frames": 80, "fps": 12.5, "size": (8.0, 4.5), "dpi": 80},
     "numerical2": {"frames": 150, "fps": 12.5, "size": (8.0, 4.5), "dpi": 80},
     "celt": {"frames": 100, "fps": 12.5, "size": (8.0, 4.5), "dpi": 80},
 }
@@ -146,15 +148,38 @@ def _warm_call(key: tuple) -> tuple:
     return (warm_lyapunov, *key[1:]) if key[0] == "lyapunov" else (warm, *key)
 
 
+def _next_warm(warms: list, compiled: set, running: dict) -> tuple | None:
+    """The next compilation to start, or None: the first integrator alone among the integrators (it compiles the
+    driver they share, which the others then load from the cache: started before it is cached, each would
+    compile it again); beside it the Lyapunov loops (they share nothing with the integrators); after it, the
+    next in the order the tasks want them (one whose model parts are not being compiled, if any)."""
+    if not warms:
+        return None
+    integrators = [w for w in warms if w[0] != "lyapunov"]
+    first_running = any(kind == "warm" and what[0] != "lyapunov" for kind, what in running.values())
+    if _integrator_compiled(compiled) or (not integrators and not first_running):
+        busy = {what for kind, what in running.values() if kind == "parts"}  # not compiled twice at once
+        return next((w for w in warms if w not in busy), warms[0])
+    if not first_running:
+        return integrators[0]
+    return next((w for w in warms if w[0] == "lyapunov"), None)
+
+
+def _integrator_compiled(compiled: set) -> bool:
+    """Whether an integrator (and with it the driver they share) is compiled, among the keys ``compiled``."""
+    return any(w[0] != "lyapunov" for w in compiled)
+
+
 def _schedule(pool, workers: int, order: list, out: Path, report, progress, t0: float) -> None:
     """Run the scenes on ``pool``, compiling each integrator once and first.
 
-    The first integrator compiles alone (it also compiles the helpers every
-    kernel shares, which later processes then load from the cache), while
-    the other processes compile the next models' parts of it (each model's
-    own code, which does not need the shared integrator) and the functions
-    that draw the animated bodies, and the Lyapunov loop of the scenes that
-    compute exponents (it shares nothing with the integrators); after that at most
+    The first integrator compiles alone among the integrators (it also
+    compiles the driver every kernel shares, which later processes then load
+    from the cache: :func:`_next_warm`), while the other processes compile the
+    Lyapunov loops with the models' ``jvp_into`` (they share nothing with the
+    integrators), then the next models' parts of it (each model's own code,
+    which does not need the shared integrator) and the functions that draw
+    the animated bodies; after that at most
     ``workers`` tasks run at once, a scene as soon as all its integrators are
     compiled, otherwise the next compilation, in the order of the first task
     that needs it.  A scene that needs nothing compiled waits for the first
@@ -182,18 +207,10 @@ def _schedule(pool, workers: int, order: list, out: Path, report, progress, t0: 
                 scenes.remove(ready[0])
                 task = render_scene if ready[0][0] == "scene" else render_animation
                 running[pool.submit(task, ready[0][1], str(out))] = ready[0]
-            elif warms and (compiled or not any(kind == "warm" for kind, _ in running.values())):
-                busy = {what for kind, what in running.values() if kind == "parts"}  # not compiled twice at once
-                # the first compilation is an integrator's (it compiles the helpers the others share)
-                k = next((w for w in warms if w not in busy and (compiled or w[0] != "lyapunov")), warms[0])
+            elif k := _next_warm(warms, compiled, running):
                 warms.remove(k)
                 running[pool.submit(*_warm_call(k))] = ("warm", k)
-            elif not compiled and any(w[0] == "lyapunov" for w in warms):
-                # the Lyapunov loop shares nothing with the integrators: it compiles beside the first one
-                k = next(w for w in warms if w[0] == "lyapunov")
-                warms.remove(k)
-                running[pool.submit(*_warm_call(k))] = ("warm", k)
-            elif not compiled and any(w not in parted and w[0] != "lyapunov" for w in warms):
+            elif not _integrator_compiled(compiled) and any(w not in parted and w[0] != "lyapunov" for w in warms):
                 k = next(w for w in warms if w not in parted and w[0] != "lyapunov")
                 parted.add(k)
                 running[pool.submit(warm_parts, *k, drawing=k in drawn)] = ("parts", k)
@@ -216,6 +233,22 @@ def _schedule(pool, workers: int, order: list, out: Path, report, progress, t0: 
             if progress:
                 print(f"figures: compiled [{len(compiled)}/{n_warm}] {label}; {time.perf_counter() - t0:.1f} s elapsed",
                       file=sys.stderr, flush=True)
+
+
+def _preload() -> None:
+    """Set up once, before the worker processes are forked (they inherit it), what each of them would set up
+    on its own: matplotlib's pyplot and Agg modules (imported, this process's backend left as it is), and
+    numba's registries of the CPU target (about 0.9 s of CPU per process).  Nothing where the workers are not
+    forked (they would import it again)."""
+    import multiprocessing
+
+    if multiprocessing.get_start_method(allow_none=False) != "fork":
+        return
+    import matplotlib.backends.backend_agg  # noqa: F401
+    import matplotlib.pyplot  # noqa: F401
+    from numba.core.registry import cpu_target
+
+    cpu_target.target_context.refresh()
 
 
 def make_figures(out: str | Path, names=None, max_workers: int | None = None, progress: bool = True) -> list:
@@ -253,6 +286,7 @@ def make_figures(out: str | Path, names=None, max_workers: int | None = None, pr
             if n in ANIMATIONS:
                 report("animation", render_animation(n, str(out)))
     else:
+        _preload()
         with cf.ProcessPoolExecutor(max_workers=workers) as pool:
             _schedule(pool, workers, order, out, report, progress, t0)
     recs = [records[n] for n in names]

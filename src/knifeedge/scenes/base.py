@@ -112,9 +112,10 @@ class Scene:
     uses : every ``(model, fidelity, pose)`` the scene integrates (default,
         ``None``: the main run's only; ``()``: none, the scene integrates
         nothing).
-    lyapunov : every ``(model, fidelity)`` whose Lyapunov exponents the scene
-        computes (``knifeedge figures`` compiles the variational loop once,
-        before the scenes that need it).
+    lyapunov : every ``(model, fidelity)`` whose Lyapunov exponents or
+        linearization (its ``jvp_into``) the scene computes (``knifeedge
+        figures`` compiles the variational loop and the model's ``jvp_into``
+        once, before the scenes that need them).
     """
 
     name: str
