@@ -20,7 +20,7 @@ import pytest
 
 from knifeedge import _process
 from knifeedge.integrators import cache, compiler, irparts
-from knifeedge.integrators.methods import DOP853_A
+from knifeedge.integrators.methods import DOP853
 
 
 def _blobs():
@@ -76,9 +76,9 @@ def test_cached_compiled_code_is_checked_before_it_runs_scaled_constant(tmp_path
     first = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
     parts = next((tmp_path / "k" / "kernels").glob("erk-DOP853-single_mode_reduced-*.parts-*.nbo"))
     data = parts.read_bytes()
-    constant = struct.pack("<d", float(DOP853_A[1, 0]))  # the first stage's coefficient, a literal of the IR
+    constant = struct.pack("<d", float(DOP853.A[1, 0]))  # the first stage's coefficient, a literal of the IR
     assert data.count(constant) >= 1
-    parts.write_bytes(data.replace(constant, struct.pack("<d", float(DOP853_A[1, 0]) * 1.5)))
+    parts.write_bytes(data.replace(constant, struct.pack("<d", float(DOP853.A[1, 0]) * 1.5)))
     again = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
     assert again.stdout == first.stdout
     lines = [ln for ln in again.stderr.splitlines() if ln.strip()]
