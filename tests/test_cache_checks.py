@@ -1,8 +1,8 @@
 """Issue 26, root 2: cached compiled code is checked before it runs.
 
-The compiled parts of a kernel (``.nbo``) are kept in a file that is not a
-pickle and whose header, sizes and checksum are verified before numba loads
-the object code; a damaged or altered file is removed, said in one line and
+The compiled parts of a kernel (``.nbo``) are kept in the checked format of
+numba's own cache files of the kernels, whose owner, checksum and compiler
+key are verified before anything in it is unpickled or loaded; a damaged or altered file is removed, said in one line and
 compiled again.  The cache folder, wherever it is, is refused when another
 user could write to it; the background compiler's locks name their process by
 pid and start time; a full disk is said as such.
@@ -10,6 +10,7 @@ pid and start time; a full disk is said as such.
 import errno
 import inspect
 import os
+import pickle
 import struct
 import subprocess
 import sys
@@ -27,15 +28,15 @@ def _blobs():
     return ("knifeedge_parts_test", "object", (b"\x7fELF" + bytes(range(256)) * 4, b"BC\xc0\xde" + b"\x01" * 300))
 
 
-def test_cached_compiled_code_is_checked_before_it_runs_parts_file(tmp_path, capsys):
-    """A parts file written by write_parts reads back as numba serialized it; a flipped byte, a scaled constant,
-    a wrong size, another machine or another numba, a pickle planted in its place, and a file others may write
-    are each refused with the check that failed, before anything in it is used."""
+def test_cached_compiled_code_is_checked_before_it_runs_parts_file(tmp_path, monkeypatch, capsys):
+    """A parts file written by write_parts reads back as numba serialized it; a flipped byte, a cut file, a
+    pickle planted in its place, parts of another numba or machine, and a file others may write are each
+    refused with the check that failed, before anything in it is unpickled or used."""
     path = tmp_path / "k.parts-x.nbo"
     irparts.write_parts(path, _blobs())
     assert irparts.read_parts(path) == _blobs()
-    assert not path.read_bytes().startswith(b"\x80")  # not a pickle
     good = path.read_bytes()
+    assert good.startswith(cache.CHECKED_MAGIC)  # the kernels' own checked format, not a bare pickle
     body = good.index(b"\x7fELF")
 
     def refused(data: bytes, match: str):
@@ -44,21 +45,20 @@ def test_cached_compiled_code_is_checked_before_it_runs_parts_file(tmp_path, cap
             irparts.read_parts(path)
 
     refused(good[:body + 10] + bytes([good[body + 10] ^ 1]) + good[body + 11:], "checksum")
-    refused(good[:-4], "size does not match")
-    refused(b"\x80\x05" + good[2:], "not a compiled-parts file")
-    for key, value in (("numba", "0.1"), ("machine", ["x86_64-unknown", "other-cpu", ""]), ("format", 1)):
-        n = struct.unpack("<Q", good[len(irparts.MAGIC):len(irparts.MAGIC) + 8])[0]
-        import json
-
-        header = json.loads(good[len(irparts.MAGIC) + 8:len(irparts.MAGIC) + 8 + n])
-        header[key] = value
-        text = json.dumps(header).encode()
-        refused(irparts.MAGIC + struct.pack("<Q", len(text)) + text + good[len(irparts.MAGIC) + 8 + n:], key)
-    path.write_bytes(good)
+    refused(good[:-4], "checksum")
+    refused(pickle.dumps(_blobs()), "not a checked cache file")
+    key = irparts._key()
+    for other in ((1,) + key[1:], key[:1] + ("0.1",) + key[2:], key[:3] + (("x86_64-unknown", "other-cpu", ""),)):
+        monkeypatch.setattr(irparts, "_key", lambda other=other: other)
+        irparts.write_parts(path, _blobs())
+        monkeypatch.setattr(irparts, "_key", lambda: key)
+        refused(path.read_bytes(), "another compiler or for another machine")
+    irparts.write_parts(path, _blobs())
     path.chmod(0o666)
     if hasattr(os, "getuid"):
         with pytest.raises(ValueError, match="no one else may write"):
             irparts.read_parts(path)
+    assert capsys.readouterr().err == ""
 
 
 @pytest.mark.slow

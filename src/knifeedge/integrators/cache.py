@@ -233,30 +233,23 @@ def compiled(py_func, label: str, **options):
 
 
 def compiled_cfunc(py_func, signature, label: str):
-    """``numba.cfunc(signature)(py_func)`` (error model numpy), compiled now or loaded from the cache (as
-    :func:`compiled`)."""
+    """``numba.cfunc(signature)(py_func)`` (error model numpy), cached as :func:`compiled`; it compiles, or loads
+    from the cache, at its ``compile()``."""
     from numba.core import sigutils
     from numba.core.ccallback import CFunc
 
     py_func.__knifeedge_cache__ = (str(cache_dir() / "kernels"), f"{label}-{stamp(py_func)}")
     function = CFunc(py_func, sigutils.normalize_signature(signature), locals={}, options={"error_model": "numpy"})
     function._cache = KernelCache(py_func)
-    function.compile()
     return function
 
 
-def is_cached(dispatcher) -> bool:
-    """Whether the cache holds machine code of ``dispatcher`` (made by :func:`compiled` or :func:`compiled_cfunc`)."""
-    return dispatcher._cache.index_path().is_file()
+def is_cached(function) -> bool:
+    """Whether the cache holds machine code of ``function`` (made by :func:`compiled` or :func:`compiled_cfunc`)."""
+    return function._cache.index_path().is_file()
 
 
-def index_path(py_func, label: str) -> Path:
-    """The index file of :func:`compiled_cfunc` of ``py_func`` and ``label`` (it exists: the cache holds it)."""
-    tag = f"py{sys.version_info[0]}{sys.version_info[1]}{getattr(sys, 'abiflags', '')}"
-    return cache_dir() / "kernels" / f"{label}-{stamp(py_func)}.{tag}.nbi"
-
-
-#: the first bytes of the kernels' cache files, written by :class:`CheckedCacheFile`
+#: the first bytes of every checked cache file (numba's files of the kernels, the parts of :mod:`.irparts`)
 CHECKED_MAGIC = b"knifeedge checked numba cache\n"
 
 
@@ -267,9 +260,39 @@ def _checked(data: bytes) -> bytes:
 def _verified(data: bytes, path) -> bytes:
     """``data`` without its :func:`_checked` prefix; ValueError if the prefix or the checksum is wrong."""
     head = len(CHECKED_MAGIC) + 32
-    if not data.startswith(CHECKED_MAGIC) or hashlib.sha256(data[head:]).digest() != data[len(CHECKED_MAGIC):head]:
+    if not data.startswith(CHECKED_MAGIC):
+        raise ValueError(f"{path}: not a checked cache file of this version")
+    if hashlib.sha256(data[head:]).digest() != data[len(CHECKED_MAGIC):head]:
         raise ValueError(f"{path}: its checksum does not match its content")
     return data[head:]
+
+
+def write_checked(path: Path, payload, what: str) -> None:
+    """Keep ``payload`` in ``path`` as numba keeps a kernel's entries (pickled, :func:`_checked`), mode 0644
+    whatever the umask, written to a temporary file and renamed.  A folder that cannot be written leaves
+    ``what`` compiled for this process only, said in one line (a full disk said as such)."""
+    tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
+    try:
+        with open(os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o644), "wb") as f:
+            f.write(_checked(pickle.dumps(payload, protocol=4)))
+        os.replace(tmp, path)
+    except OSError as exc:
+        tmp.unlink(missing_ok=True)
+        why = "the disk is full" if exc.errno in _FULL else f"{type(exc).__name__}: {exc}"
+        print(f"knifeedge: could not keep {what} in {path} ({why}); they stay compiled for this process only",
+              file=sys.stderr, flush=True)
+
+
+def read_checked(path: Path):
+    """What :func:`write_checked` kept in ``path``, unpickled only after checking that the file is this user's
+    and no one else may write it, and its checksum; ValueError saying which check failed."""
+    st = os.lstat(path)
+    if not stat.S_ISREG(st.st_mode):
+        raise ValueError(f"{path}: not a plain file")
+    if hasattr(os, "getuid") and (st.st_uid != os.getuid() or st.st_mode & 0o022):
+        raise ValueError(f"{path}: owned by user id {st.st_uid} with mode {stat.S_IMODE(st.st_mode):o}: only this "
+                         "user's files that no one else may write are loaded")
+    return pickle.loads(_verified(path.read_bytes(), path))
 
 
 class CheckedCacheFile(IndexDataCacheFile):
