@@ -9,7 +9,7 @@ from __future__ import annotations
 import sys
 import time
 
-from .cache import cache_dir, call_repairing
+from .cache import cache_dir
 from .kernels import kernel_module, load_kernel
 from .status import Status, from_code
 from .methods import ALIASES, COMPILED_METHODS, ExplicitTableau, FixedMethod, get, register
@@ -61,7 +61,7 @@ def _announced(solve, label: str):
               file=sys.stderr, end="", flush=True)
         t = time.perf_counter()
         try:
-            out = call_repairing(solve, *args)
+            out = solve(*args)
         finally:
             print(f" {time.perf_counter() - t:.1f} s", file=sys.stderr, flush=True)
         done.append(True)
@@ -74,5 +74,5 @@ def _announced(solve, label: str):
 
 
 __all__ = ["COMPILED_METHODS", "ALIASES", "EVENTS_PER_STEP", "ExplicitTableau", "FixedMethod", "Status", "cache_dir",
-           "call_repairing", "compile_mode", "from_code", "kernel", "kernel_compiled", "kernel_module", "load_kernel",
+           "compile_mode", "from_code", "kernel", "kernel_compiled", "kernel_module", "load_kernel",
            "register", "set_compile_mode", "use_compiled"]

@@ -39,11 +39,10 @@ from __future__ import annotations
 
 import hashlib
 import struct
-import sys
 from pathlib import Path
 from types import SimpleNamespace
 
-from .cache import read_checked, write_checked
+from .cache import discard, read_checked, write_checked
 from .methods import erk_arrays
 
 #: the C signatures of the two parts (called by the integrator of :mod:`.erk`)
@@ -341,7 +340,7 @@ def c_wrapper_ir(native: str, symbol: str) -> str:
 
 
 def _load(path: Path, names: tuple):
-    """``(library, addresses)`` kept in ``path``, or None (a file that cannot be used is removed, said on stderr)."""
+    """``(library, addresses)`` kept in ``path``, or None (a file that cannot be used is discarded)."""
     from numba.core.compiler_lock import global_compiler_lock
 
     if not path.exists():
@@ -353,12 +352,9 @@ def _load(path: Path, names: tuple):
             addresses = [lib.get_pointer_to_function(x) for x in names]
         if all(addresses[:3]) and addresses[5] and bool(addresses[3]) == bool(addresses[4]):
             return lib, addresses
-        problem = "it lacks the parts' symbols"
+        raise ValueError("it lacks the parts' symbols")
     except Exception as exc:  # noqa: BLE001 - any unreadable file is compiled again
-        problem = f"{type(exc).__name__}: {exc}"
-    path.unlink(missing_ok=True)
-    print(f"knifeedge: discarded a damaged compiled-parts cache file {path} ({problem}); compiling it again",
-          file=sys.stderr, flush=True)
+        discard([path], exc, "compiled-parts cache file")
     return None
 
 
