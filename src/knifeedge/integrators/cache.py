@@ -109,7 +109,7 @@ def _named(value):
         path = getattr(sys.modules.get(f.__module__), "__file__", None)
         if path is None or not Path(path).is_file():  # typed in a session or run by exec: by its code
             return ("function", f.__module__, f.__qualname__, _code_named(f))
-        return ("function", f.__module__, f.__qualname__, _file_sha256(path))
+        return ("function", f.__module__, f.__qualname__, hashlib.sha256(Path(path).read_bytes()).hexdigest())
     if isinstance(value, np.ndarray):
         return ("array", value.dtype.str, value.shape, value.tobytes())
     if isinstance(value, tuple):
@@ -129,10 +129,6 @@ def _code_named(f) -> tuple:
     read = tuple((n, _named(glob_[n])) for n in code.co_names if isinstance(glob_.get(n), (int, float, complex,
                                                                                             np.ndarray, CPUDispatcher)))
     return ("code", hashlib.sha256(marshal.dumps(code)).hexdigest(), read)
-
-
-def _file_sha256(path) -> str:
-    return hashlib.sha256(Path(path).read_bytes()).hexdigest() if path else ""
 
 
 def stamp(py_func) -> str:
