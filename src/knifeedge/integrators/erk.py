@@ -22,8 +22,6 @@ interpolant.
 """
 from __future__ import annotations
 
-import ctypes
-
 import numpy as np
 from numba import carray, njit, types
 
@@ -284,7 +282,7 @@ class AdaptiveKernel:
     interpolant (``dense``), all straight-line LLVM IR (:mod:`.irparts`) linked with the IR of the model's
     ``rhs_q_into`` and ``constants`` that the generated module carries (``LLVM_IR``, written at derive time;
     the right-hand side inlined into the stages), numba compiling the right-hand side only where the module
-    has no IR of it; and the event functions (a ``numba.cfunc``; a no-op from the IR library for a model
+    has no IR of it; and the event functions (a ``numba.cfunc``; address 0, never called, for a model
     without event functions).  All are compiled on first use (:meth:`parts`) and cached.
 
     Attributes: ``TABLEAU``, ``RHS_NAME``, ``N`` (state size), ``NV`` (event functions), ``NQ`` (size of
@@ -336,11 +334,11 @@ class AdaptiveKernel:
             constants = None
             lib, addresses = _irparts.load_or_compile(self.path, self.TABLEAU, self.N, self.NQ, self.model,
                                                       self.RHS_NAME, self._rhs_cfunc)
-            attempt_address, dense_address, rhs_address = addresses[:3]
-            if addresses[3]:
-                constants = (np.int64(addresses[3]), ctypes.CFUNCTYPE(ctypes.c_int64)(addresses[4])())
+            attempt_address, dense_address, rhs_address, constants_address = addresses
+            if constants_address:  # with the number of parameters it reads
+                constants = (np.int64(constants_address), self.model.LLVM_IR_READS)
             kept = (lib,)  # kept alive: the integrator calls them by address
-            events_address = addresses[5]  # no event functions: a no-op, never called
+            events_address = 0  # no event functions: never called
             if self._events is not None:
                 self._events.compile()
                 kept += (self._events,)

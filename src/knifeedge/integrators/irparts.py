@@ -310,24 +310,20 @@ def cache_file(kernel_path) -> Path:
 
 
 def symbols(kernel_path) -> tuple:
-    """The symbols of ``attempt``, ``dense``, the C-callable ``rhs``, then of ``constants``, of the number of
-    parameters it reads and of an ``events`` part that does nothing, for the kernel ``kernel_path``
-    (unique per module; the first three are in every parts library, the others where they could be written)."""
+    """The symbols of ``attempt``, ``dense``, the C-callable ``rhs`` and ``constants`` for the kernel
+    ``kernel_path`` (unique per module; the first three are in every parts library, ``constants`` where the
+    model carries its IR)."""
     stem = Path(kernel_path).stem
     return (f"knifeedge.attempt.{stem}", f"knifeedge.dense.{stem}", f"knifeedge.rhs.{stem}",
-            f"knifeedge.constants.{stem}", f"knifeedge.constants_reads.{stem}", f"knifeedge.no_events.{stem}")
+            f"knifeedge.constants.{stem}")
 
 
-def _extras_ir(names: tuple, constants: str, reads: int) -> str:
-    """The model's ``constants`` (its IR from the generated module, or "") exported as ``names[3]``, with the
-    function returning ``reads``, and the ``events`` part that does nothing (for a model without event
-    functions: the integrator never calls it)."""
-    text = f'define void @"{names[5]}"(ptr %s, ptr %p, i64 %n_p, ptr %out) {{\nentry:\n  ret void\n}}\n'
-    if constants:
-        text += (constants + f'define void @"{names[3]}"(ptr %p, ptr %q) {{\nentry:\n'
-                 f'  call void @"constants"(ptr %p, ptr %q)\n  ret void\n}}\n'
-                 f'define i64 @"{names[4]}"() {{\nentry:\n  ret i64 {reads}\n}}\n')
-    return text
+def _constants_ir(name: str, constants: str) -> str:
+    """The model's ``constants`` (its IR from the generated module, or "") exported as ``name``."""
+    if not constants:
+        return ""
+    return (constants + f'define void @"{name}"(ptr %p, ptr %q) {{\nentry:\n'
+            f'  call void @"constants"(ptr %p, ptr %q)\n  ret void\n}}\n')
 
 
 def c_wrapper_ir(native: str, symbol: str) -> str:
@@ -350,7 +346,7 @@ def _load(path: Path, names: tuple):
         with global_compiler_lock:
             lib = _codegen().unserialize_library(serialized)
             addresses = [lib.get_pointer_to_function(x) for x in names]
-        if all(addresses[:3]) and addresses[5] and bool(addresses[3]) == bool(addresses[4]):
+        if all(addresses[:3]):
             return lib, addresses
         raise ValueError("it lacks the parts' symbols")
     except Exception as exc:  # noqa: BLE001 - any unreadable file is compiled again
@@ -361,8 +357,7 @@ def _load(path: Path, names: tuple):
 def load_or_compile(kernel_path, tableau: str, n: int, nq: int, model, rhs_name: str, rhs_cfunc) -> tuple:
     """``(library, addresses)`` of the parts of the kernel ``kernel_path`` (``AdaptiveKernel.path``, a name in
     the cache folder), loaded from :func:`cache_file`, or compiled from :func:`module_ir` and saved there;
-    ``addresses`` are those of :func:`symbols` (0 for ``constants`` and its count where the model has no IR of
-    it).
+    ``addresses`` are those of :func:`symbols` (0 for ``constants`` where the model has no IR of it).
 
     The right-hand side ``rhs_name`` and ``constants`` are the IR the generated ``model`` carries
     (``model.LLVM_IR``, written at derive time by ``derivation/ir_emit.py``); a right-hand side it does not
@@ -383,11 +378,10 @@ def load_or_compile(kernel_path, tableau: str, n: int, nq: int, model, rhs_name:
         if not native.startswith("cfunc."):
             raise RuntimeError(f"unexpected symbol of a compiled C callback: {native!r}") from None
         native, definition, link = native[len("cfunc."):], "", [compiled._library]
-    extras = _extras_ir(names, ir.get("constants", ""), getattr(model, "LLVM_IR_READS", 0))
+    extras = _constants_ir(names[3], ir.get("constants", ""))
     text = module_ir(erk_arrays(tableau), n, nq, names[:3], native, definition, extras)
     lib = compile_library(text, f"knifeedge_parts_{Path(kernel_path).stem}", link)
-    addresses = [lib.get_pointer_to_function(x) if i < 3 or i == 5 or "constants" in ir else 0
-                 for i, x in enumerate(names)]
+    addresses = [lib.get_pointer_to_function(x) for x in names]
     write_parts(path, lib.serialize_using_object_code())
     return lib, addresses
 
