@@ -9,6 +9,14 @@ closure numba's cache under a name that stands for everything it depends on
 the sources of the integrators, the compiler versions), in
 ``<cache>/kernels``; a second process loads instead of compiling.
 
+Every file kept there is a checked cache file: a magic line and the SHA-256
+of the rest, verified before anything in it is unpickled (numba's index and
+data files of the kernels, :class:`CheckedCacheFile`; a kernel's IR parts,
+:func:`write_checked`, :func:`read_checked`).  A file that fails its check
+is removed with its entry, said in one line and compiled again
+(:func:`discard`); one that cannot be written (a full disk) is said, and
+what it would hold stays compiled for this process only (:func:`not_kept`).
+
 The cache directory is ``$KNIFEEDGE_CACHE_DIR`` if set, else
 ``$XDG_CACHE_HOME/knifeedge`` (default ``~/.cache/knifeedge``); when that is
 not usable, a per-user folder in the system temporary directory.
