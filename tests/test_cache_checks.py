@@ -1,8 +1,8 @@
 """Issue 26, root 2: cached compiled code is checked before it runs.
 
-The compiled parts of a kernel (``.nbo``) are kept in a file that is not a
-pickle and whose header, sizes and checksum are verified before numba loads
-the object code; a damaged or altered file is removed, said in one line and
+The compiled parts of a kernel (``.nbo``) are kept in the checked format of
+numba's own cache files of the kernels, whose owner, checksum and compiler
+key are verified before anything in it is unpickled or loaded; a damaged or altered file is removed, said in one line and
 compiled again.  The cache folder, wherever it is, is refused when another
 user could write to it; the background compiler's locks name their process by
 pid and start time; a full disk is said as such.
@@ -10,6 +10,7 @@ pid and start time; a full disk is said as such.
 import errno
 import inspect
 import os
+import pickle
 import struct
 import subprocess
 import sys
@@ -20,22 +21,22 @@ import pytest
 
 from knifeedge import _process
 from knifeedge.integrators import cache, compiler, irparts
-from knifeedge.integrators.methods import DOP853_A
+from knifeedge.integrators.methods import DOP853
 
 
 def _blobs():
     return ("knifeedge_parts_test", "object", (b"\x7fELF" + bytes(range(256)) * 4, b"BC\xc0\xde" + b"\x01" * 300))
 
 
-def test_cached_compiled_code_is_checked_before_it_runs_parts_file(tmp_path, capsys):
-    """A parts file written by write_parts reads back as numba serialized it; a flipped byte, a scaled constant,
-    a wrong size, another machine or another numba, a pickle planted in its place, and a file others may write
-    are each refused with the check that failed, before anything in it is used."""
+def test_cached_compiled_code_is_checked_before_it_runs_parts_file(tmp_path, monkeypatch, capsys):
+    """A parts file written by write_parts reads back as numba serialized it; a flipped byte, a cut file, a
+    pickle planted in its place, parts of another numba or machine, and a file others may write are each
+    refused with the check that failed, before anything in it is unpickled or used."""
     path = tmp_path / "k.parts-x.nbo"
     irparts.write_parts(path, _blobs())
     assert irparts.read_parts(path) == _blobs()
-    assert not path.read_bytes().startswith(b"\x80")  # not a pickle
     good = path.read_bytes()
+    assert good.startswith(cache.CHECKED_MAGIC)  # the kernels' own checked format, not a bare pickle
     body = good.index(b"\x7fELF")
 
     def refused(data: bytes, match: str):
@@ -44,21 +45,20 @@ def test_cached_compiled_code_is_checked_before_it_runs_parts_file(tmp_path, cap
             irparts.read_parts(path)
 
     refused(good[:body + 10] + bytes([good[body + 10] ^ 1]) + good[body + 11:], "checksum")
-    refused(good[:-4], "size does not match")
-    refused(b"\x80\x05" + good[2:], "not a compiled-parts file")
-    for key, value in (("numba", "0.1"), ("machine", ["x86_64-unknown", "other-cpu", ""]), ("format", 1)):
-        n = struct.unpack("<Q", good[len(irparts.MAGIC):len(irparts.MAGIC) + 8])[0]
-        import json
-
-        header = json.loads(good[len(irparts.MAGIC) + 8:len(irparts.MAGIC) + 8 + n])
-        header[key] = value
-        text = json.dumps(header).encode()
-        refused(irparts.MAGIC + struct.pack("<Q", len(text)) + text + good[len(irparts.MAGIC) + 8 + n:], key)
-    path.write_bytes(good)
+    refused(good[:-4], "checksum")
+    refused(pickle.dumps(_blobs()), "not a checked cache file")
+    key = irparts._key()
+    for other in ((1,) + key[1:], key[:1] + ("0.1",) + key[2:], key[:3] + (("x86_64-unknown", "other-cpu", ""),)):
+        monkeypatch.setattr(irparts, "_key", lambda other=other: other)
+        irparts.write_parts(path, _blobs())
+        monkeypatch.setattr(irparts, "_key", lambda: key)
+        refused(path.read_bytes(), "another compiler or for another machine")
+    irparts.write_parts(path, _blobs())
     path.chmod(0o666)
     if hasattr(os, "getuid"):
         with pytest.raises(ValueError, match="no one else may write"):
             irparts.read_parts(path)
+    assert capsys.readouterr().err == ""
 
 
 @pytest.mark.slow
@@ -76,9 +76,9 @@ def test_cached_compiled_code_is_checked_before_it_runs_scaled_constant(tmp_path
     first = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
     parts = next((tmp_path / "k" / "kernels").glob("erk-DOP853-single_mode_reduced-*.parts-*.nbo"))
     data = parts.read_bytes()
-    constant = struct.pack("<d", float(DOP853_A[1, 0]))  # the first stage's coefficient, a literal of the IR
+    constant = struct.pack("<d", float(DOP853.A[1, 0]))  # the first stage's coefficient, a literal of the IR
     assert data.count(constant) >= 1
-    parts.write_bytes(data.replace(constant, struct.pack("<d", float(DOP853_A[1, 0]) * 1.5)))
+    parts.write_bytes(data.replace(constant, struct.pack("<d", float(DOP853.A[1, 0]) * 1.5)))
     again = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
     assert again.stdout == first.stdout
     lines = [ln for ln in again.stderr.splitlines() if ln.strip()]
@@ -149,18 +149,16 @@ def test_cached_compiled_code_is_checked_before_it_runs_lock(tmp_path, monkeypat
 
 
 def test_cached_compiled_code_is_checked_before_it_runs_disk_full(tmp_path, monkeypatch, capsys):
-    """A full disk while the cache is written is said as such, never as a damaged entry."""
+    """A full disk while the cache is written (a kernel's entry or its parts) is said as such, never as a
+    damaged entry, and the run goes on with what it compiled."""
     def full(*args, **kwargs):
         raise OSError(errno.ENOSPC, "No space left on device", str(tmp_path / "x"))
 
-    def numba_saving():
-        # what numba's cache raises from its own code while saving an entry
-        exc = OSError(errno.ENOSPC, "No space left on device", str(tmp_path / "f.solve-1.py311.nbi"))
-        raise exc
-
-    with pytest.raises(OSError, match="disk holding the compiled-code cache is full"):
-        cache.call_repairing(numba_saving)
-    assert "damaged" not in capsys.readouterr().err
+    monkeypatch.setenv("KNIFEEDGE_CACHE_DIR", str(tmp_path / "k"))
+    monkeypatch.setattr(cache.CheckedCacheFile, "_open_for_write", full)
+    assert _scaled(1.5, "test-full")(2.0) == 3.0
+    err = capsys.readouterr().err
+    assert "the disk is full" in err and "damaged" not in err
     monkeypatch.setattr("builtins.open", full)
     irparts.write_parts(tmp_path / "k.parts-x.nbo", _blobs())
     err = capsys.readouterr().err
@@ -183,7 +181,7 @@ def test_cached_compiled_code_is_checked_before_it_runs_numba_cache(tmp_path, mo
     the cached machine code is discarded (one line) and compiled again, never run."""
     monkeypatch.setenv("KNIFEEDGE_CACHE_DIR", str(tmp_path / "k"))
     first = _scaled(2.5, "test-scaled")
-    assert cache.call_repairing(first, 2.0) == 5.0
+    assert first(2.0) == 5.0
     assert cache.is_cached(first)
     data = next((tmp_path / "k" / "kernels").glob("test-scaled-*.nbc"))
     raw = data.read_bytes()
@@ -193,14 +191,14 @@ def test_cached_compiled_code_is_checked_before_it_runs_numba_cache(tmp_path, mo
     data.write_bytes(raw.replace(constant, struct.pack("<d", 3.0)))
     capsys.readouterr()
     second = _scaled(2.5, "test-scaled")
-    assert cache.call_repairing(second, 2.0) == 5.0
+    assert second(2.0) == 5.0
     err = [ln for ln in capsys.readouterr().err.splitlines() if ln.strip()]
     assert len(err) == 1 and "discarded a damaged compiled-code cache entry" in err[0] and "checksum" in err[0]
     third = _scaled(2.5, "test-scaled")  # compiled again and kept: loads quietly
-    assert cache.call_repairing(third, 2.0) == 5.0 and capsys.readouterr().err == ""
+    assert third(2.0) == 5.0 and capsys.readouterr().err == ""
     assert sum(third.stats.cache_hits.values()) == 1  # loaded, not compiled
     other = _scaled(4.0, "test-scaled")  # another constant in the closure: another entry, its own answer
-    assert cache.call_repairing(other, 2.0) == 8.0 and len(list(data.parent.glob("test-scaled-*.nbi"))) == 2
+    assert other(2.0) == 8.0 and len(list(data.parent.glob("test-scaled-*.nbi"))) == 2
 
 
 def test_cached_compiled_code_is_checked_before_it_runs_numba_cache_dir(tmp_path, monkeypatch, capsys):
@@ -215,7 +213,7 @@ def test_cached_compiled_code_is_checked_before_it_runs_numba_cache_dir(tmp_path
     shared.chmod(0o777)
     monkeypatch.setenv("KNIFEEDGE_CACHE_DIR", str(tmp_path / "k"))
     monkeypatch.setattr(numba.config, "CACHE_DIR", str(shared))
-    assert cache.call_repairing(_scaled(2.5, "test-shared"), 2.0) == 5.0
+    assert _scaled(2.5, "test-shared")(2.0) == 5.0
     assert not list(shared.rglob("*.nb[ic]"))
     assert list((tmp_path / "k" / "kernels").glob("test-shared-*.nbi"))
 

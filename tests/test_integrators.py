@@ -39,9 +39,11 @@ def _two():
 # -- coefficient tables ---------------------------------------------------------
 def test_explicit_tableaus_are_consistent():
     """Row sums of A equal the nodes C; weights sum to 1; error estimators annihilate constants."""
-    np.testing.assert_allclose(methods.DOP853_A.sum(axis=1), methods.DOP853_C, atol=1e-14)
-    assert math.isclose(methods.DOP853_B.sum(), 1.0, abs_tol=1e-14)
-    assert abs(methods.DOP853_E3.sum()) < 1e-14 and abs(methods.DOP853_E5.sum()) < 1e-14
+    d = methods.DOP853
+    np.testing.assert_allclose(d.A.sum(axis=1), d.c, atol=1e-14)
+    np.testing.assert_allclose(d.hairer["A_ext"].sum(axis=1), d.hairer["c_ext"], atol=1e-14)
+    assert math.isclose(d.b.sum(), 1.0, abs_tol=1e-14)
+    assert abs(d.hairer["e3"].sum()) < 1e-14 and abs(d.e.sum()) < 1e-14
     np.testing.assert_allclose(methods.DP54_A.sum(axis=1), methods.DP54_C, atol=1e-15)
     assert math.isclose(methods.DP54_B.sum(), 1.0, abs_tol=1e-15)
     assert abs(methods.DP54_E.sum()) < 1e-15

@@ -47,6 +47,23 @@ def test_an_inconsistent_tableau_is_refused_at_construction(over, match):
         _euler_heun(**over)
 
 
+def test_dop853_and_dp54_are_the_published_coefficients():
+    """DOP853 and DP54 are SciPy's tables (``scipy.integrate.DOP853``, ``RK45``); entries of every array, bit for
+    bit, against the literals of E. Hairer's Fortran dop853.f (``c2``, ``a21``, ``a1312``, ``b1``, ``bhh1``,
+    ``er1``, ``c14``, ``a1413``, ``d41``) and Dormand & Prince (1980), Table 2 (``a54``, ``b5``, ``e7``)."""
+    d, h = methods.DOP853, methods.DOP853.hairer
+    assert d.c[1] == float("0.526001519587677318785587544488e-01")
+    assert d.A[1, 0] == float("5.26001519587677318785587544488e-2")
+    assert d.A[11, 10] == float("6.43392746015763530355970484046e-1")
+    assert d.b[0] == float("5.42937341165687622380535766363e-2")
+    assert h["e3"][0] == d.b[0] - float("0.244094488188976377952755905512")
+    assert d.e[0] == float("0.1312004499419488073250102996e-01")
+    assert h["c_ext"][0] == 0.1 and h["A_ext"][0, 12] == float("-8.298e-3")
+    assert h["D"][0, 0] == float("-0.84289382761090128651353491142e+1")
+    assert d.stages == 12 and h["A_ext"].shape == (3, 16) and h["D"].shape == (4, 16)
+    assert methods.DP54_A[4, 3] == -212 / 729 and methods.DP54_B[4] == -2187 / 6784 and methods.DP54_E[6] == 1 / 40
+
+
 def test_registered_methods_are_consistent_and_names_are_unique():
     """One registry for every kind of method: each registered method rebuilds (its checks pass), is a method of
     ``ke.simulate``, and a name is registered once; asking for a method of another kind is refused."""

@@ -24,7 +24,7 @@ from numba import njit
 
 from . import _validate
 from . import inputs as _inputs
-from .integrators import (ALIASES, COMPILED_METHODS, EVENTS_PER_STEP, Status, call_repairing, compile_mode,
+from .integrators import (ALIASES, COMPILED_METHODS, EVENTS_PER_STEP, Status, compile_mode,
                           from_code, kernel, kernel_compiled)
 from .integrators.compiler import compile_mode_set
 from .models import Model, ValidityWarning
@@ -295,10 +295,10 @@ def _phase_result(ph: "_Phase", every: bool, n: int) -> tuple:
 
 
 def _call_kernel(solve, *args) -> tuple:
-    """``solve(*args)`` (repaired if its cache is stale); a Ctrl-C that arrived while numba called back into
+    """``solve(*args)``; a Ctrl-C that arrived while numba called back into
     Python is raised as the ``KeyboardInterrupt`` it is."""
     try:
-        return call_repairing(solve, *args)
+        return solve(*args)
     except SystemError as exc:  # Ctrl-C that arrived while numba called back into Python
         cause = exc.__cause__
         while cause is not None and not isinstance(cause, KeyboardInterrupt):

@@ -9,6 +9,14 @@ closure numba's cache under a name that stands for everything it depends on
 the sources of the integrators, the compiler versions), in
 ``<cache>/kernels``; a second process loads instead of compiling.
 
+Every file kept there is a checked cache file: a magic line and the SHA-256
+of the rest, verified before anything in it is unpickled (numba's index and
+data files of the kernels, :class:`CheckedCacheFile`; a kernel's IR parts,
+:func:`write_checked`, :func:`read_checked`).  A file that fails its check
+is removed with its entry, said in one line and compiled again
+(:func:`discard`); one that cannot be written (a full disk) is said, and
+what it would hold stays compiled for this process only (:func:`not_kept`).
+
 The cache directory is ``$KNIFEEDGE_CACHE_DIR`` if set, else
 ``$XDG_CACHE_HOME/knifeedge`` (default ``~/.cache/knifeedge``); when that is
 not usable, a per-user folder in the system temporary directory.
@@ -24,13 +32,11 @@ import pickle
 import stat
 import sys
 import tempfile
-import zlib
 from pathlib import Path
 
 import llvmlite
 import numba
 import numpy as np
-from numba.core import caching
 from numba.core.caching import CompileResultCacheImpl, FunctionCache, IndexDataCacheFile, _CacheLocator
 from numba.core.registry import CPUDispatcher
 
@@ -111,7 +117,7 @@ def _named(value):
         path = getattr(sys.modules.get(f.__module__), "__file__", None)
         if path is None or not Path(path).is_file():  # typed in a session or run by exec: by its code
             return ("function", f.__module__, f.__qualname__, _code_named(f))
-        return ("function", f.__module__, f.__qualname__, _file_sha256(path))
+        return ("function", f.__module__, f.__qualname__, hashlib.sha256(Path(path).read_bytes()).hexdigest())
     if isinstance(value, np.ndarray):
         return ("array", value.dtype.str, value.shape, value.tobytes())
     if isinstance(value, tuple):
@@ -131,10 +137,6 @@ def _code_named(f) -> tuple:
     read = tuple((n, _named(glob_[n])) for n in code.co_names if isinstance(glob_.get(n), (int, float, complex,
                                                                                             np.ndarray, CPUDispatcher)))
     return ("code", hashlib.sha256(marshal.dumps(code)).hexdigest(), read)
-
-
-def _file_sha256(path) -> str:
-    return hashlib.sha256(Path(path).read_bytes()).hexdigest() if path else ""
 
 
 def stamp(py_func) -> str:
@@ -233,30 +235,23 @@ def compiled(py_func, label: str, **options):
 
 
 def compiled_cfunc(py_func, signature, label: str):
-    """``numba.cfunc(signature)(py_func)`` (error model numpy), compiled now or loaded from the cache (as
-    :func:`compiled`)."""
+    """``numba.cfunc(signature)(py_func)`` (error model numpy), cached as :func:`compiled`; it compiles, or loads
+    from the cache, at its ``compile()``."""
     from numba.core import sigutils
     from numba.core.ccallback import CFunc
 
     py_func.__knifeedge_cache__ = (str(cache_dir() / "kernels"), f"{label}-{stamp(py_func)}")
     function = CFunc(py_func, sigutils.normalize_signature(signature), locals={}, options={"error_model": "numpy"})
     function._cache = KernelCache(py_func)
-    function.compile()
     return function
 
 
-def is_cached(dispatcher) -> bool:
-    """Whether the cache holds machine code of ``dispatcher`` (made by :func:`compiled` or :func:`compiled_cfunc`)."""
-    return dispatcher._cache.index_path().is_file()
+def is_cached(function) -> bool:
+    """Whether the cache holds machine code of ``function`` (made by :func:`compiled` or :func:`compiled_cfunc`)."""
+    return function._cache.index_path().is_file()
 
 
-def index_path(py_func, label: str) -> Path:
-    """The index file of :func:`compiled_cfunc` of ``py_func`` and ``label`` (it exists: the cache holds it)."""
-    tag = f"py{sys.version_info[0]}{sys.version_info[1]}{getattr(sys, 'abiflags', '')}"
-    return cache_dir() / "kernels" / f"{label}-{stamp(py_func)}.{tag}.nbi"
-
-
-#: the first bytes of the kernels' cache files, written by :class:`CheckedCacheFile`
+#: the first bytes of every checked cache file (numba's files of the kernels, the parts of :mod:`.irparts`)
 CHECKED_MAGIC = b"knifeedge checked numba cache\n"
 
 
@@ -267,15 +262,61 @@ def _checked(data: bytes) -> bytes:
 def _verified(data: bytes, path) -> bytes:
     """``data`` without its :func:`_checked` prefix; ValueError if the prefix or the checksum is wrong."""
     head = len(CHECKED_MAGIC) + 32
-    if not data.startswith(CHECKED_MAGIC) or hashlib.sha256(data[head:]).digest() != data[len(CHECKED_MAGIC):head]:
+    if not data.startswith(CHECKED_MAGIC):
+        raise ValueError(f"{path}: not a checked cache file of this version")
+    if hashlib.sha256(data[head:]).digest() != data[len(CHECKED_MAGIC):head]:
         raise ValueError(f"{path}: its checksum does not match its content")
     return data[head:]
 
 
+def write_checked(path: Path, payload, what: str) -> None:
+    """Keep ``payload`` in ``path`` as numba keeps a kernel's entries (pickled, :func:`_checked`), mode 0644
+    whatever the umask, written to a temporary file and renamed (a folder that cannot be written: :func:`not_kept`)."""
+    tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
+    try:
+        with open(os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o644), "wb") as f:
+            f.write(_checked(pickle.dumps(payload, protocol=4)))
+        os.replace(tmp, path)
+    except OSError as exc:
+        tmp.unlink(missing_ok=True)
+        not_kept(exc, path, what)
+
+
+def read_checked(path: Path):
+    """What :func:`write_checked` kept in ``path``, unpickled only after checking that the file is this user's
+    and no one else may write it, and its checksum; ValueError saying which check failed."""
+    st = os.lstat(path)
+    if not stat.S_ISREG(st.st_mode):
+        raise ValueError(f"{path}: not a plain file")
+    if hasattr(os, "getuid") and (st.st_uid != os.getuid() or st.st_mode & 0o022):
+        raise ValueError(f"{path}: owned by user id {st.st_uid} with mode {stat.S_IMODE(st.st_mode):o}: only this "
+                         "user's files that no one else may write are loaded")
+    return pickle.loads(_verified(path.read_bytes(), path))
+
+
+def not_kept(exc: OSError, path, what: str) -> None:
+    """Say in one line that ``what`` could not be written to ``path`` (a full disk said as such): it stays
+    compiled for this process only."""
+    why = "the disk is full" if exc.errno in (errno.ENOSPC, errno.EDQUOT) else f"{type(exc).__name__}: {exc}"
+    print(f"knifeedge: could not keep {what} in {path} ({why}); it stays compiled for this process only (free "
+          "some space, or set KNIFEEDGE_CACHE_DIR to a folder on another disk)", file=sys.stderr, flush=True)
+
+
+def discard(paths, problem, what: str) -> None:
+    """Remove the damaged cache files ``paths`` (``what`` says of which kind) and say so in one line: what
+    they held is compiled again."""
+    for f in paths:
+        Path(f).unlink(missing_ok=True)
+    print(f"knifeedge: discarded a damaged {what} {paths[0]} ({type(problem).__name__}: {problem}); compiling it "
+          "again", file=sys.stderr, flush=True)
+
+
 class CheckedCacheFile(IndexDataCacheFile):
     """numba's index-and-data cache file with a SHA-256 written with each file and verified before anything in
-    it is unpickled (the index's numba version too).  Private numba API used: ``_dump``, ``_save_index``,
-    ``_load_index``, ``_load_data``, ``_data_path``, ``_open_for_write``, ``_version``, ``_source_stamp``."""
+    it is unpickled (the index's numba version too).  A file that fails the check is discarded with its entry
+    (:func:`discard`; numba then compiles and saves it again); an entry that cannot be saved is said
+    (:func:`not_kept`).  Private numba API used: ``_dump``, ``_save_index``, ``_load_index``, ``_load_data``,
+    ``_data_path``, ``_open_for_write``, ``_index_path``, ``_version``, ``_source_stamp``."""
 
     def _dump(self, obj):
         return _checked(super()._dump(obj))
@@ -285,79 +326,34 @@ class CheckedCacheFile(IndexDataCacheFile):
         with self._open_for_write(self._index_path) as f:
             f.write(_checked(data))
 
-    def _load_index(self):
+    def save(self, key, data):
         try:
-            with open(self._index_path, "rb") as f:
-                raw = f.read()
+            super().save(key, data)
+        except OSError as exc:
+            not_kept(exc, self._index_path, "the compiled code")
+
+    def _read(self, path):
+        """The content of ``path`` without its checksum, or None: missing, or damaged (then discarded)."""
+        try:
+            with open(path, "rb") as f:
+                return _verified(f.read(), path)
         except FileNotFoundError:
+            return None
+        except (OSError, ValueError) as exc:
+            entry = [self._index_path, *glob.glob(f"{glob.escape(self._index_path[:-len('.nbi')])}.*.nbc")]
+            discard(entry, exc, "compiled-code cache entry")
+            return None
+
+    def _load_index(self):
+        data = self._read(self._index_path)
+        if data is None:
             return {}
-        version, _, data = _verified(raw, self._index_path).partition(b"\n")
+        version, _, data = data.partition(b"\n")
         if version != self._version.encode():
             return {}
         stamp_, overloads = pickle.loads(data)
         return overloads if stamp_ == self._source_stamp else {}
 
     def _load_data(self, name):
-        path = self._data_path(name)
-        with open(path, "rb") as f:
-            return pickle.loads(_verified(f.read(), path))
-
-
-#: errors numba's cache raises when one of its files is damaged (truncated, overwritten, unreadable)
-_DAMAGE = (EOFError, pickle.UnpicklingError, zlib.error, ValueError, TypeError, AttributeError, IndexError,
-           KeyError, OSError, ImportError)
-
-
-def damaged_cache_files(exc: BaseException) -> list:
-    """The numba cache files being read when ``exc`` was raised (empty if it did not come from the cache)."""
-    files = []
-    tb = exc.__traceback__
-    while tb is not None:
-        frame = tb.tb_frame
-        if frame.f_code.co_filename in (caching.__file__, __file__):
-            owner = frame.f_locals.get("self")
-            index = getattr(owner, "_index_path", None)
-            if index:
-                files.append(Path(index))
-            path = frame.f_locals.get("path")
-            if isinstance(path, (str, Path)) and str(path).endswith((".nbi", ".nbc")):
-                files.append(Path(path))
-        tb = tb.tb_next
-    return list(dict.fromkeys(files))
-
-
-#: errno values of a write that found no room
-_FULL = (errno.ENOSPC, errno.EDQUOT)
-
-
-def disk_full(exc: OSError, what: str) -> OSError:
-    """The error to raise when writing ``what`` to the cache found the disk (or the quota) full."""
-    where = exc.filename or cache_dir()
-    return OSError(exc.errno, f"the disk holding the compiled-code cache is full: could not write {what} to "
-                              f"{where}; free some space, or set KNIFEEDGE_CACHE_DIR to a folder on another disk")
-
-
-def call_repairing(fn, *args):
-    """``fn(*args)``, discarding damaged cache entries (and recompiling) instead of failing.
-
-    A cache file that cannot be read (truncated by a full disk or a killed
-    process, overwritten, or failing its checksum) is removed with the entry
-    it belongs to (its index and data files), the removal is said in one line
-    on stderr, and the call is retried, which compiles the function again.
-    """
-    for _ in range(16):
-        try:
-            return fn(*args)
-        except _DAMAGE as exc:
-            if isinstance(exc, OSError) and exc.errno in _FULL:
-                raise disk_full(exc, "the compiled code") from exc
-            files = damaged_cache_files(exc)
-            if not files:
-                raise
-            for f in files:
-                stem = f.name.split(".")[0]  # "<label>-<stamp>", its index and data files "<stem>.<python>[.k].nb?"
-                for entry in f.parent.glob(f"{glob.escape(stem)}.*.nb[ic]"):
-                    entry.unlink(missing_ok=True)
-            print(f"knifeedge: discarded a damaged compiled-code cache entry {files[0]} "
-                  f"({type(exc).__name__}: {exc}); compiling it again", file=sys.stderr, flush=True)
-    return fn(*args)
+        data = self._read(self._data_path(name))
+        return None if data is None else pickle.loads(data)

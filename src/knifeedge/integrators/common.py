@@ -116,12 +116,8 @@ def _interpolant_event(values):
         F, y, alt, p, ev, work = step
         if c >= 0:
             return interpolate(F, y, alt, x, c)
-        xm = 1.0 - x
         for i in range(y.size):
-            v = 0.0
-            for r in range(F.shape[0] - 1, -1, -1):
-                v = (v + F[r, i]) * (xm if alt[r] else x)
-            work[i] = y[i] + v
+            work[i] = interpolate(F, y, alt, x, i)
         return values(work, p, ev)[-1 - c]
 
     return event_at

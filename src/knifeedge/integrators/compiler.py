@@ -26,7 +26,6 @@ import os
 import pickle
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 from .._process import alive, start_time
@@ -88,7 +87,6 @@ class Pending:
 
     def __init__(self, module, path: Path, proc, started: bool):
         self.module, self.path, self.proc, self.started = module, path, proc, started
-        self.t_start = time.perf_counter()
 
     def ready(self) -> bool:
         """Whether the compiled code is in the cache (a cheap check: one file's existence)."""
@@ -135,10 +133,6 @@ def _holder(lock: Path) -> int | None:
     return pid if alive(pid, started) else None
 
 
-def _write_lock(lock: Path, pid: int) -> None:
-    lock.write_text(f"{pid} {start_time(pid) or '-'}")
-
-
 def start(model, method: str, kernel_module, arg_types: tuple) -> Pending:
     """Compile the kernel of ``method`` for ``model`` (``kernel_module``) for the argument types ``arg_types``
     (``kernel_module.argument_types(args)``: numba's types of its ``solve(*args)``) in a separate process.
@@ -163,7 +157,7 @@ def start(model, method: str, kernel_module, arg_types: tuple) -> Pending:
     with open(_log(path), "w") as err:
         proc = subprocess.Popen([sys.executable, "-c", _CHILD], stdin=subprocess.PIPE,
                                 stdout=subprocess.DEVNULL, stderr=err, env=env, start_new_session=True)
-    _write_lock(lock, proc.pid)
+    lock.write_text(f"{proc.pid} {start_time(proc.pid) or '-'}")
     proc.stdin.write(json.dumps(job).encode())
     proc.stdin.close()
     pending = Pending(kernel_module, path, proc, started=True)

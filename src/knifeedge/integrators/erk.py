@@ -22,8 +22,6 @@ interpolant.
 """
 from __future__ import annotations
 
-import ctypes
-
 import numpy as np
 from numba import carray, njit, types
 
@@ -31,7 +29,7 @@ from . import common as _c
 from . import fnptr as _fnptr
 from . import irparts as _irparts
 from .methods import erk_arrays
-from .cache import cache_dir, compiled, compiled_cfunc, digest, index_path, is_cached
+from .cache import cache_dir, compiled, compiled_cfunc, digest, is_cached
 from .common import EVENTS_PER_STEP, NEAR
 from .fnptr import call_f8, call_void
 
@@ -284,7 +282,7 @@ class AdaptiveKernel:
     interpolant (``dense``), all straight-line LLVM IR (:mod:`.irparts`) linked with the IR of the model's
     ``rhs_q_into`` and ``constants`` that the generated module carries (``LLVM_IR``, written at derive time;
     the right-hand side inlined into the stages), numba compiling the right-hand side only where the module
-    has no IR of it; and the event functions (a ``numba.cfunc``; a no-op from the IR library for a model
+    has no IR of it; and the event functions (a ``numba.cfunc``; address 0, never called, for a model
     without event functions).  All are compiled on first use (:meth:`parts`) and cached.
 
     Attributes: ``TABLEAU``, ``RHS_NAME``, ``N`` (state size), ``NV`` (event functions), ``NQ`` (size of
@@ -303,7 +301,7 @@ class AdaptiveKernel:
         stem = digest(tableau, tuple(vars(tab).values()), self._rhs, n_state, self.NQ)
         self.path = cache_dir() / "kernels" / f"erk-{tableau}-{model_module.__name__.rsplit('.', 1)[-1]}-{stem}"
         self.driver = driver(tableau)
-        self._events_index = index_path(self._events_py(), f"{self.path.name}-events") if self.NV else None
+        self._events = compiled_cfunc(self._events_py(), EVENTS_SIG, f"{self.path.name}-events") if self.NV else None
         self._parts = None
 
     def _rhs_cfunc(self):
@@ -313,7 +311,9 @@ class AdaptiveKernel:
             """``out = f(t, y)`` (``q`` = ``constants(p)`` has ``nq`` elements)."""
             rhs(t, carray(yp, (N,)), carray(qp, (nq,)), carray(outp, (N,)))
 
-        return compiled_cfunc(rhs_part, RHS_SIG, f"{self.path.name}-rhs")
+        function = compiled_cfunc(rhs_part, RHS_SIG, f"{self.path.name}-rhs")
+        function.compile()
+        return function
 
     def _events_py(self):
         event_values, N, NV = self.model.event_values, self.N, self.NV
@@ -334,15 +334,15 @@ class AdaptiveKernel:
             constants = None
             lib, addresses = _irparts.load_or_compile(self.path, self.TABLEAU, self.N, self.NQ, self.model,
                                                       self.RHS_NAME, self._rhs_cfunc)
-            attempt_address, dense_address, rhs_address = addresses[:3]
-            if addresses[3]:
-                constants = (np.int64(addresses[3]), ctypes.CFUNCTYPE(ctypes.c_int64)(addresses[4])())
+            attempt_address, dense_address, rhs_address, constants_address = addresses
+            if constants_address:  # with the number of parameters it reads
+                constants = (np.int64(constants_address), self.model.LLVM_IR_READS)
             kept = (lib,)  # kept alive: the integrator calls them by address
-            events_address = addresses[5]  # no event functions: a no-op, never called
-            if self.NV:
-                events_c = compiled_cfunc(self._events_py(), EVENTS_SIG, f"{self.path.name}-events")
-                kept += (events_c,)
-                events_address = events_c.address
+            events_address = 0  # no event functions: never called
+            if self._events is not None:
+                self._events.compile()
+                kept += (self._events,)
+                events_address = self._events.address
             fns = np.array([rhs_address, attempt_address, dense_address, events_address, self.NV], dtype=np.int64)
             self._parts = (kept, fns, constants)
         return self._parts[1]
@@ -367,7 +367,7 @@ class AdaptiveKernel:
         """Whether the cache holds the compiled parts and the integrator (later calls load them)."""
         if not _irparts.cache_file(self.path).is_file() or not is_cached(self.driver):
             return False
-        return self._events_index is None or self._events_index.is_file()
+        return self._events is None or is_cached(self._events)
 
     def arguments(self, t0, t1, y0, f0, p, control, request, out) -> tuple:
         """The integrator's arguments for the arguments of :meth:`solve`."""

@@ -1,6 +1,6 @@
 """Fixed-step kernel for any registered :class:`~knifeedge.integrators.methods.FixedMethod`.
 
-:func:`make_solve` returns the kernel of one method for one model: a numba
+:class:`FixedKernel` holds the kernel of one method for one model: a numba
 function whose closure holds the method's tableau and the state size as
 constants (so its loops unroll) and the model's compiled right-hand side
 (called directly, inlined by LLVM); cached across processes (:mod:`.cache`).
@@ -145,25 +145,31 @@ def _gauss(m, N: int, rhs):
     return njit(**_OPTIONS)(gauss)
 
 
-def make_solve(method: str, model_module, rhs_name: str, N: int):
-    """The compiled kernel ``solve`` of the fixed-step ``method`` for the right-hand side ``rhs_name`` of the
-    generated ``model_module`` on ``N`` states (see :func:`_solve_closure` for its arguments)."""
-    rhs, constants = getattr(model_module, rhs_name), model_module.constants
-    names = tuple(getattr(model_module, "EVENT_NAMES", ()))
-    function_ends, locate = None, _c.locator()
-    if names:
-        event_values = model_module.event_values
+class FixedKernel:
+    """The kernel of the fixed-step ``method`` for the right-hand side ``rhs_name`` of the generated
+    ``model_module`` on ``N`` states: :attr:`solve` (see :func:`_solve_closure` for its arguments; compiled at
+    its first call, or loaded from the cache)."""
 
-        def values_(s, p, ev):
-            """The model's event functions at ``s``."""
-            return event_values(s, p)
+    def __init__(self, method: str, model_module, rhs_name: str, N: int):
+        rhs, constants = getattr(model_module, rhs_name), model_module.constants
+        names = tuple(getattr(model_module, "EVENT_NAMES", ()))
+        function_ends, locate = None, _c.locator()
+        if names:
+            event_values = model_module.event_values
 
-        values = njit(**_OPTIONS)(values_)
-        function_ends, locate = _c.function_ends(values), _c.locator(values)
-    py = _solve_closure(get(method, "fixed"), N, rhs, constants, _increments(method, N, rhs), bool(names),
-                        function_ends, locate)
-    label = f"fixed-{method}-{model_module.__name__.rsplit('.', 1)[-1]}-{rhs_name}"
-    return compiled(py, label)
+            def values_(s, p, ev):
+                """The model's event functions at ``s``."""
+                return event_values(s, p)
+
+            values = njit(**_OPTIONS)(values_)
+            function_ends, locate = _c.function_ends(values), _c.locator(values)
+        py = _solve_closure(get(method, "fixed"), N, rhs, constants, _increments(method, N, rhs), bool(names),
+                            function_ends, locate)
+        self.solve = compiled(py, f"fixed-{method}-{model_module.__name__.rsplit('.', 1)[-1]}-{rhs_name}")
+
+    def is_compiled(self) -> bool:
+        """Whether the cache holds the compiled :attr:`solve`."""
+        return is_cached(self.solve)
 
 
 def _start_closure(N: int, S: int, rhs):
@@ -326,15 +332,3 @@ def _solve_closure(m, N: int, rhs, constants, increments, HAS_FUN, function_ends
         return n_out, n_ev, status, nfev, n_acc, 0, t, y, f_old, float(step)
 
     return solve
-
-
-class FixedKernel:
-    """The kernel of a fixed-step method for one model: :attr:`solve` (compiled at its first call, or loaded
-    from the cache)."""
-
-    def __init__(self, method: str, model_module, rhs_name: str, n_state: int):
-        self.solve = make_solve(method, model_module, rhs_name, n_state)
-
-    def is_compiled(self) -> bool:
-        """Whether the cache holds the compiled :attr:`solve`."""
-        return is_cached(self.solve)

@@ -28,26 +28,21 @@ its extra stages lie inside a step whose own stages all succeeded.)
 
 The compiled parts are kept in one file per kernel and machine
 (:func:`cache_file`: numba's serialized object code), so that a second
-process loads them in milliseconds (:func:`load_or_compile`).  The file is
-not a pickle: a fixed magic line, a JSON header (the numba and llvmlite
-versions, the machine, the library's name, the sizes and the SHA-256 of the
-two blobs) and the blobs, the object code and the bitcode numba serializes
-(:func:`write_parts`, :func:`read_parts`).  Nothing in it is run before the
-header, the sizes and the checksum have been verified, and only files of
-this user that no one else may write are read.
+process loads them in milliseconds (:func:`load_or_compile`).  The file is a
+checked cache file, as numba's files of the kernels (:func:`.cache.write_checked`:
+a SHA-256 verified before anything in it is unpickled, only files of this
+user that no one else may write are read), holding the compilers' versions
+and the machine (:func:`_key`) beside the object code; a file of another
+key, or one that fails a check, is removed, said in one line and compiled again.
 """
 from __future__ import annotations
 
-import errno
 import hashlib
-import json
-import os
-import stat
 import struct
-import sys
 from pathlib import Path
 from types import SimpleNamespace
 
+from .cache import discard, read_checked, write_checked
 from .methods import erk_arrays
 
 #: the C signatures of the two parts (called by the integrator of :mod:`.erk`)
@@ -57,9 +52,7 @@ DENSE_ARGS = ("double %t", "double %h", "ptr %ws", "i64 %nq")
 #: the flags of every floating-point operation of the two parts (numba's ``fastmath={"contract"}``)
 FLAGS = "contract"
 #: the version of what this module writes (part of the cache key)
-FORMAT = 4
-#: the first bytes of a compiled-parts file
-MAGIC = b"knifeedge compiled parts\n"
+FORMAT = 5
 _NAN = "0x7FF8000000000000"
 
 
@@ -301,37 +294,36 @@ def _codegen():
     return cpu_target.target_context.codegen()
 
 
-def cache_file(kernel_path) -> Path:
-    """Where the compiled parts of the kernel ``kernel_path`` (``AdaptiveKernel.path``, a name in the cache
-    folder) are kept on this machine: named after it and a hash of the machine (its CPU name and features)
-    and of the compiler versions."""
+def _key() -> tuple:
+    """What compiled parts depend on beside their IR: this module's format, numba, llvmlite and the machine."""
     import llvmlite
     import numba
 
-    machine = repr((FORMAT, numba.__version__, llvmlite.__version__, _codegen().magic_tuple()))
+    return (FORMAT, numba.__version__, llvmlite.__version__, _codegen().magic_tuple())
+
+
+def cache_file(kernel_path) -> Path:
+    """Where the compiled parts of the kernel ``kernel_path`` (``AdaptiveKernel.path``, a name in the cache
+    folder) are kept on this machine: named after it and a hash of :func:`_key`."""
     path = Path(kernel_path)
-    return path.with_name(f"{path.stem}.parts-{hashlib.sha256(machine.encode()).hexdigest()[:16]}.nbo")
+    return path.with_name(f"{path.stem}.parts-{hashlib.sha256(repr(_key()).encode()).hexdigest()[:16]}.nbo")
 
 
 def symbols(kernel_path) -> tuple:
-    """The symbols of ``attempt``, ``dense``, the C-callable ``rhs``, then of ``constants``, of the number of
-    parameters it reads and of an ``events`` part that does nothing, for the kernel ``kernel_path``
-    (unique per module; the first three are in every parts library, the others where they could be written)."""
+    """The symbols of ``attempt``, ``dense``, the C-callable ``rhs`` and ``constants`` for the kernel
+    ``kernel_path`` (unique per module; the first three are in every parts library, ``constants`` where the
+    model carries its IR)."""
     stem = Path(kernel_path).stem
     return (f"knifeedge.attempt.{stem}", f"knifeedge.dense.{stem}", f"knifeedge.rhs.{stem}",
-            f"knifeedge.constants.{stem}", f"knifeedge.constants_reads.{stem}", f"knifeedge.no_events.{stem}")
+            f"knifeedge.constants.{stem}")
 
 
-def _extras_ir(names: tuple, constants: str, reads: int) -> str:
-    """The model's ``constants`` (its IR from the generated module, or "") exported as ``names[3]``, with the
-    function returning ``reads``, and the ``events`` part that does nothing (for a model without event
-    functions: the integrator never calls it)."""
-    text = f'define void @"{names[5]}"(ptr %s, ptr %p, i64 %n_p, ptr %out) {{\nentry:\n  ret void\n}}\n'
-    if constants:
-        text += (constants + f'define void @"{names[3]}"(ptr %p, ptr %q) {{\nentry:\n'
-                 f'  call void @"constants"(ptr %p, ptr %q)\n  ret void\n}}\n'
-                 f'define i64 @"{names[4]}"() {{\nentry:\n  ret i64 {reads}\n}}\n')
-    return text
+def _constants_ir(name: str, constants: str) -> str:
+    """The model's ``constants`` (its IR from the generated module, or "") exported as ``name``."""
+    if not constants:
+        return ""
+    return (constants + f'define void @"{name}"(ptr %p, ptr %q) {{\nentry:\n'
+            f'  call void @"constants"(ptr %p, ptr %q)\n  ret void\n}}\n')
 
 
 def c_wrapper_ir(native: str, symbol: str) -> str:
@@ -344,7 +336,7 @@ def c_wrapper_ir(native: str, symbol: str) -> str:
 
 
 def _load(path: Path, names: tuple):
-    """``(library, addresses)`` kept in ``path``, or None (a file that cannot be used is removed, said on stderr)."""
+    """``(library, addresses)`` kept in ``path``, or None (a file that cannot be used is discarded)."""
     from numba.core.compiler_lock import global_compiler_lock
 
     if not path.exists():
@@ -354,22 +346,18 @@ def _load(path: Path, names: tuple):
         with global_compiler_lock:
             lib = _codegen().unserialize_library(serialized)
             addresses = [lib.get_pointer_to_function(x) for x in names]
-        if all(addresses[:3]) and addresses[5] and bool(addresses[3]) == bool(addresses[4]):
+        if all(addresses[:3]):
             return lib, addresses
-        problem = "it lacks the parts' symbols"
+        raise ValueError("it lacks the parts' symbols")
     except Exception as exc:  # noqa: BLE001 - any unreadable file is compiled again
-        problem = f"{type(exc).__name__}: {exc}" if not isinstance(exc, _Refused) else str(exc)
-    path.unlink(missing_ok=True)
-    print(f"knifeedge: discarded a damaged compiled-parts cache file {path} ({problem}); compiling it again",
-          file=sys.stderr, flush=True)
+        discard([path], exc, "compiled-parts cache file")
     return None
 
 
 def load_or_compile(kernel_path, tableau: str, n: int, nq: int, model, rhs_name: str, rhs_cfunc) -> tuple:
     """``(library, addresses)`` of the parts of the kernel ``kernel_path`` (``AdaptiveKernel.path``, a name in
     the cache folder), loaded from :func:`cache_file`, or compiled from :func:`module_ir` and saved there;
-    ``addresses`` are those of :func:`symbols` (0 for ``constants`` and its count where the model has no IR of
-    it).
+    ``addresses`` are those of :func:`symbols` (0 for ``constants`` where the model has no IR of it).
 
     The right-hand side ``rhs_name`` and ``constants`` are the IR the generated ``model`` carries
     (``model.LLVM_IR``, written at derive time by ``derivation/ir_emit.py``); a right-hand side it does not
@@ -390,78 +378,24 @@ def load_or_compile(kernel_path, tableau: str, n: int, nq: int, model, rhs_name:
         if not native.startswith("cfunc."):
             raise RuntimeError(f"unexpected symbol of a compiled C callback: {native!r}") from None
         native, definition, link = native[len("cfunc."):], "", [compiled._library]
-    extras = _extras_ir(names, ir.get("constants", ""), getattr(model, "LLVM_IR_READS", 0))
+    extras = _constants_ir(names[3], ir.get("constants", ""))
     text = module_ir(erk_arrays(tableau), n, nq, names[:3], native, definition, extras)
     lib = compile_library(text, f"knifeedge_parts_{Path(kernel_path).stem}", link)
-    addresses = [lib.get_pointer_to_function(x) if i < 3 or i == 5 or "constants" in ir else 0
-                 for i, x in enumerate(names)]
+    addresses = [lib.get_pointer_to_function(x) for x in names]
     write_parts(path, lib.serialize_using_object_code())
     return lib, addresses
 
 
-class _Refused(ValueError):
-    """A compiled-parts file that fails a check before anything in it is used."""
-
-
-def _header(name: str, blobs: tuple) -> dict:
-    import llvmlite
-    import numba
-
-    return {"format": FORMAT, "numba": numba.__version__, "llvmlite": llvmlite.__version__,
-            "machine": [str(x) for x in _codegen().magic_tuple()], "name": name, "kind": "object",
-            "sizes": [len(b) for b in blobs], "sha256": hashlib.sha256(b"".join(blobs)).hexdigest()}
-
-
 def write_parts(path: Path, serialized: tuple) -> None:
-    """Keep numba's ``serialize_using_object_code()`` of the parts (``(name, "object", (object code,
-    bitcode))``) in ``path``: magic line, header length (8 bytes), JSON header, the two blobs; written to a
-    temporary file and renamed.  A folder that cannot be written leaves the parts compiled for this process only,
-    said in one line (a full disk said as such)."""
-    name, kind, blobs = serialized
-    if kind != "object" or len(blobs) != 2 or not all(isinstance(b, bytes) for b in blobs):
-        raise RuntimeError(f"unexpected serialization of compiled parts by numba: kind {kind!r}")
-    header = json.dumps(_header(name, tuple(blobs)), sort_keys=True).encode()
-    tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
-    try:
-        with open(os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o644), "wb") as f:  # (whatever the umask)
-            f.write(MAGIC + struct.pack("<Q", len(header)) + header)
-            f.write(blobs[0])
-            f.write(blobs[1])
-        os.replace(tmp, path)
-    except OSError as exc:  # a read-only cache or a full disk: the parts stay compiled for this process only
-        tmp.unlink(missing_ok=True)
-        why = ("the disk is full" if exc.errno in (errno.ENOSPC, errno.EDQUOT)
-               else f"{type(exc).__name__}: {exc}")
-        print(f"knifeedge: could not keep the compiled parts in {path} ({why}); they stay compiled for this "
-              "process only", file=sys.stderr, flush=True)
+    """Keep numba's ``serialize_using_object_code()`` of the parts in ``path`` with :func:`_key` (a checked
+    cache file, :func:`.cache.write_checked`)."""
+    write_checked(path, (_key(), serialized), "the compiled parts")
 
 
 def read_parts(path: Path) -> tuple:
-    """numba's serialized parts kept in ``path`` by :func:`write_parts`, after checking that the file is this
-    user's and no one else may write it, and that its header (format, numba and llvmlite versions, machine),
-    sizes and SHA-256 are those expected; raises :class:`_Refused` saying which check failed."""
-    st = os.lstat(path)
-    if not stat.S_ISREG(st.st_mode):
-        raise _Refused("not a plain file")
-    if hasattr(os, "getuid") and (st.st_uid != os.getuid() or st.st_mode & 0o022):
-        raise _Refused(f"owned by user id {st.st_uid} with mode {stat.S_IMODE(st.st_mode):o}: "
-                       "only this user's files that no one else may write are loaded")
-    data = path.read_bytes()
-    if not data.startswith(MAGIC) or len(data) < len(MAGIC) + 8:
-        raise _Refused("not a compiled-parts file of this version")
-    start = len(MAGIC) + 8
-    (n,) = struct.unpack("<Q", data[len(MAGIC):start])
-    try:
-        header = json.loads(data[start:start + n])
-        sizes = [int(x) for x in header["sizes"]]
-    except (ValueError, KeyError, TypeError):
-        raise _Refused("its header cannot be read") from None
-    body = data[start + n:]
-    if len(sizes) != 2 or min(sizes) < 0 or sum(sizes) != len(body):
-        raise _Refused(f"its size does not match its header ({len(body)} bytes for {sizes})")
-    expected = _header(header.get("name", ""), (body[:sizes[0]], body[sizes[0]:]))
-    for key in ("format", "numba", "llvmlite", "machine", "kind", "sha256"):
-        if header.get(key) != expected[key]:
-            raise _Refused(f"its {key} is {header.get(key)!r}, expected {expected[key]!r}"
-                           if key != "sha256" else "its checksum does not match its content")
-    return header["name"], "object", (body[:sizes[0]], body[sizes[0]:])
+    """numba's serialized parts kept in ``path`` by :func:`write_parts` (:func:`.cache.read_checked`); ValueError
+    if they were compiled with another :func:`_key`."""
+    key, serialized = read_checked(path)
+    if key != _key():
+        raise ValueError(f"{path}: compiled by another compiler or for another machine ({key!r})")
+    return serialized
