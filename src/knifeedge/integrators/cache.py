@@ -10,10 +10,10 @@ the sources of the integrators, the compiler versions), in
 ``<cache>/kernels``; a second process loads instead of compiling.
 
 Every file kept there is a checked cache file: a magic line and the SHA-256
-of the rest, verified before anything in it is unpickled (numba's index and
-data files of the kernels, :class:`CheckedCacheFile`; a kernel's IR parts,
-:func:`write_checked`, :func:`read_checked`).  A file that fails its check
-is removed with its entry, said in one line and compiled again
+of the rest, verified before anything in it is read (numba's index and data
+files of the kernels, numba's pickles, :class:`CheckedCacheFile`; a kernel's
+IR parts, no pickle, :func:`write_checked`, :func:`read_checked`).  A file
+that fails its check is removed with its entry, said in one line and compiled again
 (:func:`discard`); one that cannot be written (a full disk) is said, and
 what it would hold stays compiled for this process only (:func:`not_kept`).
 
@@ -269,29 +269,29 @@ def _verified(data: bytes, path) -> bytes:
     return data[head:]
 
 
-def write_checked(path: Path, payload, what: str) -> None:
-    """Keep ``payload`` in ``path`` as numba keeps a kernel's entries (pickled, :func:`_checked`), mode 0644
+def write_checked(path: Path, data: bytes, what: str) -> None:
+    """Keep the bytes ``data`` in ``path`` as numba's entries of a kernel are kept (:func:`_checked`), mode 0644
     whatever the umask, written to a temporary file and renamed (a folder that cannot be written: :func:`not_kept`)."""
     tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
     try:
         with open(os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o644), "wb") as f:
-            f.write(_checked(pickle.dumps(payload, protocol=4)))
+            f.write(_checked(data))
         os.replace(tmp, path)
     except OSError as exc:
         tmp.unlink(missing_ok=True)
         not_kept(exc, path, what)
 
 
-def read_checked(path: Path):
-    """What :func:`write_checked` kept in ``path``, unpickled only after checking that the file is this user's
-    and no one else may write it, and its checksum; ValueError saying which check failed."""
+def read_checked(path: Path) -> bytes:
+    """The bytes :func:`write_checked` kept in ``path``, after checking that the file is this user's and no one
+    else may write it, and its checksum; ValueError saying which check failed."""
     st = os.lstat(path)
     if not stat.S_ISREG(st.st_mode):
         raise ValueError(f"{path}: not a plain file")
     if hasattr(os, "getuid") and (st.st_uid != os.getuid() or st.st_mode & 0o022):
         raise ValueError(f"{path}: owned by user id {st.st_uid} with mode {stat.S_IMODE(st.st_mode):o}: only this "
                          "user's files that no one else may write are loaded")
-    return pickle.loads(_verified(path.read_bytes(), path))
+    return _verified(path.read_bytes(), path)
 
 
 def not_kept(exc: OSError, path, what: str) -> None:

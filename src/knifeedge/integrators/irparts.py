@@ -30,14 +30,16 @@ The compiled parts are kept in one file per kernel and machine
 (:func:`cache_file`: numba's serialized object code), so that a second
 process loads them in milliseconds (:func:`load_or_compile`).  The file is a
 checked cache file, as numba's files of the kernels (:func:`.cache.write_checked`:
-a SHA-256 verified before anything in it is unpickled, only files of this
-user that no one else may write are read), holding the compilers' versions
-and the machine (:func:`_key`) beside the object code; a file of another
+a SHA-256 verified before anything in it is read, only files of this user
+that no one else may write are read), and no pickle: a JSON line with the
+compilers' versions and the machine (:func:`_key`) and the sizes of numba's
+two blobs (object code, bitcode), then the blobs; a file of another
 key, or one that fails a check, is removed, said in one line and compiled again.
 """
 from __future__ import annotations
 
 import hashlib
+import json
 import struct
 from pathlib import Path
 from types import SimpleNamespace
@@ -387,15 +389,26 @@ def load_or_compile(kernel_path, tableau: str, n: int, nq: int, model, rhs_name:
 
 
 def write_parts(path: Path, serialized: tuple) -> None:
-    """Keep numba's ``serialize_using_object_code()`` of the parts in ``path`` with :func:`_key` (a checked
-    cache file, :func:`.cache.write_checked`)."""
-    write_checked(path, (_key(), serialized), "the compiled parts")
+    """Keep numba's ``serialize_using_object_code()`` of the parts, ``(name, "object", (object code, bitcode))``,
+    in ``path``: a checked cache file (:func:`.cache.write_checked`) holding a JSON line (:func:`_key`, the name,
+    the two blobs' sizes) and the blobs, no pickle."""
+    name, kind, (code, bitcode) = serialized
+    head = {"key": _key(), "name": name, "kind": kind, "sizes": [len(code), len(bitcode)]}
+    write_checked(path, json.dumps(head).encode() + b"\n" + code + bitcode, "the compiled parts")
 
 
 def read_parts(path: Path) -> tuple:
     """numba's serialized parts kept in ``path`` by :func:`write_parts` (:func:`.cache.read_checked`); ValueError
-    if they were compiled with another :func:`_key`."""
-    key, serialized = read_checked(path)
-    if key != _key():
+    if they were compiled with another :func:`_key` or the sizes do not add up."""
+    data = read_checked(path)
+    line, _, blobs = data.partition(b"\n")
+    try:
+        head = json.loads(line)
+        key, sizes = head["key"], head["sizes"]
+    except (ValueError, KeyError, TypeError):
+        raise ValueError(f"{path}: its header is not the parts' header") from None
+    if key != json.loads(json.dumps(_key())):
         raise ValueError(f"{path}: compiled by another compiler or for another machine ({key!r})")
-    return serialized
+    if sum(sizes) != len(blobs):
+        raise ValueError(f"{path}: its blobs are not the sizes its header says")
+    return head["name"], head["kind"], (blobs[:sizes[0]], blobs[sizes[0]:])
