@@ -156,7 +156,10 @@ def test_scipy_methods_stop_at_max_steps_and_say_so(two, method):
     assert not r.success and r.nsteps == 25 and r.t[-1] < 1e12
 
 
-@pytest.mark.parametrize("method", SCIPY)
+# Radau and BDF (~2 s of CPU each) in the slow tier: LSODA takes the generated Jacobian as they do, RK45 and DOP853
+# the explicit path
+@pytest.mark.parametrize("method", [pytest.param(m, marks=pytest.mark.slow) if m in ("scipy:Radau", "scipy:BDF") else m
+                                    for m in SCIPY])
 def test_scipy_methods_stepped_here_agree_with_solve_ivp(method):
     """Stepping SciPy's solver ourselves gives solve_ivp's output and events (the same steps, the same
     dense output, the same root finder), with every step stored and at `t_eval`: the single-mode scene

@@ -73,15 +73,30 @@ def test_the_numeric_pendulum_has_the_exact_period_over_many_periods(pendulums):
     assert np.ptp(r.energy) < 1e-9 * GV * LV
 
 
-def test_closed_form_and_numeric_elimination_agree_off_the_rod(pendulums):
-    """At random states (off the rod: the held rate of y differs from the exact one) every function agrees."""
-    symbolic, numeric = pendulums
+def _off_the_rod(n: int):
     rng = np.random.default_rng(3)
+    for _ in range(n):
+        yield np.array([rng.uniform(-0.5, 0.5), rng.uniform(-0.9, -0.5), rng.uniform(-2, 2)])
+
+
+def test_closed_form_and_numeric_elimination_agree_off_the_rod(pendulums):
+    """At random states (off the rod: the held rate of y differs from the exact one) every function agrees.  The
+    Jacobians are compared as their Python bodies (``py_func``, as tests/test_jacobian.py does: compiling the
+    numeric one costs ~4 s of CPU); the compiled ones in the slow tier, below."""
+    symbolic, numeric = pendulums
     p = numeric.params(g=GV, l=LV)
-    for _ in range(20):
-        s = np.array([rng.uniform(-0.5, 0.5), rng.uniform(-0.9, -0.5), rng.uniform(-2, 2)])
+    for s in _off_the_rod(20):
         np.testing.assert_allclose(numeric.module.rhs(0.0, s, p), symbolic.module.rhs(0.0, s, p),
                                    rtol=1e-12, atol=1e-12)
         np.testing.assert_allclose(numeric.module.multipliers(s, p), symbolic.module.multipliers(s, p),
                                    rtol=1e-12, atol=1e-12)
+        np.testing.assert_allclose(numeric.module.jacobian.py_func(s, p), symbolic.module.jacobian.py_func(s, p),
+                                   rtol=1e-11, atol=1e-11)
+
+
+@pytest.mark.slow  # compiles the numeric model's Jacobian (~4 s of CPU); its Python body: the check above
+def test_compiled_jacobians_agree_off_the_rod(pendulums):
+    symbolic, numeric = pendulums
+    p = numeric.params(g=GV, l=LV)
+    for s in _off_the_rod(20):
         np.testing.assert_allclose(numeric.jacobian(s, p), symbolic.jacobian(s, p), rtol=1e-11, atol=1e-11)

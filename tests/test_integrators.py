@@ -126,15 +126,23 @@ def test_pose_model_matches_scipy():
 
 # -- fixed-step methods: orders and reversibility --------------------------------
 # implicit midpoint and Gauss 4 in the slow tier: each is a kernel of its own (3 s to compile) that no other
-# check of the default tier uses; RK4 and Gauss 6 are compiled for this model by other checks anyway
-@pytest.mark.parametrize("method,h,order", [("RK4", 0.05, 4),
-                                            pytest.param("implicit_midpoint", 0.025, 2, marks=pytest.mark.slow),
-                                            pytest.param("gauss4", 0.1, 4, marks=pytest.mark.slow),
-                                            ("gauss6", 0.2, 6)])
-def test_fixed_step_order(method, h, order):
-    """Halving the step divides the global error by 2^order (single mode, large tilt: nonlinear)."""
-    m, p = _single()
-    y0 = dict(theta=0.3, theta_dot=0.0, phi_dot=0.5)
+# check of the default tier uses; RK4 on the single mode and Gauss 6 on the two-mode model are compiled by other
+# checks anyway (Gauss 6 on the single mode in the slow tier: a kernel of its own)
+TWO_LARGE = dict(theta1=0.3, theta2=0.2, theta1_dot=0.0, theta2_dot=0.0, phi_dot=0.5)
+
+
+@pytest.mark.parametrize("method,h,order,model", [("RK4", 0.05, 4, "single"),
+                                                  pytest.param("implicit_midpoint", 0.025, 2, "single",
+                                                               marks=pytest.mark.slow),
+                                                  pytest.param("gauss4", 0.1, 4, "single", marks=pytest.mark.slow),
+                                                  pytest.param("gauss6", 0.2, 6, "single", marks=pytest.mark.slow),
+                                                  pytest.param("gauss6", 0.2, 6, "two",
+                                                               marks=pytest.mark.xdist_group("gauss6_two_mode"))])
+def test_fixed_step_order(method, h, order, model):
+    """Halving the step divides the global error by 2^order (single mode or two-mode model, large tilts:
+    nonlinear)."""
+    m, p = _single() if model == "single" else _two()
+    y0 = dict(theta=0.3, theta_dot=0.0, phi_dot=0.5) if model == "single" else TWO_LARGE
     ref = ke.simulate(m, y0, (0.0, 20.0), p, method="DOP853", rtol=1e-13, atol=1e-16, t_eval=[20.0]).y[:, -1]
     e1, e2 = (np.abs(ke.simulate(m, y0, (0.0, 20.0), p, method=method, h=hh, t_eval=[20.0]).y[:, -1] - ref).max()
               for hh in (h, h / 2))

@@ -260,6 +260,7 @@ def test_euler_angle_lagrangian_through_the_engine_gives_the_same_accelerations(
     assert err < 1e-20 * max(abs(sp.N(b, 30)) for b in mine)
 
 
+@pytest.mark.xdist_group("celt")  # the celt's amplitude and full right-hand sides: compiled once, in one worker
 def test_docs_snippets_run(tmp_path, monkeypatch):
     """Every Python block of docs/rigid-bodies.md runs as pasted."""
     import re
@@ -402,6 +403,7 @@ def test_knife_edge_vs_celt_scene_measures_the_spin_dependence():
 SMALL_N0 = (1e-5, 1e-5, 1.0)
 
 
+@pytest.mark.xdist_group("celt")
 def test_celt_reduced_is_the_small_tilt_truncation_of_the_full_model():
     """The reduced celt (derivation/rigid_small.py) against the full model (independent: the exact rigid-body
     equations): with the tilts and rocking rates scaled by eps, its rates differ by O(eps^3), its spin
@@ -421,6 +423,7 @@ def test_celt_reduced_is_the_small_tilt_truncation_of_the_full_model():
     np.testing.assert_allclose(order, [3, 3, 3, 3, 4], atol=0.05)
 
 
+@pytest.mark.xdist_group("celt")
 def test_celt_amplitude_growth_rates_are_the_linear_stability_of_the_reduced_model():
     """Averaged growth rates lambda_k omega_z - d_k sigma (amplitude fidelity) against the eigenvalues of the
     reduced model linearized about the upright spin (numerical Jacobian; Walker's linear stability, see

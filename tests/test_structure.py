@@ -20,6 +20,12 @@ LONG_FUNCTIONS_ALLOWED = {
 }
 
 
+#: one worker parses the tree for the checks that read the import graph or the long functions (~2 s of CPU each
+#: time); six checks, no more than the groups that compile DOP853 and the Lyapunov loop (xdist sends the largest
+#: groups first, ties in the order collected)
+STRUCTURE = pytest.mark.xdist_group("structure")
+
+
 @pytest.fixture(scope="module")
 def graph():
     return structure.graph()
@@ -50,6 +56,7 @@ def test_the_checker_sees_imports_inside_functions_and_cycles(tmp_path):
     assert structure.cycles(structure.graph(tmp_path)) == []
 
 
+@STRUCTURE
 def test_no_import_cycles_but_the_integrators_listed(graph):
     """derivation -> generated -> models -> integrators -> simulate -> sweep/scenes/... -> cli: no cycle anywhere
     (imports inside functions count), once the integrators' listed imports are left out."""
@@ -57,6 +64,7 @@ def test_no_import_cycles_but_the_integrators_listed(graph):
     assert structure.cycles(rest) == []
 
 
+@STRUCTURE
 def test_imports_follow_the_layers(graph):
     """derivation -> generated -> models -> integrators -> simulate -> sweep/scenes/figures/animation -> cli: a
     module imports nothing of a higher layer (but the integrators' listed imports)."""
@@ -67,12 +75,14 @@ def test_imports_follow_the_layers(graph):
         structure.layer("knifeedge.newcomer")
 
 
+@STRUCTURE
 def test_the_listed_integrator_imports_still_exist(graph):
     """An import of INTEGRATOR_CYCLE_IMPORTS that is gone is removed from the list (the list only shrinks)."""
     gone = [edge for edge in sorted(INTEGRATOR_CYCLE_IMPORTS) if edge[1] not in graph.get(edge[0], ())]
     assert gone == [], f"remove {gone} from INTEGRATOR_CYCLE_IMPORTS"
 
 
+@STRUCTURE
 def test_the_derivation_has_no_import_cycle(graph):
     derive = {m: {t for t in ts if t.startswith("knifeedge.derive")} for m, ts in graph.items()
               if m.startswith("knifeedge.derive")}
@@ -82,10 +92,12 @@ def test_the_derivation_has_no_import_cycle(graph):
     assert runtime == [], "the runtime imports the derivation (SymPy)"
 
 
+@STRUCTURE
 def test_no_new_function_over_80_lines(long_functions):
     assert sorted(long_functions - LONG_FUNCTIONS_ALLOWED) == [], "split them by meaning (or keep them under 80 lines)"
 
 
+@STRUCTURE
 def test_the_long_functions_allowed_are_still_long(long_functions):
     """A function of LONG_FUNCTIONS_ALLOWED that was shortened (or removed) leaves the list."""
     assert sorted(LONG_FUNCTIONS_ALLOWED - long_functions) == [], "remove them from LONG_FUNCTIONS_ALLOWED"
