@@ -180,13 +180,25 @@ def test_on_an_integrable_body_the_exponents_fall_like_log_t_over_t():
     assert largest[1e4] / largest[1e3] == pytest.approx(expected, rel=0.3)
 
 
-def test_the_matrix_exponential_is_scipys():
+@pytest.fixture(params=[pytest.param("compiled", marks=pytest.mark.slow), "python"])
+def magnus(request, monkeypatch):
+    """``knifeedge.magnus`` compiled (slow tier), or with every compiled function replaced by its Python body (the
+    same code; the default tier then compiles none of it, ~6 s of CPU cold: the compiled functions also run in
+    the slow tier's Magnus-loop checks)."""
+    module = importlib.import_module("knifeedge.magnus")
+    if request.param == "python":
+        for name, f in list(vars(module).items()):
+            if hasattr(f, "py_func"):
+                monkeypatch.setattr(module, name, f.py_func)
+    return module
+
+
+def test_the_matrix_exponential_is_scipys(magnus):
     """``magnus.expm`` (scaling and squaring, [13/13] Pade, after balancing by powers of 2) against
     ``scipy.linalg.expm`` on matrices from the round-off scale to norms of hundreds, and on a badly scaled one like
     the celt's Jacobian (tilts against rates)."""
     from scipy.linalg import expm as scipy_expm
 
-    magnus = importlib.import_module("knifeedge.magnus")
     rng = np.random.default_rng(3)
     out, W, d = np.empty((7, 7)), np.empty((6, 7, 7)), np.empty(7)
     scaling = np.diag(2.0 ** np.arange(-4, 3))
@@ -201,13 +213,12 @@ def test_the_matrix_exponential_is_scipys():
             np.testing.assert_array_equal(B, A / d[:, None] * d[None, :])
 
 
-def test_the_magnus_step_is_of_sixth_order_with_a_fifth_order_error_estimate():
+def test_the_magnus_step_is_of_sixth_order_with_a_fifth_order_error_estimate(magnus):
     """One step of ``dV/dt = A(t) V`` (a smooth, non-commuting A(t)) against SciPy's DOP853 at rtol 1e-13: halving
     the step divides the error by about 2^7 (local error of a sixth-order method) and the estimate (Omega6 -
     Omega4) V by about 2^5 (the fourth-order method's local error), Blanes, Casas & Ros (2000)."""
     from scipy.integrate import solve_ivp
 
-    magnus = importlib.import_module("knifeedge.magnus")
     rng = np.random.default_rng(0)
     n = 5
     A0, A1, A2 = (rng.standard_normal((n, n)) for _ in range(3))
