@@ -272,3 +272,30 @@ def test_a_kernel_loaded_from_the_cache_keeps_its_own_closures(tmp_path):
             args = args[:3] + args[5:]
         want = select_initial_step(*args)
         assert got[method] == pytest.approx(want, rel=1e-12), method
+
+
+@pytest.mark.slow
+def test_a_damaged_file_of_numbas_own_cache_is_discarded_and_compiled_again(tmp_path):
+    """The kernels' helpers and the generated functions keep numba's plain cache files (``cache=True``, here in
+    NUMBA_CACHE_DIR): one truncated is discarded with its entry, said in one line, compiled again, and the run
+    gives the same answer (without the repair numba raises UnpicklingError)."""
+    code = (
+        "import knifeedge as ke\n"
+        "m = ke.load('single_mode', 'reduced')\n"
+        "r = ke.simulate(m, {'theta': 1e-3, 'theta_dot': 0.0, 'phi_dot': 0.1}, (0.0, 15.0),"
+        " m.params(g=1.0, ell=1.0, L=1.0, D=1.0))\n"
+        "print(r.success, repr(r.y[:, -1].tolist()))\n"
+    )
+    env = dict(os.environ, KNIFEEDGE_CACHE_DIR=str(tmp_path / "k"), NUMBA_CACHE_DIR=str(tmp_path / "n"))
+    first = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
+    plain = sorted((tmp_path / "n").rglob("*.nbi"))
+    assert plain, "no plain numba cache files were written"
+    for index in plain:
+        with open(index, "r+b") as f:
+            f.truncate(20)
+    again = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True)
+    assert again.returncode == 0, again.stderr
+    assert again.stdout == first.stdout
+    assert "discarded a damaged compiled-code cache entry" in again.stderr
+    quiet = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
+    assert quiet.stdout == first.stdout and "discarded" not in quiet.stderr

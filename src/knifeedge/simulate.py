@@ -26,6 +26,7 @@ from . import _validate
 from . import inputs as _inputs
 from .integrators import (ALIASES, COMPILED_METHODS, EVENTS_PER_STEP, Status, compile_mode,
                           from_code, kernel, kernel_compiled)
+from .integrators.cache import call_repairing
 from .integrators.compiler import compile_mode_set
 from .models import Model, ValidityWarning
 
@@ -295,10 +296,11 @@ def _phase_result(ph: "_Phase", every: bool, n: int) -> tuple:
 
 
 def _call_kernel(solve, *args) -> tuple:
-    """``solve(*args)``; a Ctrl-C that arrived while numba called back into
+    """``solve(*args)`` (a damaged file of numba's cache read on the way discarded and compiled again,
+    :func:`~knifeedge.integrators.cache.call_repairing`); a Ctrl-C that arrived while numba called back into
     Python is raised as the ``KeyboardInterrupt`` it is."""
     try:
-        return solve(*args)
+        return call_repairing(solve, *args)
     except SystemError as exc:  # Ctrl-C that arrived while numba called back into Python
         cause = exc.__cause__
         while cause is not None and not isinstance(cause, KeyboardInterrupt):

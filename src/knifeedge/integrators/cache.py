@@ -32,11 +32,13 @@ import pickle
 import stat
 import sys
 import tempfile
+import zlib
 from pathlib import Path
 
 import llvmlite
 import numba
 import numpy as np
+from numba.core import caching
 from numba.core.caching import CompileResultCacheImpl, FunctionCache, IndexDataCacheFile, _CacheLocator
 from numba.core.registry import CPUDispatcher
 
@@ -309,6 +311,34 @@ def discard(paths, problem, what: str) -> None:
         Path(f).unlink(missing_ok=True)
     print(f"knifeedge: discarded a damaged {what} {paths[0]} ({type(problem).__name__}: {problem}); compiling it "
           "again", file=sys.stderr, flush=True)
+
+
+#: what numba raises when a file of its own cache is damaged (truncated, overwritten, unreadable)
+_DAMAGE = (EOFError, pickle.UnpicklingError, zlib.error, ValueError, TypeError, AttributeError, IndexError,
+           KeyError, OSError, ImportError)
+
+
+def call_repairing(fn, *args):
+    """``fn(*args)``; a damaged file of numba's own cache read on the way (a plain ``cache=True`` function's,
+    e.g. the generated modules' or the integrators' helpers': the kernels' own files are checked where they are
+    read, :class:`CheckedCacheFile`) is discarded with its entry (:func:`discard`) and the call made again, which
+    compiles it again.  A full disk is not damage: raised as it is."""
+    for _ in range(16):
+        try:
+            return fn(*args)
+        except _DAMAGE as exc:
+            if isinstance(exc, OSError) and exc.errno in (errno.ENOSPC, errno.EDQUOT):
+                raise
+            tb, index = exc.__traceback__, None
+            while tb is not None:  # the innermost cache file numba was reading
+                if tb.tb_frame.f_code.co_filename == caching.__file__:
+                    index = getattr(tb.tb_frame.f_locals.get("self"), "_index_path", None) or index
+                tb = tb.tb_next
+            if index is None:
+                raise
+            discard([index, *glob.glob(f"{glob.escape(str(index)[:-len('.nbi')])}.*.nbc")], exc,
+                    "compiled-code cache entry")
+    return fn(*args)
 
 
 class CheckedCacheFile(IndexDataCacheFile):
