@@ -313,6 +313,11 @@ def discard(paths, problem, what: str) -> None:
           "again", file=sys.stderr, flush=True)
 
 
+def _entry(index_path) -> list:
+    """The files of one entry of numba's cache: its index ``<name>.nbi`` and its data files ``<name>.<k>.nbc``."""
+    return [index_path, *glob.glob(f"{glob.escape(str(index_path)[:-len('.nbi')])}.*.nbc")]
+
+
 #: what numba raises when a file of its own cache is damaged (truncated, overwritten, unreadable)
 _DAMAGE = (EOFError, pickle.UnpicklingError, zlib.error, ValueError, TypeError, AttributeError, IndexError,
            KeyError, OSError, ImportError)
@@ -336,8 +341,7 @@ def call_repairing(fn, *args):
                 tb = tb.tb_next
             if index is None:
                 raise
-            discard([index, *glob.glob(f"{glob.escape(str(index)[:-len('.nbi')])}.*.nbc")], exc,
-                    "compiled-code cache entry")
+            discard(_entry(index), exc, "compiled-code cache entry")
     return fn(*args)
 
 
@@ -370,8 +374,7 @@ class CheckedCacheFile(IndexDataCacheFile):
         except FileNotFoundError:
             return None
         except (OSError, ValueError) as exc:
-            entry = [self._index_path, *glob.glob(f"{glob.escape(self._index_path[:-len('.nbi')])}.*.nbc")]
-            discard(entry, exc, "compiled-code cache entry")
+            discard(_entry(self._index_path), exc, "compiled-code cache entry")
             return None
 
     def _load_index(self):
