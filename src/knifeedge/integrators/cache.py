@@ -1,25 +1,10 @@
 """The cache of compiled kernels: one private folder, numba's files checked by SHA-256 before they are unpickled.
 
-A kernel is a numba function made for one method and one model by a factory
-(:mod:`.fixed`, :mod:`.erk`): a closure whose cells hold its compile-time
-constants (the state size, the tableau) and the model's compiled functions,
-so numba specializes the machine code to them.  :func:`compiled` gives such a
-closure numba's cache under a name that stands for everything it depends on
-(:func:`stamp`: the closure's cells, a model function by its module's file,
-the sources of the integrators, the compiler versions), in
-``<cache>/kernels``; a second process loads instead of compiling.
-
-Every file kept there is a checked cache file: a magic line and the SHA-256
-of the rest, verified before anything in it is read (numba's index and data
-files of the kernels, numba's pickles, :class:`CheckedCacheFile`; a kernel's
-IR parts, no pickle, :func:`write_checked`, :func:`read_checked`).  A file
-that fails its check is removed with its entry, said in one line and compiled again
-(:func:`discard`); one that cannot be written (a full disk) is said, and
-what it would hold stays compiled for this process only (:func:`not_kept`).
-
-The cache directory is ``$KNIFEEDGE_CACHE_DIR`` if set, else
-``$XDG_CACHE_HOME/knifeedge`` (default ``~/.cache/knifeedge``); when that is
-not usable, a per-user folder in the system temporary directory.
+:func:`compiled` gives a kernel (a numba closure made by :mod:`.fixed` or :mod:`.erk`) numba's cache in
+``<cache>/kernels`` under a name that stands for everything its machine code depends on (:func:`stamp`).  Every
+file kept there carries a magic line and the SHA-256 of the rest, verified before anything in it is read
+(:class:`CheckedCacheFile`, :func:`read_checked`); a damaged one is discarded and compiled again
+(:func:`discard`), one that cannot be written is said (:func:`not_kept`).  docs/integrators.md says more.
 """
 from __future__ import annotations
 
@@ -48,15 +33,11 @@ _SAID: set = set()
 
 
 def cache_dir() -> Path:
-    """The writable folder holding compiled kernels (created if needed).
+    """The writable folder of compiled kernels: $KNIFEEDGE_CACHE_DIR, else $XDG_CACHE_HOME/knifeedge (default
+    ~/.cache/knifeedge), else a per-user folder in the system temporary directory.
 
-    Whichever folder is used ($KNIFEEDGE_CACHE_DIR, $XDG_CACHE_HOME/knifeedge,
-    ~/.cache/knifeedge, or the fallback in the system temporary directory),
-    it and its ``kernels`` folder are created private (mode 0700) and refused
-    when they are not plain folders of this user that only this user can
-    write to: a folder another user can write to could hold files planted for
-    this process to load as machine code.  A refused folder is said in one
-    line on stderr (once) and the next candidate is tried.
+    It and its ``kernels`` folder are created private (mode 0700) and refused, said once on stderr, when another
+    user could write to them (files planted there would be loaded as machine code).
     """
     env = os.environ.get("KNIFEEDGE_CACHE_DIR")
     if env:
@@ -142,9 +123,8 @@ def _code_named(f) -> tuple:
 
 
 def stamp(py_func) -> str:
-    """A hash of everything the machine code of the closure ``py_func`` depends on: its cells (:func:`_named`),
-    the sources of the integrators (the code of the closures and of the helpers they call), numba, llvmlite
-    and Python.  The compiled closures in its cells are first given names of their own (:func:`_distinct_names`)."""
+    """A hash of everything the machine code of the closure ``py_func`` depends on (:func:`digest` of its cells),
+    after its compiled closures are given names of their own (:func:`_distinct_names`)."""
     _distinct_names(py_func)
     return digest(_closure_named(py_func))
 
@@ -204,18 +184,11 @@ class KernelCache(FunctionCache):
     def _index_key(self, sig, codegen):
         return (sig, codegen.magic_tuple(), self._py_func.__knifeedge_cache__[1])
 
-    def index_path(self) -> Path:
-        return Path(self._cache_file._index_path)
-
 
 def _distinct_names(py_func) -> None:
-    """Give every compiled closure in the cells of ``py_func`` (and in theirs) a name that stands for its cells.
-
-    numba names a compiled function's machine code after its module, its name and a per-process counter, and
-    links code of the same name only once per process.  Two closures of one factory (the initial step of DP54
-    and of DOP853) share a name; a kernel loaded from the cache, compiled in another process, could then call
-    the closure this process compiled under the same name and counter instead of its own.  Named after their
-    code and cells, closures share a name only when they are the same function."""
+    """Give every compiled closure in the cells of ``py_func`` (and in theirs) a name that stands for its code and
+    cells: numba links machine code of one name once per process, so a kernel loaded from the cache would call
+    another closure of the same factory compiled here under the same name (NOTES, fourth stop)."""
     for cell in py_func.__closure__ or ():
         contents = cell.cell_contents
         for value in contents if isinstance(contents, tuple) else (contents,):
@@ -227,11 +200,15 @@ def _distinct_names(py_func) -> None:
             f.__knifeedge_named__ = True
 
 
-def compiled(py_func, label: str, **options):
+def _named_in_cache(py_func, label: str) -> None:
+    """Name ``py_func``'s entry in ``<cache>/kernels``: ``<label>-<stamp>`` (read by :class:`_Locator`)."""
+    py_func.__knifeedge_cache__ = (str(cache_dir() / "kernels"), f"{label}-{stamp(py_func)}")
+
+
+def compiled(py_func, label: str):
     """``numba.njit(py_func)`` (error model numpy) cached in ``<cache>/kernels`` as ``<label>-<stamp>``."""
-    name = f"{label}-{stamp(py_func)}"
-    py_func.__knifeedge_cache__ = (str(cache_dir() / "kernels"), name)
-    dispatcher = numba.njit(error_model="numpy", **options)(py_func)
+    _named_in_cache(py_func, label)
+    dispatcher = numba.njit(error_model="numpy")(py_func)
     dispatcher._cache = KernelCache(py_func)
     return dispatcher
 
@@ -242,7 +219,7 @@ def compiled_cfunc(py_func, signature, label: str):
     from numba.core import sigutils
     from numba.core.ccallback import CFunc
 
-    py_func.__knifeedge_cache__ = (str(cache_dir() / "kernels"), f"{label}-{stamp(py_func)}")
+    _named_in_cache(py_func, label)
     function = CFunc(py_func, sigutils.normalize_signature(signature), locals={}, options={"error_model": "numpy"})
     function._cache = KernelCache(py_func)
     return function
@@ -250,7 +227,7 @@ def compiled_cfunc(py_func, signature, label: str):
 
 def is_cached(function) -> bool:
     """Whether the cache holds machine code of ``function`` (made by :func:`compiled` or :func:`compiled_cfunc`)."""
-    return function._cache.index_path().is_file()
+    return Path(function._cache._cache_file._index_path).is_file()
 
 
 #: the first bytes of every checked cache file (numba's files of the kernels, the parts of :mod:`.irparts`)
@@ -272,8 +249,8 @@ def _verified(data: bytes, path) -> bytes:
 
 
 def write_checked(path: Path, data: bytes, what: str) -> None:
-    """Keep the bytes ``data`` in ``path`` as numba's entries of a kernel are kept (:func:`_checked`), mode 0644
-    whatever the umask, written to a temporary file and renamed (a folder that cannot be written: :func:`not_kept`)."""
+    """Keep the bytes ``data`` in ``path`` as a checked file (:func:`_checked`), mode 0644, written to a temporary
+    file and renamed (a folder that cannot be written: :func:`not_kept`)."""
     tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
     try:
         with open(os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o644), "wb") as f:
@@ -324,9 +301,8 @@ _DAMAGE = (EOFError, pickle.UnpicklingError, zlib.error, ValueError, TypeError, 
 
 
 def call_repairing(fn, *args):
-    """``fn(*args)``; a damaged file of numba's own cache read on the way (a plain ``cache=True`` function's,
-    e.g. the generated modules' or the integrators' helpers': the kernels' own files are checked where they are
-    read, :class:`CheckedCacheFile`) is discarded with its entry (:func:`discard`) and the call made again, which
+    """``fn(*args)``; a damaged file of numba's own cache (a plain ``cache=True`` function's: the kernels' files
+    are checked where they are read) read on the way is discarded with its entry and the call made again, which
     compiles it again.  A full disk is not damage: raised as it is."""
     for _ in range(16):
         try:
@@ -347,9 +323,8 @@ def call_repairing(fn, *args):
 
 class CheckedCacheFile(IndexDataCacheFile):
     """numba's index-and-data cache file with a SHA-256 written with each file and verified before anything in
-    it is unpickled (the index's numba version too).  A file that fails the check is discarded with its entry
-    (:func:`discard`; numba then compiles and saves it again); an entry that cannot be saved is said
-    (:func:`not_kept`).  Private numba API used: ``_dump``, ``_save_index``, ``_load_index``, ``_load_data``,
+    it is unpickled; a damaged file is discarded with its entry (numba compiles it again), an entry that
+    cannot be saved is said.  Private numba API: ``_dump``, ``_save_index``, ``_load_index``, ``_load_data``,
     ``_data_path``, ``_open_for_write``, ``_index_path``, ``_version``, ``_source_stamp``."""
 
     def _dump(self, obj):

@@ -1,49 +1,23 @@
 """Event location shared by every path (the kernels of :mod:`.erk` and :mod:`.fixed`, the SciPy hand-over), and
 the kernels' helpers that never call a right-hand side.
 
-The interpolant of a step is ``F`` (rows x n) in one Horner scheme:
-``v = (v + F[r, i]) * (1 - x if alt[r] else x)`` from the last row, then
-``y[i] + v`` (Hairer's DOP853 form alternates the factors; the power series
-of Dormand--Prince, Tsitouras and cubic Hermite has ``x`` throughout).
+A step's interpolant is ``F`` (rows x n) in one Horner scheme, ``y[i] + v`` with
+``v = (v + F[r, i]) * (1 - x if alt[r] else x)`` from the last row (Hairer's DOP853 form alternates the
+factors; the power series of the others has ``x`` throughout).  An event is a state component
+(``events[k] = c >= 0``) or the model's event function ``j`` (``events[k] = -1 - j``).  Its crossings:
 
-An event is a state component (``events[k] = c >= 0``) or an event function
-of the model (``events[k] = -1 - j``: ``event_values(s, p)[j]``).  Its zero
-crossings are found in three moves:
+1. its value and rate times ``h`` at both ends of the step (an event function's rate: a forward difference over
+   1e-7 of the step);
+2. :func:`screen`, called only when the bound ``suspect`` of the kernels' loops leaves doubt (the Hermite
+   cubic is within ``dev = max(|s0 - d|, |s1 - d|) / 4`` of the chord, ``d = g1 - g0``: ends of one sign whose
+   smaller magnitude exceeds ``dev`` + ``NEAR`` times the larger leave nothing to screen): a crossing is certain when the signs at the ends differ, a pair inside the step is suspected when the
+   cubic Hermite interpolant of those four numbers has an extremum inside that crosses zero or comes within
+   ``NEAR`` of the larger end value;
+3. :func:`locator`: a suspected step is sampled at ``SAMPLES - 1`` equally spaced points and the Hermite
+   extrema, each sign change refined by Illinois regula falsi to a few ulps of the step.
 
-1. the ends: its value ``g`` and rate ``h dg/dt`` at both ends of the step
-   (a component's rate is its derivative; an event function's is a forward
-   difference over 1e-7 of the step);
-2. ``screen`` (called only when the bound ``suspect`` leaves doubt: the Hermite
-   cubic differs from the chord by at most x (1 - x) max(|s0 - d|, |s1 - d|) <= dev
-   (d = g1 - g0), so ends of one sign whose smaller magnitude exceeds dev + NEAR
-   times the larger one leave nothing to screen,
-   which for an event far from zero is almost never): a crossing is
-   certain when the signs at the ends differ; a
-   pair of crossings inside the step (same signs at both ends) is suspected
-   when the cubic Hermite interpolant of those four numbers has an extremum
-   inside the step that crosses zero or comes within ``NEAR`` of the larger
-   end value of it;
-3. ``locate``: for a suspected step, the event is sampled on the step's
-   dense output at ``SAMPLES - 1`` equally spaced interior points and the
-   Hermite extrema, and each sign change between neighbouring samples is
-   refined by the Illinois variant of regula falsi (always bracketed, to a
-   few ulps of the step); a plain crossing is refined on the whole step.
-
-A zero at the start of a bracket is not a crossing (it was counted as the
-end of the previous one).  The output: the rows of an accepted step, every
-step or the requested times ``t_eval`` inside it (on the interpolant).
-
-The per-step moves (the events' values at the ends of a step, the
-``suspect`` bound, the output rows) are written out in each kernel's loop:
-as functions, inlined by numba or called, they cost the kernels 1.5-4x per
-evaluation (numba counts the references to every array passed to them, at
-every step).  :func:`alloc` (inlined) makes the events' workspace,
-:func:`function_ends` the ends of a model's event functions for one kernel,
-:func:`locator` the one locator of every event's crossings.
-
-Every helper avoids array slicing and broadcasting assignments: numba
-compiles those with their error-message machinery (string formatting),
-which used to be half the compile time of a kernel.
+A zero at the start of a bracket is not a crossing (it ended the previous one).  The helpers avoid array
+slicing and broadcasting assignments (numba compiles their error messages, half a kernel's compile time).
 """
 import numpy as np
 from numba import njit
@@ -130,17 +104,13 @@ def _no_values(s, p, ev):
 
 def locator(values=None, event_at=None):
     """``locate(events, step, t, h, marks, found, n_ev)``, the one zero-crossing locator of every path: the
-    crossings of the flagged events inside the step from ``t`` (length ``h``), the state components'
-    (``events[k] >= 0``) first, then the model's event functions' (``events[k] = -1 - j``), appended to
-    ``found = (ev_t, ev_k)`` from ``n_ev``; returns the new count.  ``marks`` is ``(ga, gb, crit, n_crit, flag,
-    xs, gs)``: the events' values at the step's ends and the screen's verdicts (:func:`screen`), then two work
-    arrays (SAMPLES + 3).
+    crossings of the flagged events in the step from ``t`` (length ``h``), the components' first, then the event
+    functions', appended to ``found = (ev_t, ev_k)`` from ``n_ev``; returns the new count.  ``marks`` is
+    ``(ga, gb, crit, n_crit, flag, xs, gs)``: the ends' values, :func:`screen`'s verdicts, two work arrays.
 
-    ``event_at(step, x, c)``: event ``c`` at ``x`` in [0, 1] of the step; by default ``step`` is ``(F, y, alt,
-    p, ev, work)``, the kernels' interpolant ``F``, ``alt`` about ``y``, and event function ``j`` is
-    ``values(s, p, ev)[j]`` (a compiled function; ``None`` for a model without them) at the interpolated state
-    (into ``work``).  The SciPy hand-over passes its own (on SciPy's dense output) and runs ``locate.py_func``
-    in Python.
+    ``event_at(step, x, c)``: event ``c`` at ``x`` in [0, 1]; by default on the kernels' interpolant, ``step =
+    (F, y, alt, p, ev, work)``, event function ``j`` being ``values(s, p, ev)[j]`` (``None``: the model has
+    none).  The SciPy hand-over passes its own and runs ``locate.py_func`` in Python.
     """
     if event_at is None:
         event_at = njit(error_model="numpy")(_interpolant_event(
@@ -264,9 +234,8 @@ def alloc(events):
 
 
 def function_ends(values):
-    """``function_ends(...)`` for a kernel whose model's event functions are ``values(s, p, ev)`` (a compiled
-    function): their values and rates (times ``h``) at the ends of a step (:func:`locator` finds
-    their crossings, as the components')."""
+    """``function_ends(...)``: the values and rates (times ``h``) at a step's ends of the event functions
+    ``values(s, p, ev)`` (a compiled function)."""
 
     def function_ends(events, y, y_new, fa, fb, h, p, ev, work, ga, gb, sa, sb):
         dt = 1e-7 * h

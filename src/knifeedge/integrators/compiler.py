@@ -1,21 +1,9 @@
 """Compiling a kernel in a background process while a first run goes on without it.
 
-A kernel (one method specialized to one model) compiles in seconds, once per
-machine: later processes load its machine code from the cache.  In the
-``"background"`` compile mode a run that finds its kernel not yet compiled
-does not wait for it: it starts a separate process that compiles the kernel
-into the cache (:func:`start`), and meanwhile the run is stepped by SciPy's
-solver of the same tableau and step-size control with the model's
-right-hand side as plain Python (see ``simulate._run_compiled``).  When the
-compiled kernel is ready the run continues in it from the solver's state
-(time, state, derivative and next step), so the steps are those of one
-compiled run up to round-off; a run that ends first never waits.  The
-background process outlives the run that started it if it must, and a
-second run of the same kernel in the meantime does not start another.
-
-The mode is ``"wait"`` (compile in the calling process, the default of the
-library) or ``"background"`` (the default of the command line): set it with
-:func:`set_compile_mode` or the environment variable ``KNIFEEDGE_COMPILE``.
+In the ``"background"`` compile mode a run whose kernel is not compiled starts a separate process that compiles it
+into the cache (:func:`start`) and is stepped meanwhile by SciPy's solver of the same method
+(``simulate._run_compiled``), moving into the kernel when it is ready; the mode ``"wait"`` compiles in the
+calling process.  docs/integrators.md says more.
 """
 from __future__ import annotations
 
@@ -39,15 +27,11 @@ _STARTED: dict = {}
 
 
 def set_compile_mode(mode: str) -> None:
-    """Set how a kernel that is not yet compiled is compiled: ``"wait"`` or ``"background"``.
+    """Set how a kernel that is not yet compiled is compiled (overrides ``$KNIFEEDGE_COMPILE``).
 
-    ``"wait"``: the first run of a (model, method) pair compiles it and then
-    runs (seconds, once per machine).  ``"background"``: a separate process
-    compiles it while SciPy's solver of the same method (``DOP853``,
-    ``DP54``/``RK45``) with a plain-Python right-hand side answers; the run
-    moves into the compiled kernel as soon as it is ready.  Methods without
-    a SciPy twin, and ``error_control="mode"``, always wait.  Overrides the
-    environment variable ``KNIFEEDGE_COMPILE``.
+    ``"wait"``: the first run of a (model, method) pair compiles it, then runs.  ``"background"``: a separate
+    process compiles it while SciPy's solver of the same method (``DOP853``, ``DP54``/``RK45``) answers; the run
+    moves into the kernel when it is ready.  Methods without a SciPy twin, and ``error_control="mode"``, wait.
     """
     if mode not in MODES:
         raise ValueError(f"`mode` must be one of {MODES}, got {mode!r}")
@@ -76,14 +60,8 @@ def compile_mode() -> str:
 
 
 class Pending:
-    """A kernel being compiled by another process.
-
-    Attributes
-    ----------
-    module : the kernel (made, not compiled).
-    path : its name in the cache folder; the compiling process's lock is ``path`` with suffix ``.compiling``.
-    started : whether this process started the compiler (else another one had).
-    """
+    """A kernel being compiled by another process: ``module`` the kernel (made, not compiled), ``path`` its name in
+    the cache folder (the lock: suffix ``.compiling``), ``started`` whether this process started the compiler."""
 
     def __init__(self, module, path: Path, proc, started: bool):
         self.module, self.path, self.proc, self.started = module, path, proc, started
@@ -119,9 +97,8 @@ def _log(path: Path) -> Path:
 def _holder(lock: Path) -> int | None:
     """The process id of the live compiling process that holds ``lock``, or None (no lock, or a stale one).
 
-    A lock holds ``"<pid> <start time>"`` (:mod:`knifeedge._process`), so a pid reused by an unrelated
-    process after the compiler died does not hold it; a lock without the start time (written by an earlier
-    version) is stale where start times can be read."""
+    A lock holds ``"<pid> <start time>"`` (:mod:`knifeedge._process`): a reused pid does not hold it; a lock
+    without the start time is stale where start times can be read."""
     try:
         fields = lock.read_text().split()
         pid = int(fields[0])
@@ -135,11 +112,8 @@ def _holder(lock: Path) -> int | None:
 
 def start(model, method: str, kernel_module, arg_types: tuple) -> Pending:
     """Compile the kernel of ``method`` for ``model`` (``kernel_module``) for the argument types ``arg_types``
-    (``kernel_module.argument_types(args)``: numba's types of its ``solve(*args)``) in a separate process.
-
-    Returns a :class:`Pending`; if another live process is already compiling
-    the same kernel (its lock file names it), none is started.
-    """
+    (numba's types of its ``solve(*args)``) in a separate process; a :class:`Pending`.  None is started while
+    another live process compiles the same kernel (its lock file names it)."""
     path = Path(kernel_module.path)
     lock = _lock(path)
     if path.name in _STARTED:

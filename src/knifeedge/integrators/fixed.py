@@ -1,21 +1,11 @@
 """Fixed-step kernel for any registered :class:`~knifeedge.integrators.methods.FixedMethod`.
 
-:class:`FixedKernel` holds the kernel of one method for one model: a numba
-function whose closure holds the method's tableau and the state size as
-constants (so its loops unroll) and the model's compiled right-hand side
-(called directly, inlined by LLVM); cached across processes (:mod:`.cache`).
-An explicit method is stepped stage after stage (the classical RK4 with its
-increment written out: the general loops cost it 10-17 % per evaluation);
-an implicit one (Gauss--Legendre with 1, 2, 3 stages, orders 2, 4, 6; one
-stage is the implicit midpoint rule) by fixed-point iteration of its stage
-equations to round-off, started from the previous step's collocation
-polynomial.  Gauss methods are symmetric, hence time-reversible, and keep
-quadratic invariants exactly.
-
-The step is ``h = (t1 - t0) / N`` with ``N = ceil((t1 - t0) / h_req)``, so the
-grid ends on ``t1``.  The state update uses compensated (Kahan) summation, so
-round-off does not accumulate as a random walk over long runs.  Dense output
-(events, output times) is the cubic Hermite interpolant of each step.
+:class:`FixedKernel` is a numba closure over the method's tableau and the state size (its loops unroll) and the
+model's compiled right-hand side (inlined by LLVM), cached by :mod:`.cache`.  An explicit method is stepped stage
+after stage (the classical RK4's increment written out: the general loops cost it 10-17 % per evaluation), an
+implicit one (Gauss--Legendre) by fixed-point iteration of its stage equations to round-off, started from the
+previous step's collocation polynomial.  The grid ends on ``t1``; the state update is compensated (Kahan)
+summation; the dense output (events, output times) is each step's cubic Hermite interpolant.
 """
 import numpy as np
 from numba import njit
@@ -93,12 +83,9 @@ def _gauss(m, N: int, rhs):
     def gauss(t, y, h, q, scale, Z, Znew, work, dy):
         """Solve the stage equations by fixed-point iteration; returns (rhs calls, converged).
 
-        The iteration stops when the largest change of a stage increment relative
-        to ``scale`` is a few ulps, or when it stops decreasing (round-off
-        reached) while the change relative to the largest state component is
-        below 1e-14.  It fails when the change grows a thousandfold above its
-        first value (divergence), becomes non-finite, or ``MAX_ITER`` iterations
-        pass.
+        It stops when the largest change of a stage increment relative to ``scale`` is a few ulps, or stops
+        decreasing while below 1e-14 of the largest state component; it fails when the change grows a
+        thousandfold above its first value, becomes non-finite, or ``MAX_STAGE_ITER`` iterations pass.
         """
         nfev = 0
         dprev = np.inf
@@ -213,18 +200,12 @@ def _solve_closure(m, N: int, rhs, constants, increments, HAS_FUN, function_ends
     def solve(t0, t1, y0, f0, p, control, request, out):
         """Integrate from ``t0`` over steps ``first + 1 .. n_steps`` of size ``h_fixed``, at most ``chunk`` of them.
 
-        ``control`` is ``(h_fixed, n_steps, first, atol, pair, comp, Z)``.  Step
-        ``k`` ends at ``t0 + k h_fixed`` (the last at ``t1``).  ``atol`` (n,) is
-        the floor of the scale of the implicit solver's convergence test and
-        ``pair`` (n,) the mode partner of each component (-1: none) whose
-        magnitude also sets it (Gauss only).  ``y0`` is the state after step
-        ``first`` and ``f0`` its derivative (ignored when ``first == 0``);
-        ``comp`` (n,), the Kahan compensation, and ``Z`` (S, n), the stage
-        derivatives of the last step, are carried from one call to the next and
-        updated in place, so that a run in chunks takes the same steps as one
-        call.  ``request``, ``out`` and the returned tuple are as for the
-        adaptive kernel (:func:`.erk.driver`; rejected steps are always 0;
-        ``h_next`` is the index of the last step taken).
+        ``control`` is ``(h_fixed, n_steps, first, atol, pair, comp, Z)``: step ``k`` ends at ``t0 + k h_fixed``
+        (the last at ``t1``); ``atol`` and the mode partners ``pair`` set the scale of the implicit solver's test;
+        ``y0`` is the state after step ``first``, ``f0`` its derivative (ignored when ``first == 0``); ``comp``
+        (the Kahan compensation) and ``Z`` (the last step's stages) are updated in place, so that a run in chunks
+        takes the steps of one call.  ``request``, ``out`` and the returns are the adaptive kernel's
+        (:func:`.erk.driver`; no rejected steps; ``h_next`` is the index of the last step taken).
         """
         h_fixed, n_steps, first, atol, pair, comp, Z = control
         t_eval, every, events, max_steps, chunk = request

@@ -1,17 +1,9 @@
 """Calls through a function's address inside compiled code: one compiled integrator serves every model.
 
-A model's compiled parts (its right-hand side, the stages of a step, the
-interpolant: IR or ``numba.cfunc`` functions of :class:`.erk.AdaptiveKernel`)
-are passed to the shared integrator as machine
-addresses, plain integers, and called with :func:`call_f8` / :func:`call_void`.
-The integrator therefore compiles once per method and machine (its cache
-does not depend on the model), and each model compiles only its parts.
-
-Arguments are ``float64`` or ``int64`` scalars, passed by value, and
-contiguous arrays, passed as the address of their first element (a
-``double*`` or ``int64_t*`` in the callee, which rebuilds the array with
-``numba.carray``).  The caller keeps the ``cfunc`` objects alive for as long
-as their addresses are in use.
+A model's compiled parts (:class:`.erk.AdaptiveKernel`) are passed to the shared integrator as machine addresses,
+plain integers, and called with :func:`call_f8` / :func:`call_void`; so the integrator compiles once per method
+and machine.  Arguments are ``float64`` or ``int64`` scalars, by value, and C-contiguous arrays, as the address
+of their first element (the callee rebuilds them with ``numba.carray``).  The caller keeps the parts alive.
 """
 import numpy as np
 from llvmlite import ir

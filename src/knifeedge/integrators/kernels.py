@@ -1,11 +1,6 @@
-"""The kernel of one method for one model: made once per process, compiled once per machine.
-
-:func:`kernel_module` finds the kernel of a model and a method's name (the one place that maps them);
-:func:`load_kernel` returns an :class:`~.erk.AdaptiveKernel` (an adaptive method: the model's parts and the
-integrator shared by every model) or a :class:`~.fixed.FixedKernel` (a fixed-step method); each has
-``solve(...)`` and ``is_compiled()``.  Nothing is written but numba's compiled code (:mod:`.cache`).
-:func:`kernel` returns the ``solve`` of that kernel, saying on stderr that it compiles at its first call.
-"""
+"""The kernel of one method for one model: made once per process (:func:`load_kernel`, :func:`kernel_module`),
+compiled once per machine (:mod:`.cache`); :func:`kernel` its ``solve``, saying on stderr that it compiles at its
+first call."""
 from __future__ import annotations
 
 import sys
@@ -48,19 +43,13 @@ _KERNELS: dict = {}
 
 
 def kernel(model, method: str):
-    """The compiled ``solve`` function of ``method`` for ``model`` (a :class:`knifeedge.Model`).
-
-    The first use of a (model, method) pair on a machine compiles it, which
-    takes seconds, and says so in one line on stderr; later uses, in any
-    process, load the machine code from the cache (:func:`cache_dir`).
-    """
+    """The compiled ``solve`` function of ``method`` for ``model`` (a :class:`knifeedge.Model`): its first use on a
+    machine compiles it (seconds, said in one line on stderr); later uses, in any process, load it from the cache."""
     module = kernel_module(model, method)
     if module not in _KERNELS:
-        solve = module.solve
-        if not module.is_compiled():
-            pose = ", pose" if model.pose else ""
-            solve = _announced(solve, f"{get(method).name} for {model.name} ({model.fidelity}{pose})")
-        _KERNELS[module] = solve
+        pose = ", pose" if model.pose else ""
+        _KERNELS[module] = module.solve if module.is_compiled() else _announced(
+            module, f"{get(method).name} for {model.name} ({model.fidelity}{pose})")
     return _KERNELS[module]
 
 
@@ -75,10 +64,10 @@ def use_compiled(model, method: str) -> None:
     _KERNELS[module] = module.solve
 
 
-def _announced(solve, label: str):
-    """``solve`` that says on stderr, at its first call, that it compiles now and once (later calls of the
+def _announced(module, label: str):
+    """``module.solve`` that says on stderr, at its first call, that it compiles now and once (later calls of the
     same wrapper, e.g. the continued calls of the run that compiled it, go straight to ``solve``)."""
-    done = []
+    solve, done = module.solve, []
 
     def first_call(*args):
         if done:
@@ -91,9 +80,7 @@ def _announced(solve, label: str):
         finally:
             print(f" {time.perf_counter() - t:.1f} s", file=sys.stderr, flush=True)
         done.append(True)
-        for k, v in _KERNELS.items():
-            if v is first_call:
-                _KERNELS[k] = solve
+        _KERNELS[module] = solve
         return out
 
     return first_call

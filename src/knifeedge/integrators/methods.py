@@ -1,39 +1,13 @@
 """Integration methods as data: every compiled method is a tableau, checked when it is built, registered by name.
 
-Two kinds, one registry (:data:`COMPILED_METHODS`, :func:`register`):
-
-- :class:`ExplicitTableau`, an embedded explicit Runge--Kutta pair with dense output, run by the adaptive
-  integrator (:mod:`.erk`: one numba closure per method, the model's parts as LLVM IR, :mod:`.irparts`).
-  Conventions (the first-same-as-last form of Dormand--Prince pairs): stage ``j < s`` is
-  ``K_j = f(t + c_j h, y + h sum_i A[j, i] K_i)``, the step is ``y_new = y + h sum_j b_j K_j`` and
-  ``K_s = f(t + h, y_new)`` is both the last term of the error estimate ``err = h sum_{j <= s} e_j K_j`` and
-  the first stage of the next step.
-- :class:`FixedMethod`, a Butcher tableau ``(A, b, c)`` taken with a fixed step (:mod:`.fixed`).  An explicit
-  tableau (strictly lower-triangular ``A``, e.g. the classical RK4) is stepped stage after stage; an implicit
-  one (the Gauss--Legendre collocation methods) by fixed-point iteration of its stage equations, started from
-  the previous step's collocation polynomial (:attr:`FixedMethod.extrapolation`).
-
-The kernels read everything they need from the registered method.  Adding a method is its tableau and one
-:func:`register` line at the end of this module; it is then a ``method`` of :func:`knifeedge.simulate`
-(a method registered later, from outside, runs through :func:`knifeedge.integrators.load_kernel` only).
-
-The methods here, with their sources:
-
-- ``DOP853``: Hairer, Norsett & Wanner, *Solving ODEs I*, Sect. II.10 and E. Hairer's Fortran DOP853; the
-  coefficients are the public class attributes of SciPy's ``scipy.integrate.DOP853`` (``A``, ``B``, ``C``,
-  ``E3``, ``E5``, ``D``, ``A_EXTRA``, ``C_EXTRA``), so the compiled run and SciPy's share one table
-  (``tests/test_tableaus.py`` checks entries against Hairer's Fortran code).
-- ``DP54``: J. R. Dormand, P. J. Prince, "A family of embedded Runge-Kutta formulae", J. Comput. Appl. Math. 6
-  (1980) 19-26; the dense-output matrix is Shampine's (Math. Comp. 46 (1986) 135-150) with the optimum c6:
-  the class attributes of SciPy's ``scipy.integrate.RK45`` (``A``, ``B``, ``C``, ``E``, ``P``).
-- ``Tsit5``: Ch. Tsitouras, "Runge--Kutta pairs of order 5(4) satisfying only the first column simplifying
-  assumption", Comput. Math. Appl. 62 (2011) 770--775 (the default explicit method of OrdinaryDiffEq.jl and
-  diffrax); its continuous weights ``b_j(x)``, as given factored in OrdinaryDiffEq.jl and diffrax, expanded
-  into the power-series matrix ``P``.
-- ``RK4``: the classical Runge--Kutta method of order 4.
-- ``implicit_midpoint``, ``gauss4``, ``gauss6``: Gauss--Legendre collocation with s = 1, 2, 3 stages (orders
-  2, 4, 6): E. Hairer, C. Lubich, G. Wanner, *Geometric Numerical Integration*, Table II.1.1 and Sect. II.1.3.
-  They are symmetric (time-reversible) and conserve every quadratic invariant.
+Two kinds, one registry (:data:`COMPILED_METHODS`, :func:`register`): :class:`ExplicitTableau`, an embedded
+explicit Runge--Kutta pair with dense output in the first-same-as-last form, run by the adaptive integrator
+(:mod:`.erk`); :class:`FixedMethod`, a Butcher tableau taken with a fixed step (:mod:`.fixed`: an explicit one
+stage after stage, an implicit one by fixed-point iteration of its stage equations).  Adding a method is its
+tableau and one :func:`register` line at the end of this module (docs/integrators.md, "A method is data").
+Each method's ``reference`` (or the comment above it) gives its source; SciPy's public tables are DOP853's and
+DP54's, so the compiled runs and SciPy's share them (``tests/test_tableaus.py`` checks them against the
+published literals).
 """
 from __future__ import annotations
 
@@ -83,10 +57,12 @@ def _refuse(kind: str, name: str, problems: list) -> None:
 class ExplicitTableau:
     """An embedded explicit Runge--Kutta pair with dense output, run by the adaptive integrator.
 
+    Stage ``j < s`` is ``K_j = f(t + c_j h, y + h sum_i A[j, i] K_i)``, the step ``y_new = y + h sum_j b_j K_j``,
+    and ``K_s = f(t + h, y_new)`` the last term of the error estimate and the next step's first stage.
+
     Attributes
     ----------
-    name : str
-        Registry name (the ``method`` of :func:`knifeedge.simulate`).
+    name : str, the registry name (the ``method`` of :func:`knifeedge.simulate`).
     c : (s,) nodes, ``c[0] == 0``.
     A : (s, s) strictly lower-triangular stage coefficients.
     b : (s,) weights of the step.
@@ -95,10 +71,8 @@ class ExplicitTableau:
     error_order : order of the embedded estimate (the step-size controller uses ``-1/(error_order + 1)``).
     P : (s + 1, m) dense output ``y(t + x h) = y + h sum_j K_j sum_r P[j, r] x^(r + 1)``;
         ``None`` when the method has Hairer's DOP853 interpolant (``hairer``).
-    hairer : dict or None
-        DOP853 only: its second (3rd-order) estimator ``e3``, the extra
-        stages of its dense output (``c_ext``, ``A_ext`` rows over all
-        earlier stages) and the interpolant's matrix ``D``.
+    hairer : dict or None, DOP853 only: its 3rd-order estimator ``e3``, the extra stages of its dense output
+        (``c_ext``, ``A_ext`` rows over all earlier stages) and the interpolant's matrix ``D``.
     description, reference : str
     """
 
@@ -242,16 +216,12 @@ def get(name: str, kind: str | None = None):
 
 
 def erk_arrays(name: str) -> SimpleNamespace:
-    """The tables the adaptive integrator and a model's parts use for the registered method ``name``.
+    """The tables of the registered adaptive method ``name`` as the integrator and a model's parts read them.
 
-    Returns a namespace of ``name``, ``A``, ``C``, ``E5``, ``E3``, ``DD``, ``P``, ``hairer``, ``n_stages``,
-    ``n_ext``, ``dense_rows``, ``alt``, ``error_order``: ``A`` and ``C`` over every stage (the method's, then
-    the weights as the row of the stage at ``t + h``, first same as last, then the extra stages of DOP853's
-    interpolant); ``E5`` the error estimator (and ``E3`` DOP853's second one, else zeros); ``DD`` DOP853's
-    interpolant rows or ``P`` the power series of the others (the unused one is a 1 x 1 zero); ``alt`` the
-    factors of the Horner scheme of the interpolant ``v = (v + F[r, i]) * (1 - x if alt[r] else x)``
-    (Hairer's form alternates them, the power series has ``x`` throughout); ``dense_rows`` the rows of ``F``;
-    ``n_stages`` the method's stages, ``n_ext`` all of them.
+    ``A``, ``C`` over all ``n_ext`` stages (the method's ``n_stages``, the weights as the stage at ``t + h``, then
+    DOP853's extra dense-output stages); ``E5`` the error estimator, ``E3`` DOP853's second one (else zeros);
+    ``DD`` DOP853's interpolant or ``P`` the others' power series (the unused one a 1 x 1 zero); ``dense_rows``
+    and ``alt``: the rows of the interpolant ``F`` and their Horner factors (:mod:`.common`).
     """
     t = get(name, "erk")
     hairer = t.hairer is not None
@@ -281,14 +251,14 @@ def erk_arrays(name: str) -> SimpleNamespace:
 
 
 # -- the methods -----------------------------------------------------------------------------------------------
-#: Dormand-Prince 5(4), the tables of SciPy's ``RK45`` (public class attributes): ``DP54_A`` (6 x 5), ``DP54_C``,
-#: ``DP54_B`` over the 6 stages, ``DP54_E`` the error estimator over them and f at the new point (first same as
-#: last), ``DP54_P`` the dense output ``y(t + x h) = y + h sum_j (K^T P)[:, j] x^(j + 1)`` (lyapunov.py reads them)
+#: Dormand-Prince 5(4), the tables of SciPy's ``RK45`` (lyapunov.py reads them): ``DP54_A`` (6 x 5), ``DP54_E``
+#: over the 6 stages and f at the new point, ``DP54_P`` the dense output ``y + h sum_j (K^T P)[:, j] x^(j + 1)``
 DP54_C, DP54_A, DP54_B, DP54_E, DP54_P = _RK45.C, _RK45.A, _RK45.B, _RK45.E, _RK45.P
 
 _S3 = math.sqrt(3.0)
 _S15 = math.sqrt(15.0)
-#: stages -> (A, b, c) of the Gauss--Legendre method of order 2 s
+#: stages -> (A, b, c) of the Gauss--Legendre method of order 2 s: symmetric, keeps quadratic invariants (Hairer,
+#: Lubich & Wanner, Geometric Numerical Integration, Table II.1.1 and Sect. II.1.3)
 GAUSS = {
     1: (np.array([[0.5]]), np.array([1.0]), np.array([0.5])),
     2: (
