@@ -299,3 +299,43 @@ def test_a_damaged_file_of_numbas_own_cache_is_discarded_and_compiled_again(tmp_
     assert "discarded a damaged compiled-code cache entry" in again.stderr
     quiet = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
     assert quiet.stdout == first.stdout and "discarded" not in quiet.stderr
+
+
+def test_kernels_of_one_factory_have_machine_code_names_of_their_own():
+    """The RK4 kernels of two models are closures of one factory with the same argument types: their machine code
+    is named after their code and cells (``cache._distinct_names``), not only after the factory's function."""
+    from knifeedge import load
+    from knifeedge.integrators import kernel_module
+
+    single, two = (kernel_module(load(name), "RK4").solve.py_func for name in ("single_mode", "two_mode"))
+    assert single.__qualname__ != two.__qualname__
+    assert single.__qualname__.startswith("_solve_closure.<locals>.solve_")
+
+
+@pytest.mark.slow
+def test_kernels_of_two_models_loaded_from_the_cache_run_their_own_code(tmp_path):
+    """Two RK4 kernels (single- and two-mode models), the second compiled in a process that had loaded the first
+    from the cache, both loaded by a third process: each runs and gives the state its own process computed
+    (before the kernels were named after their cells, the third process failed with ``NRT_adapt_ndarray_to_python:
+    'descr' is NULL``)."""
+    code = ("import sys, json, numpy as np, knifeedge as ke\n"
+            "out = {}\n"
+            "for name in sys.argv[1:]:\n"
+            "    m = ke.load(name)\n"
+            "    p = m.params(g=1.0, ell=1.0, L=2.0, D=0.5, **({'alpha': 0.7} if name == 'two_mode' else {}))\n"
+            "    y0 = np.full(m.n_state, 1e-3)\n"
+            "    y0[-1] = 0.1\n"
+            "    r = ke.simulate(m, y0, (0.0, 2.0), p, method='RK4', h=0.01)\n"
+            "    out[name] = [r.message, r.y[:, -1].tolist()]\n"
+            "print(json.dumps(out))\n")
+    env = dict(os.environ, KNIFEEDGE_CACHE_DIR=str(tmp_path / "k"), NUMBA_CACHE_DIR=str(tmp_path / "n"))
+
+    def run(*names):
+        out = subprocess.run([sys.executable, "-c", code, *names], env=env, capture_output=True, text=True)
+        assert out.returncode == 0, out.stderr[-2000:]
+        return __import__("json").loads(out.stdout.splitlines()[-1])
+
+    first = run("single_mode")  # compiled and cached
+    second = run("single_mode", "two_mode")  # the first loaded, the second compiled and cached
+    assert second["single_mode"] == first["single_mode"]
+    assert run("single_mode", "two_mode") == second  # both loaded

@@ -186,18 +186,20 @@ class KernelCache(FunctionCache):
 
 
 def _distinct_names(py_func) -> None:
-    """Give every compiled closure in the cells of ``py_func`` (and in theirs) a name that stands for its code and
-    cells: numba links machine code of one name once per process, so a kernel loaded from the cache would call
-    another closure of the same factory compiled here under the same name (NOTES, fourth stop)."""
+    """Give the closure ``py_func`` and every compiled closure in its cells (and in theirs) a name that stands for
+    its code and cells: numba links machine code of one name once per process, so a kernel loaded from the cache
+    would call another closure of the same factory (or be another kernel, of another model) compiled or loaded
+    here under the same name (NOTES, fourth stop)."""
+    if getattr(py_func, "__knifeedge_named__", False):
+        return
     for cell in py_func.__closure__ or ():
         contents = cell.cell_contents
         for value in contents if isinstance(contents, tuple) else (contents,):
             f = getattr(value, "py_func", None)
-            if f is None or not f.__closure__ or getattr(f, "__knifeedge_named__", False):
-                continue
-            _distinct_names(f)
-            f.__qualname__ = f"{f.__qualname__}_{digest(_closure_named(f))[:12]}"
-            f.__knifeedge_named__ = True
+            if f is not None and f.__closure__:
+                _distinct_names(f)
+    py_func.__qualname__ = f"{py_func.__qualname__}_{digest(_closure_named(py_func))[:12]}"
+    py_func.__knifeedge_named__ = True
 
 
 def _named_in_cache(py_func, label: str) -> None:

@@ -72,14 +72,6 @@ def _increments(method: str, N: int, rhs):
                 a = max(a, abs(y[pair[i]]))
             out[i] = max(a, atol[i])
 
-    return (njit(**_OPTIONS)(rk4), njit(**_OPTIONS)(explicit), _gauss(m, N, rhs), njit(**_OPTIONS)(solver_scale))
-
-
-def _gauss(m, N: int, rhs):
-    """The stage solver of the implicit method ``m`` on ``N`` states (compiled)."""
-    S, GA, GC, DENOMINATOR = m.stages, m.A.copy(), m.c.copy(), m.denominator
-    GB = m.b * DENOMINATOR
-
     def gauss(t, y, h, q, scale, Z, Znew, work, dy):
         """Solve the stage equations by fixed-point iteration; returns (rhs calls, converged).
 
@@ -129,7 +121,7 @@ def _gauss(m, N: int, rhs):
             dprev = d
         return nfev, False
 
-    return njit(**_OPTIONS)(gauss)
+    return tuple(njit(**_OPTIONS)(f) for f in (rk4, explicit, gauss, solver_scale))
 
 
 class FixedKernel:
@@ -159,42 +151,36 @@ class FixedKernel:
         return is_cached(self.solve)
 
 
-def _start_closure(N: int, S: int, rhs):
-    """``start(...)``, inlined into the kernel: the derivative at the start, ``f_old`` (and the stages ``Z``
-    from it), of a run; of a continued run ``f0``; returns the right-hand-side calls."""
+def _begin_closure(N: int, S: int, rhs):
+    """``begin(t, y0, q, f0, Z, first)``, inlined into the kernel: the right-hand-side calls it made and the
+    kernel's arrays, ``y`` a copy of ``y0`` and ``f_old`` the derivative there (of a run: computed, and the
+    stages ``Z`` set to it; of a continued run: ``f0``)."""
 
-    def start(t, y, q, f0, f_old, Z, first):
+    def begin(t, y0, q, f0, Z, first):
+        y, f_old = np.empty(N), np.empty(N)
+        for i in range(N):
+            y[i] = y0[i]
+        calls = 0
         if first == 0:
             rhs(t, y, q, f_old)
             for k in range(S):
                 for i in range(N):
                     Z[k, i] = f_old[i]
-            return 1
-        for i in range(N):
-            f_old[i] = f0[i]
-        return 0
-
-    return njit(inline="always", **_OPTIONS)(start)
-
-
-def _buffers_closure(N: int, S: int):
-    """``buffers(y0)``: the kernel's arrays, ``y`` a copy of ``y0`` (inlined into the kernel)."""
-
-    def buffers(y0):
-        y = np.empty(N)
-        for i in range(N):
-            y[i] = y0[i]
-        return (y, np.empty(N), np.empty(N), np.empty(N), np.empty(N), np.empty(N), np.empty(N), np.empty(N),
+            calls = 1
+        else:
+            for i in range(N):
+                f_old[i] = f0[i]
+        return (calls, y, np.empty(N), np.empty(N), np.empty(N), np.empty(N), np.empty(N), f_old, np.empty(N),
                 np.empty((S, N)), np.empty((S, N)), np.empty((DENSE_ROWS, N)))
 
-    return njit(inline="always", **_OPTIONS)(buffers)
+    return njit(inline="always", **_OPTIONS)(begin)
 
 
 def _solve_closure(m, N: int, rhs, constants, increments, HAS_FUN, function_ends, locate):
     """The kernel as a Python closure over the method ``m``, the state size, the model's functions."""
     rk4_increment, explicit_increment, gauss_increment, solver_scale = increments
     IMPLICIT, CLASSICAL_RK4, S, EXTRAP = m.implicit, m.is_classical_rk4, m.stages, m.extrapolation
-    start, buffers = _start_closure(N, S, rhs), _buffers_closure(N, S)
+    begin = _begin_closure(N, S, rhs)
     NO_EV = np.zeros(2, dtype=np.int64)  # the event functions are the model's own (the adaptive kernel's ``ev``)
 
     def solve(t0, t1, y0, f0, p, control, request, out):
@@ -213,12 +199,11 @@ def _solve_closure(m, N: int, rhs, constants, increments, HAS_FUN, function_ends
         if y0.size != N:
             raise ValueError("the initial state does not have the size this kernel was specialized to")
         q = constants(p)
-        y, y_new, dy, comp_trial, scale, work, f_old, f_new, K, Znew, F = buffers(y0)
+        t = t0 if first == 0 else t0 + first * h_fixed
+        calls, y, y_new, dy, comp_trial, scale, work, f_old, f_new, K, Znew, F = begin(t, y0, q, f0, Z, first)
         ne, n_fun, ga, gb, sa, sb, crit, n_crit, flag, xs, gs = _c.alloc(events)
         # counters start as int64, not as the literal 0 (numba would compile the callees for both types)
-        n_out, ie, n_ev, nfev = np.int64(0), np.int64(0), np.int64(0), np.int64(0)
-        t = t0 if first == 0 else t0 + first * h_fixed
-        nfev += start(t, y, q, f0, f_old, Z, first)
+        n_out, ie, n_ev, nfev = np.int64(0), np.int64(0), np.int64(0), np.int64(calls)
         status, n_acc, step = 0, 0, first
         while step < n_steps:
             if n_acc >= max_steps:
