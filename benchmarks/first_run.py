@@ -24,6 +24,11 @@ scene and animation, how much of it was numba compiling, and the functions
 that took longest to compile (the kernels' own LLVM parts are not numba
 compiles: they count in the scene's time only).
 
+``--timeline`` runs ``knifeedge figures`` cold as the command does (two worker
+processes) with each task's process, start, end and CPU recorded, and every
+numba compile with the process and task it ran in: which core waits for what,
+and what is compiled twice.
+
 ``--test-command`` also times the README's test command (the set-up line that
 ends in ``pytest``: a virtual environment, the install, the tests) from a fresh
 clone of this repository's committed ``HEAD``, with empty caches, ``--repeats``
@@ -166,6 +171,76 @@ def measure_compiles(work: Path) -> dict:
     return result
 
 
+def timeline_profile() -> dict:
+    """``make_figures`` as ``knifeedge figures`` runs it, each task (scene, animation, warm-up) and each numba
+    compile recorded with its process (run it with empty caches: :func:`measure_timeline`)."""
+    import functools
+
+    from numba.core import event
+
+    from knifeedge import figures
+
+    t0, log = time.perf_counter(), tempfile.mkstemp(suffix=".jsonl")[1]
+    task = ["parent"]
+
+    def write(row: dict) -> None:
+        with open(log, "a") as fh:
+            fh.write(json.dumps({"pid": os.getpid(), **row}) + "\n")
+
+    class Listener(event.Listener):
+        depth = 0
+
+        def on_start(self, ev):
+            Listener.depth += 1
+            if Listener.depth == 1:
+                self.t = time.process_time()
+
+        def on_end(self, ev):
+            if Listener.depth == 1:
+                f = getattr(ev.data.get("dispatcher"), "py_func", None)
+                write({"compile": f"{f.__module__}.{f.__qualname__}" if f else "?", "task": task[0],
+                       "cpu": time.process_time() - self.t})
+            Listener.depth -= 1
+
+    def timed(f, kind):
+        @functools.wraps(f)
+        def run(*args, **kwargs):
+            task[0] = " ".join([kind, *(str(a) for a in args if not str(a).startswith("/"))])
+            start, cpu = time.perf_counter() - t0, time.process_time()
+            try:
+                return f(*args, **kwargs)
+            finally:
+                write({"task": task[0], "start": start, "end": time.perf_counter() - t0,
+                       "cpu": time.process_time() - cpu})
+        return run
+
+    event.register("numba:compile", Listener())
+    for name in ("render_scene", "render_animation", "warm", "warm_lyapunov", "warm_parts"):
+        setattr(figures, name, timed(getattr(figures, name), name))  # the workers are forked: they inherit these
+    with tempfile.TemporaryDirectory() as out:
+        figures.make_figures(out, progress=False)
+    rows = [json.loads(line) for line in Path(log).read_text().splitlines()]
+    Path(log).unlink()
+    pids = sorted({r["pid"] for r in rows if "start" in r})
+    tasks = [dict(r, process=pids.index(r["pid"])) for r in rows if "start" in r]
+    compiles = [dict(r, process=pids.index(r["pid"]) if r["pid"] in pids else "parent") for r in rows
+                if "compile" in r]
+    return {"wall_s": time.perf_counter() - t0, "tasks": sorted(tasks, key=lambda r: r["start"]),
+            "compiles": compiles}
+
+
+def measure_timeline(work: Path) -> dict:
+    env = _cold_env(Path(tempfile.mkdtemp(prefix="timeline-", dir=work)))
+    code = "import json; from benchmarks.first_run import timeline_profile; print(json.dumps(timeline_profile()))"
+    out = subprocess.run([sys.executable, "-c", code], env=env, cwd=ROOT, capture_output=True, text=True, check=True)
+    result = json.loads(out.stdout.strip().splitlines()[-1])
+    for r in result["tasks"]:
+        print(f"  process {r['process']} {r['start']:6.1f}-{r['end']:6.1f} s, {r['cpu']:5.2f} s CPU: {r['task']}")
+    for r in sorted(result["compiles"], key=lambda r: -r["cpu"]):
+        print(f"  compile {r['cpu']:5.2f} s CPU in process {r['process']} ({r['task']}): {r['compile']}")
+    return result
+
+
 ROOT = Path(__file__).resolve().parents[1]
 
 
@@ -203,6 +278,8 @@ def main(argv=None) -> int:
                     help="also time each scene alone, cold but for the shared DOP853 integrator")
     ap.add_argument("--compiles", action="store_true",
                     help="also profile a cold `knifeedge figures` in one process: CPU and numba compiles per scene")
+    ap.add_argument("--timeline", action="store_true",
+                    help="also run a cold `knifeedge figures` with each task's process, times and CPU recorded")
     ap.add_argument("--test-command", action="store_true",
                     help="also time the README's test command from a fresh clone (minutes per repeat)")
     args = ap.parse_args(argv)
@@ -220,6 +297,9 @@ def main(argv=None) -> int:
         if args.compiles:
             print("knifeedge figures in one process, compiles recorded", flush=True)
             results["compiles"] = measure_compiles(work)
+        if args.timeline:
+            print("knifeedge figures cold, task by task", flush=True)
+            results["timeline"] = measure_timeline(work)
         if args.test_command:
             print("the README's test command", flush=True)
             results["test_command"] = measure_test_command(args.repeats, work)

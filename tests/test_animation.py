@@ -172,6 +172,20 @@ def single_motion():
     return an.motion("numerical", frames=40)
 
 
+def test_a_short_run_is_drawn_by_its_drawing_functions_as_python(single_motion, monkeypatch):
+    """``knifeedge figures`` cold (issue 25 item 4): a run of a few thousand steps calls ``body_points`` and
+    ``body_outlines`` as plain Python (compiling them costs more, 0.2-1 s of CPU each); a longer one calls the
+    compiled ``body_points`` (once a step) but still ``body_outlines`` as Python (once a frame)."""
+    mo = single_motion
+    mod = mo.model.module
+    assert mo.run_t.size <= an.DRAW_AS_PYTHON_UP_TO
+    assert mo._drawing_function("body_points") is mod.body_points.py_func
+    assert mo._drawing_function("body_outlines") is mod.body_outlines.py_func
+    monkeypatch.setattr(an, "DRAW_AS_PYTHON_UP_TO", mo.run_t.size - 1)
+    assert mo._drawing_function("body_points") is mod.body_points
+    assert mo._drawing_function("body_outlines") is mod.body_outlines.py_func
+
+
 def test_frame_times_are_denser_around_the_reversal(single_motion):
     mo = single_motion
     t = mo.t

@@ -38,6 +38,12 @@ FORMATS = (".gif", ".mp4")
 #: largest tilt (rad) that the automatic magnification aims for (about 23 degrees)
 TARGET_TILT = 0.4
 _NICE = (1, 2, 3, 4, 5, 10, 20, 30, 50, 100, 200, 300, 500, 1000)
+#: a run of at most this many steps is drawn by the model's ``body_points`` as plain Python (``py_func``): ~10 us
+#: a call, once a step and twice a frame, so a few thousand calls cost less than compiling it (0.3-1 s of CPU,
+#: cold); a longer run (scene numerical2's 28,714 steps) calls the compiled one.  ``body_outlines`` (0.3-0.5 ms
+#: a call as Python, 2-3 us compiled) is called once a frame only: always as Python (a few hundred frames cost
+#: less than its compile, 0.2-0.9 s)
+DRAW_AS_PYTHON_UP_TO = 10_000
 
 
 @dataclass
@@ -80,13 +86,21 @@ class Motion:
     def drawing(self) -> dict:
         return self.model.module.DRAWING
 
+    def _drawing_function(self, name: str):
+        """The module's ``body_points`` (compiled for a run of more than :data:`DRAW_AS_PYTHON_UP_TO` steps) or
+        ``body_outlines``, else as plain Python."""
+        f = getattr(self.model.module, name)
+        compiled = name == "body_points" and self.run_t.size > DRAW_AS_PYTHON_UP_TO
+        return f if compiled else getattr(f, "py_func", f)
+
     def points(self, k: int, magnify: float = 1.0) -> np.ndarray:
         """World coordinates of ``DRAWING["points"]`` at frame ``k``, tilts multiplied by ``magnify``; (n_points, 3)."""
-        return self.model.module.body_points(self._state(k, magnify), self.p)
+        return self._drawing_function("body_points")(self._state(k, magnify), self.p)
 
     def outlines(self, k: int, u: np.ndarray, magnify: float = 1.0) -> np.ndarray:
         """``DRAWING["outlines"]`` at frame ``k``; shape (n_outlines, len(u), 3)."""
-        return self.model.module.body_outlines(self._state(k, magnify), self.p, np.ascontiguousarray(u, dtype=float))
+        return self._drawing_function("body_outlines")(self._state(k, magnify), self.p,
+                                                       np.ascontiguousarray(u, dtype=float))
 
     def _state(self, k: int, magnify: float) -> np.ndarray:
         s = np.array(self.y[:, k], dtype=float)
@@ -100,7 +114,7 @@ class Motion:
         c = self.drawing["points"].index(self.drawing["contact"])
         if not whole_run:
             return np.array([self.points(k)[c] for k in range(self.t.size)])
-        f = self.model.module.body_points
+        f = self._drawing_function("body_points")
         return np.array([f(np.ascontiguousarray(self.run_y[:, j]), self.p)[c] for j in range(self.run_t.size)])
 
     def max_tilt(self) -> float:

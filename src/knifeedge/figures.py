@@ -118,9 +118,10 @@ def warm_lyapunov(model: str, fidelity: str) -> str:
 
 def warm_parts(model: str, fidelity: str, pose: bool, method: str, drawing: bool = False) -> bool:
     """Compile (or load from the cache) only the model's parts of an adaptive method's integrator, not the
-    integrator they plug into, and with ``drawing`` the functions that draw its body (``body_points``,
-    ``body_outlines``, for the arrays an animation passes them); False if the method has no such parts
-    (fixed step) or the model no such form."""
+    integrator they plug into, and with ``drawing`` the function that places its body (``body_points``, for
+    the arrays an animation passes it: compiled for long runs, :data:`knifeedge.animation.DRAW_AS_PYTHON_UP_TO`;
+    ``body_outlines`` is always called as Python); False if the method has no such parts (fixed step) or the
+    model no such form."""
     from .integrators import kernel_module
     from .models import load
 
@@ -136,10 +137,9 @@ def warm_parts(model: str, fidelity: str, pose: bool, method: str, drawing: bool
         from numba import types
 
         vector = types.float64[::1]
-        for name, n_args in (("body_points", 2), ("body_outlines", 3)):
-            f = getattr(m.module, name, None)
-            if hasattr(f, "compile"):
-                f.compile((vector,) * n_args)
+        f = getattr(m.module, "body_points", None)
+        if hasattr(f, "compile"):
+            f.compile((vector, vector))
     return True
 
 

@@ -29,12 +29,29 @@ class Section:
         return self.y[self.state_names.index(name)]
 
 
+def _rhs(m: Model):
+    """``rhs(y, p)``: the rates of the model's state.  Where this process has compiled the model's ``jvp_into``
+    already (the Lyapunov loop's, as in scene ``celt_chaos``), that function with no columns, not ``m.rhs``
+    (compiling the celt's cost 1.1 s of CPU besides)."""
+    jvp = getattr(m.module, "jvp_into", None)
+    if m.pose or m.input_names or not getattr(jvp, "signatures", None):
+        return lambda y, p: m.rhs(0.0, y, p)
+    none = np.empty((len(m.state_names), 0))
+
+    def rhs(y, p):
+        ds = np.empty(y.size)
+        jvp(y, p, none, ds, none)
+        return ds
+    return rhs
+
+
 def _rates(m: Model, section: str, y: np.ndarray, p: np.ndarray) -> np.ndarray:
     """d(section)/dt at each column of ``y``: the state's rate, or the event function along the flow."""
     out = np.empty(y.shape[1])
+    rhs = _rhs(m)
     for k in range(y.shape[1]):
         yk = np.ascontiguousarray(y[:, k])
-        f = m.rhs(0.0, yk, p)
+        f = rhs(yk, p)
         if section in m.state_names:
             out[k] = f[m.index(section)]
             continue

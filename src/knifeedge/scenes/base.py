@@ -46,14 +46,14 @@ class SceneResult:
         verdict = "n/a" if supported is None else ("supports" if supported else "contradicts")
         self.claims.append((text, verdict, evidence))
 
-    def figure(self):
-        """A new matplotlib figure with this scene drawn on it."""
+    def figure(self, dpi: float | None = None):
+        """A new matplotlib figure with this scene drawn on it (at ``dpi``, default matplotlib's)."""
         import matplotlib
 
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
 
-        fig = plt.figure(figsize=self.scene.figsize)
+        fig = plt.figure(figsize=self.scene.figsize, dpi=dpi)
         self.scene.draw(self, fig)
         return fig
 
@@ -63,7 +63,7 @@ class SceneResult:
 
         path = Path(path)
         path.parent.mkdir(parents=True, exist_ok=True)
-        fig = self.figure()
+        fig = self.figure(dpi)  # drawn at the dpi it is saved at: the texts are laid out once, not twice
         fig.savefig(path, dpi=dpi)
         plt.close(fig)
         return path
