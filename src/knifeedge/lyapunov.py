@@ -91,6 +91,8 @@ def _rk4_update(x, h, d1, d2, d3, d4):
 _VECTOR = types.float64[::1]
 _MATRIX = types.float64[:, ::1]
 _JVP = types.FunctionType(types.none(_VECTOR, _VECTOR, _MATRIX, _VECTOR, _MATRIX))
+#: ``jvp1_into(s, p, _v, ds, _dv)``: the product of one vector (the largest exponent's loop)
+_JVP1 = types.FunctionType(types.none(_VECTOR, _VECTOR, _VECTOR, _VECTOR, _VECTOR))
 _MATRIX_OF_STATE = types.FunctionType(_MATRIX(_VECTOR, _VECTOR))
 _SIGNATURE = (_JVP, _MATRIX_OF_STATE, _VECTOR, _MATRIX, _VECTOR, types.float64, types.int64, types.int64)
 
@@ -146,7 +148,7 @@ _A = np.zeros((7, 6))
 _A[:6, :5] = DP54_A
 _A[6] = DP54_B
 _E = DP54_E
-_ADAPTIVE_SIGNATURE = (_JVP, _MATRIX_OF_STATE, _VECTOR, _MATRIX, _VECTOR, types.float64,
+_ADAPTIVE_SIGNATURE = (_JVP, _JVP1, _MATRIX_OF_STATE, _VECTOR, _MATRIX, _VECTOR, types.float64,
                        types.int64, types.float64, types.float64, types.float64, types.float64, types.int64)
 
 
@@ -229,8 +231,29 @@ def _put(row, ds, dq):
         row[ds.size + i] = dq[i]
 
 
+@njit(cache=True, inline="always")
+def _stage(jvp_into, jvp1_into, z, p, n, k, row, ds, dQ):
+    """``row`` = the rates at the state ``z[:n]`` and the derivatives of the ``k`` tangent vectors ``z[n:]`` (row by
+    row): one vector by ``jvp1_into``, several by ``jvp_into`` through the buffers ``ds``, ``dQ``."""
+    if k == 1:
+        jvp1_into(z[:n], p, z[n:], row[:n], row[n:])
+    else:
+        jvp_into(z[:n], p, z[n:].reshape((n, k)), ds, dQ)
+        _put(row, ds, dQ.ravel())
+
+
 @njit(cache=True)
-def _benettin_adaptive(jvp_into, gradients, y, Q, p, tau, n_blocks, rtol, atol, tangent_tol, h, max_steps):
+def _no_product(s, p, V, ds, out):
+    """In place of the ``jvp_into`` a loop of one tangent vector never calls (no model compiles it for nothing)."""
+
+
+@njit(cache=True)
+def _no_product1(s, p, v, ds, dv):
+    """In place of the ``jvp1_into`` a loop of several tangent vectors never calls."""
+
+
+@njit(cache=True)
+def _benettin_adaptive(jvp_into, jvp1_into, gradients, y, Q, p, tau, n_blocks, rtol, atol, tangent_tol, h, max_steps):
     """As :func:`_benettin`, the state and the tangent vectors stepped together by DOP853 (SciPy's, ``simulate``'s
     default method) over ``n_blocks tau``, the errors of the state controlled to ``rtol``, ``atol``, the tangent
     vectors' to ``tangent_tol``.  The tangent vectors are re-orthonormalized at the end of the first step at or
@@ -240,23 +263,18 @@ def _benettin_adaptive(jvp_into, gradients, y, Q, p, tau, n_blocks, rtol, atol, 
     n, k = Q.shape
     N = n * (k + 1)
     sums, hist, hist_t = np.zeros(k), np.empty((n_blocks, k)), np.empty(n_blocks)
-    # one vector z: the state, then the tangent vectors row by row, so that one loop serves both in every stage;
-    # the stages' rows of K are filled from fixed buffers (a matrix view of a row per call would cost more)
+    # one vector z: the state, then the tangent vectors row by row, so that one loop serves both in every stage
     z, zt, z_new, K = np.empty(N), np.empty(N), np.empty(N), np.empty((_S8, N))
-    y_z, Q_z, y_t, Q_t = z[:n], z[n:].reshape((n, k)), zt[:n], zt[n:].reshape((n, k))
-    ds, dQ = np.empty(n), np.empty((n, k))
-    dq = dQ.ravel()
+    y_z, Q_z, ds, dQ = z[:n], z[n:].reshape((n, k)), np.empty(n), np.empty((n, k))
     _copy(y_z, y)
     _copy(z[n:], Q.ravel())
     t, t_final, t_qr, b, accepted, rejected = 0.0, n_blocks * tau, tau, 0, 0, 0
-    jvp_into(y_z, p, Q_z, ds, dQ)
-    _put(K[0], ds, dq)
+    _stage(jvp_into, jvp1_into, z, p, n, k, K[0], ds, dQ)
     while t_final - t > 1e-12 * tau:
         step = min(h, t_final - t)
         for s in range(1, _S8):
             _dop853_point(zt, z, K, step, s)
-            jvp_into(y_t, p, Q_t, ds, dQ)
-            _put(K[s], ds, dq)
+            _stage(jvp_into, jvp1_into, zt, p, n, k, K[s], ds, dQ)
         _dop853_point(z_new, z, K, step, _S8)
         # the tangent vectors are controlled too (at an equilibrium the state alone would let the step grow past
         # the stability of the tangent dynamics), relative to their unit length after each QR; the rate at the
@@ -274,8 +292,7 @@ def _benettin_adaptive(jvp_into, gradients, y, Q, p, tau, n_blocks, rtol, atol, 
                 hist[b] = sums / t
                 b += 1
                 t_qr = min(t_final, (math.floor(t / tau + 1e-9) + 1) * tau)
-            jvp_into(y_z, p, Q_z, ds, dQ)  # the first stage of the next step
-            _put(K[0], ds, dq)
+            _stage(jvp_into, jvp1_into, z, p, n, k, K[0], ds, dQ)  # the first stage of the next step
         else:
             rejected += 1
         h = _controlled(h, step, err, -1.0 / 8.0)
@@ -560,9 +577,18 @@ def lyapunov(m: Model, y0, p, t_end: float, k: int | None = None, h: float | Non
         raise ValueError(f"`tangents` must be 'magnus', 'rk' or None (Magnus for more than one exponent), got "
                          f"{tangents!r}")
     if rtol is not None:
-        if tangents == "magnus" or (tangents is None and Q.shape[1] > 1):
+        magnus_tangents = tangents == "magnus" or (tangents is None and Q.shape[1] > 1)
+        if magnus_tangents:
             functions = (mod.rhs_into, *functions)
-        return _adaptive(functions, y, Q, p, span, float(t0), h, tau, rtol, atol, max_steps, tangent_rtol)
+        elif Q.shape[1] > 1:
+            functions = (mod.jvp_into, _no_product1, mod.invariant_gradients)
+        elif hasattr(mod, "jvp1_into"):
+            functions = (_no_product, mod.jvp1_into, mod.invariant_gradients)
+        else:
+            raise ValueError(f"the module of {m.name} ({m.fidelity}) was written without the product of one vector "
+                             f"(jvp1_into) by an older knifeedge: regenerate it (make derive, or knifeedge derive)")
+        return _adaptive(functions, magnus_tangents, y, Q, p, span, float(t0), h, tau, rtol, atol, max_steps,
+                         tangent_rtol)
     if atol is not None or tangent_rtol is not None:
         raise ValueError("`atol` and `tangent_rtol` need `rtol` (the adaptive method); with a fixed step `h` leave "
                          "them out")
@@ -578,16 +604,18 @@ def lyapunov(m: Model, y0, p, t_end: float, k: int | None = None, h: float | Non
 
 #: the Magnus tangents' default ``tangent_rtol`` in units of ``rtol``: their sixth-order steps are controlled by the
 #: fourth-order estimate, so that at ``10 rtol`` their exponents are about as accurate as Dormand-Prince 5(4)
-#: tangents at ``rtol`` (the Runge-Kutta tangents before they moved to DOP853, which is more accurate still; measured from references at ``tangent_rtol = 1e-4 rtol``: through the celt's reversal, 60 s, rtol
+#: tangents at ``rtol`` (the Runge-Kutta tangents before they moved to DOP853, more accurate still; measured
+#: from references at ``tangent_rtol = 1e-4 rtol``: through the celt's reversal, 60 s, rtol
 #: 1e-8: 2.7e-7 against 3.4e-7, rtol 1e-10: 1.1e-9 against 8.7e-10; over 10^4 s, rtol 1e-8: 1.6e-9 against 3.6e-8;
 #: docs/performance.md), at ``100 rtol`` 13-20x less accurate
 MAGNUS_TANGENT_RTOL = 10.0
 
 
-def _adaptive(functions, y, Q, p, span, t0, h, tau, rtol, atol, max_steps, tangent_rtol) -> LyapunovResult:
+def _adaptive(functions, magnus_tangents, y, Q, p, span, t0, h, tau, rtol, atol, max_steps,
+              tangent_rtol) -> LyapunovResult:
     atol = rtol * 1e-2 if atol is None else atol
     if tangent_rtol is None:
-        tangent_rtol = MAGNUS_TANGENT_RTOL * rtol if len(functions) == 3 else rtol
+        tangent_rtol = MAGNUS_TANGENT_RTOL * rtol if magnus_tangents else rtol
     for name, v in (("rtol", rtol), ("atol", atol), ("tangent_rtol", tangent_rtol)):
         if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
             raise ValueError(f"`{name}` must be a positive tolerance, got {v!r}")
@@ -600,7 +628,7 @@ def _adaptive(functions, y, Q, p, span, t0, h, tau, rtol, atol, max_steps, tange
     tau = span / n_blocks
     tolerances = float(rtol), float(atol), float(tangent_rtol)
     tangent_steps = tangent_rejected = 0
-    if len(functions) == 3:
+    if magnus_tangents:
         y, Q, sums, hist_t, hist, accepted, rejected, tangent_steps, tangent_rejected = _magnus_kernel()(
             *functions, magnus.magnus_step, y, Q, p, tau, n_blocks, *tolerances, min(h, tau), max_steps)
     else:
@@ -609,11 +637,11 @@ def _adaptive(functions, y, Q, p, span, t0, h, tau, rtol, atol, max_steps, tange
     if accepted < 0:
         raise RuntimeError(f"the variational equations needed more than `max_steps` = {max_steps} steps; raise it "
                            f"or loosen `rtol`")
-    method = (f"{'DP54' if len(functions) == 3 else 'DOP853'} rtol {rtol:g} atol {atol:g}"
+    method = (f"{'DP54' if magnus_tangents else 'DOP853'} rtol {rtol:g} atol {atol:g}"
               + (f" tangent_rtol {tangent_rtol:g}" if tangent_rtol != rtol else "")
-              + (", Magnus tangents" if len(functions) == 3 else ""))
+              + (", Magnus tangents" if magnus_tangents else ""))
     # the Magnus loop's history is not evenly spaced (a long tangent step passes several multiples of tau)
-    tail_after = t0 + 0.75 * span if len(functions) == 3 else None
+    tail_after = t0 + 0.75 * span if magnus_tangents else None
     return _result(y, hist_t + t0, hist, span / accepted, tau, accepted, method, rejected, tangent_steps,
                    tangent_rejected, tail_after)
 
