@@ -536,22 +536,23 @@ def lyapunov(m: Model, y0, p, t_end: float, k: int | None = None, h: float | Non
     number of steps.  With ``rtol`` (and ``atol``, default ``rtol * 1e-2``): the errors of the state and of the
     tangent vectors controlled as in ``simulate`` (the tangent vectors, of unit length after each
     re-orthonormalization, to ``tangent_rtol``, relative and absolute; default ``rtol``, and
-    ``MAGNUS_TANGENT_RTOL * rtol`` for Magnus tangents), ``h``
-    the first step; the tangent vectors are re-orthonormalized at the end of the first step at or past each
-    multiple of ``tau`` (default ``span / 1000``, rounded to divide the span), the last time at ``t_end``;
-    ``max_steps`` bounds the steps.  ``tangents`` (with ``rtol``): ``"magnus"`` steps the tangent vectors by the
-    sixth-order Magnus exponential (:mod:`knifeedge.magnus`; ``J`` at the Gauss nodes of the dense output of the
-    state's Dormand-Prince 5(4) steps, as ``simulate(method="DP54")``) over steps of their own, each within the state's steps, so that where ``J`` hardly changes (a settled spin)
-    neither they nor the state take more steps than the state alone (they are re-orthonormalized after every step,
-    which is bounded by the spread of the vectors' lengths it causes, not by ``tau``; the history is recorded at
-    the end of the first tangent step at or past each multiple of ``tau``); ``"rk"`` steps the state and them together by DOP853
-    (as ``simulate``'s default method; the steps then also resolve the tangent vectors' oscillation; a step costs
-    less: one Jacobian-vector product per vector and stage, no full Jacobian, no matrix exponential).  Default: Magnus for
-    more than one exponent, Runge-Kutta for the largest alone (measured: docs/performance.md).  A looser
-    ``tangent_rtol`` takes fewer tangent steps; the exponents then move by about that tolerance for Runge-Kutta
-    tangents, by much less for Magnus tangents, whose sixth-order steps are controlled by the fourth-order
-    estimate: hence their looser default, with which their exponents are about as accurate as the Runge-Kutta
-    tangents' at ``rtol`` (docs/performance.md, "Lyapunov exponents").
+    ``MAGNUS_TANGENT_RTOL * rtol`` for Magnus tangents), ``h`` the first step; the tangent vectors are
+    re-orthonormalized at the end of the first step at or past each multiple of ``tau`` (default ``span / 1000``,
+    rounded to divide the span), the last time at ``t_end``; ``max_steps`` bounds the steps.  ``tangents`` (with
+    ``rtol``): ``"magnus"`` steps the tangent vectors by the sixth-order Magnus exponential
+    (:mod:`knifeedge.magnus`; ``J`` at the Gauss nodes of the dense output of the state's Dormand-Prince 5(4)
+    steps, as ``simulate(method="DP54")``) over steps of their own, each within the state's steps, so that where
+    ``J`` hardly changes (a settled spin) neither they nor the state take more steps than the state alone (they are
+    re-orthonormalized after every step, which is bounded by the spread of the vectors' lengths it causes, not by
+    ``tau``; the history is recorded at the end of the first tangent step at or past each multiple of ``tau``);
+    ``"rk"`` steps the state and them together by DOP853 (``simulate``'s default method; the steps then also
+    resolve the tangent vectors' oscillation; a step costs less: one Jacobian-vector product per vector and stage,
+    no full Jacobian, no matrix exponential).  Default: Magnus for more than one exponent, DOP853 for the largest
+    alone (measured: docs/performance.md).  A looser ``tangent_rtol`` takes fewer tangent steps; the exponents
+    then move by about that tolerance for Runge-Kutta tangents, by much less for Magnus tangents, whose
+    sixth-order steps are controlled by the fourth-order estimate: hence their looser default, with which their
+    exponents are about as accurate as Dormand-Prince 5(4) tangents at ``rtol`` (DOP853's are more accurate still;
+    docs/performance.md, "Lyapunov exponents").
     """
     p = m.check_params(p)
     y = m._closed(y0).copy()
