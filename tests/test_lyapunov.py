@@ -160,6 +160,17 @@ def test_bad_arguments_are_named():
         ke.lyapunov(m, y0, p, 1.0, rtol=1e-8, tangents="euler")
 
 
+def test_a_module_without_the_product_of_one_vector_is_to_be_regenerated(monkeypatch):
+    """The largest exponent's step-controlled loop calls ``jvp1_into``, which a module written by an older knifeedge
+    lacks: it says so, before anything is compiled."""
+    m = ke.load("single_mode")
+    p = m.params(m.default_params)
+    y0 = m.state(theta=0.01, theta_dot=0.0, phi_dot=0.1)
+    monkeypatch.delattr(m.module, "jvp1_into")
+    with pytest.raises(ValueError, match="jvp1_into.*regenerate it"):
+        ke.lyapunov(m, y0, p, 1.0, k=1, h=0.01, rtol=1e-8)
+
+
 @pytest.mark.slow
 def test_at_an_asymptotically_stable_steady_spin_the_exponents_are_the_eigenvalues_real_parts():
     m = ke.load("celt")
