@@ -317,6 +317,26 @@ def jvp_into(s, p, V, ds, out):
         out[1, _j] = _k1*_v0 + _k2*_v1
 
 
+@njit(cache=True)
+def jvp1_into(s, p, _v, ds, _dv):
+    """``jvp_into`` of one column: d(state)/dt into ``ds`` and ``J(s) _v`` into ``_dv`` (vectors of length 2; 24 operations)."""
+    v = s[0]
+    phi_dot = s[1]
+    a = p[0]
+    k = p[1]
+    _p0 = a*phi_dot
+    _p1 = 1/((a*a) + (k*k))
+    _k0 = 2*_p0
+    _k1 = -_p0*_p1
+    _k2 = -_p1*a*v
+    ds[0] = a*(phi_dot*phi_dot)
+    ds[1] = -a*phi_dot*v/((a*a) + (k*k))
+    _v0 = _v[0]
+    _v1 = _v[1]
+    _dv[0] = _k0*_v1
+    _dv[1] = _k1*_v0 + _k2*_v1
+
+
 
 #: families of steady motions (derivation/steady.py): name -> the family's parameter ``value`` (``value_state`` is
 #: the state equal to it), what the motion is, and names of the modes by their largest state
@@ -450,4 +470,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 2
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '18948fb2a57f9b3e5ff8029b618aaf059b60c84f16773289d5f7c516ec300f0f'
+MODULE_SHA256 = '06a86873f88df4810b9e2701ac91622a54d8ed36dec8a2a05d2f277030932985'

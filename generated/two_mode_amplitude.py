@@ -349,6 +349,44 @@ def jvp_into(s, p, V, ds, out):
         out[2, _j] = _k4*_v1 + _k5*_v0
 
 
+@njit(cache=True)
+def jvp1_into(s, p, _v, ds, _dv):
+    """``jvp_into`` of one column: d(state)/dt into ``ds`` and ``J(s) _v`` into ``_dv`` (vectors of length 3; 51 operations)."""
+    A1 = s[0]
+    A2 = s[1]
+    A_phi = s[2]
+    g = p[0]
+    ell = p[1]
+    L = p[2]
+    D = p[3]
+    alpha = p[4]
+    _c0 = ((1.0/4.0))*D*math.sin(2*alpha)
+    _c1 = A_phi*_c0
+    _c2 = (L*L)
+    _c3 = (ell*ell)
+    _c4 = _c2 + _c3
+    _c5 = 1/_c4
+    _p0 = 1/ell
+    _p1 = _c5*ell
+    _p2 = 2*_c0*_c5*g/_c2
+    _k0 = -_c1*_p0
+    _k1 = -A1*_p0
+    _k2 = _c1*_p1
+    _k3 = A2*_p1
+    _k4 = -A2*_c3*_p2
+    _k5 = A1*_c4*_p2
+    ds[0] = -A1*_c1/ell
+    ds[1] = A2*_c1*_c5*ell
+    ds[2] = _c0*_c5*g*((A1*A1)*_c4 - (A2*A2)*_c3)/_c2
+    _v0 = _v[0]
+    _v1 = _v[1]
+    _v2 = _v[2]
+    _t1 = _c0*_v2
+    _dv[0] = _k0*_v0 + _k1*_t1
+    _dv[1] = _k2*_v1 + _k3*_t1
+    _dv[2] = _k4*_v1 + _k5*_v0
+
+
 
 #: families of steady motions (derivation/steady.py): name -> the family's parameter ``value`` (``value_state`` is
 #: the state equal to it), what the motion is, and names of the modes by their largest state
@@ -500,4 +538,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 5
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'd762213f6101d96cb334bd205dd5f2d81484eb674247377bedc8a3c3ac26f352'
+MODULE_SHA256 = '49237ee4063ab7c529e29a3be255f91b3f64d4a4cd88ea84bf753bf5856abefa'

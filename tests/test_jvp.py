@@ -1,4 +1,5 @@
-"""The emitted Jacobian-vector product ``jvp_into(s, p, V, ds, out)`` (``derivation/jacobian.py::jvp_source``).
+"""The emitted Jacobian-vector products ``jvp_into(s, p, V, ds, out)`` and ``jvp1_into(s, p, _v, ds, _dv)`` (one
+vector; ``derivation/jacobian.py::jvp_source``).
 
 Every generated module (iterated from the registry) writes the rates ``ds`` and ``J(s) V`` for the columns of
 ``V``, one forward pass through the right-hand side's common subexpressions per column.  The reference is the
@@ -39,6 +40,21 @@ def test_jvp_is_the_jacobian_times_the_columns(key):
         scale = max(1.0, float(np.abs(want).max()))
         assert got.shape == want.shape and np.abs(got - want).max() <= 1e-12 * scale, key
         np.testing.assert_allclose(rates, _rhs(mod, y, p), rtol=1e-14, atol=1e-14)  # the value with the derivative
+
+
+@pytest.mark.parametrize("key", KEYS)
+def test_the_product_of_one_vector_is_the_jacobian_times_it(key):
+    """``jvp1_into(s, p, _v, ds, _dv)``, the same lines without the loop over columns (the largest Lyapunov exponent's
+    loop calls it), against the emitted full Jacobian times ``v``."""
+    mod = _module(key)
+    rng = np.random.default_rng(11)
+    y, p = _point(mod, rng)
+    v = rng.standard_normal(len(y))
+    want = mod.jacobian.py_func(y, p) @ v
+    ds, dv = np.full(len(y), np.nan), np.full(len(y), np.nan)
+    mod.jvp1_into.py_func(y, p, v, ds, dv)
+    assert np.abs(dv - want).max() <= 1e-12 * max(1.0, float(np.abs(want).max())), key
+    np.testing.assert_allclose(ds, _rhs(mod, y, p), rtol=1e-14, atol=1e-14)
 
 
 def test_a_wrong_column_is_caught():

@@ -50,7 +50,8 @@ def test_exponents_do_not_depend_on_the_renormalization_interval():
 
 @pytest.mark.slow  # compiles the step-controlled loop (~7 s of CPU cold); its refusals: test_bad_arguments_are_named
 def test_step_control_gives_the_fixed_steps_exponents():
-    """Dormand-Prince 5(4) with the state's error controlled (``rtol``) and RK4 with a fine fixed step are two
+    """Step control (``rtol``: Dormand-Prince 5(4) for the state with Magnus tangents, the spectrum's default;
+    DOP853 for the state and the tangents together, the largest exponent's) and RK4 with a fine fixed step are
     discretizations of the same variational equations: their exponents agree to the integration error, and the
     sum is the time-averaged divergence (Liouville's formula, as above)."""
     m = ke.load("two_mode")
@@ -61,6 +62,14 @@ def test_step_control_gives_the_fixed_steps_exponents():
     assert adaptive.method.startswith("DP54") and 0 < adaptive.steps < fixed.steps and adaptive.tau == 0.5
     np.testing.assert_allclose(adaptive.exponents, fixed.exponents, rtol=0, atol=1e-8)
     np.testing.assert_allclose(adaptive.y, fixed.y, rtol=0, atol=1e-9)
+    for kw in ({"k": 1}, {"tangents": "rk"}):
+        both = ke.lyapunov(m, y0, p, 40.0, tau=0.5, rtol=1e-11, **kw)
+        rk4 = ke.lyapunov(m, y0, p, 40.0, h=0.005, tau=0.5, **{key: v for key, v in kw.items() if key == "k"})
+        assert both.method.startswith("DOP853") and 0 < both.steps < adaptive.steps and both.tau == 0.5
+        np.testing.assert_allclose(both.exponents, rk4.exponents, rtol=0, atol=1e-8)
+        np.testing.assert_allclose(both.y, rk4.y, rtol=0, atol=1e-9)
+    with pytest.raises(RuntimeError, match="`max_steps`"):
+        ke.lyapunov(m, y0, p, 40.0, k=1, tau=0.5, rtol=1e-11, max_steps=10)
     with pytest.raises(ValueError, match="`atol`"):
         ke.lyapunov(m, y0, p, 1.0, h=0.01, atol=1e-9)
     with pytest.raises(ValueError, match="`rtol`"):
@@ -149,6 +158,17 @@ def test_bad_arguments_are_named():
         ke.lyapunov(m, y0, p, 1.0, rtol=-1.0)
     with pytest.raises(ValueError, match="`tangents`"):
         ke.lyapunov(m, y0, p, 1.0, rtol=1e-8, tangents="euler")
+
+
+def test_a_module_without_the_product_of_one_vector_is_to_be_regenerated(monkeypatch):
+    """The largest exponent's step-controlled loop calls ``jvp1_into``, which a module written by an older knifeedge
+    lacks: it says so, before anything is compiled."""
+    m = ke.load("single_mode")
+    p = m.params(m.default_params)
+    y0 = m.state(theta=0.01, theta_dot=0.0, phi_dot=0.1)
+    monkeypatch.delattr(m.module, "jvp1_into")
+    with pytest.raises(ValueError, match="jvp1_into.*regenerate it"):
+        ke.lyapunov(m, y0, p, 1.0, k=1, h=0.01, rtol=1e-8)
 
 
 @pytest.mark.slow
@@ -288,11 +308,12 @@ def test_magnus_tangent_steps_at_a_saddle_are_bounded_by_the_vectors_spread_not_
 def test_magnus_tangents_agree_with_runge_kutta_tangents_through_a_reversal():
     """Schoemer's celt spun the wrong way (-2 rad/s, tilted 0.05 rad) reverses within 20 s (scene
     ``celt_schoemer``): along this strongly varying Jacobian the Magnus tangent steps (their own steps, J from the
-    state's dense output) and Dormand-Prince stages on the variational equations are two discretizations of the same
-    tangent flow, so over 60 s their five exponents agree to about the tolerance, on the same trajectory.  At their
-    defaults (Magnus: ``tangent_rtol = MAGNUS_TANGENT_RTOL rtol``, its sixth-order steps being controlled by a
-    fourth-order estimate) the Magnus exponents are about as accurate as the Runge-Kutta ones, both measured from
-    Magnus tangents at ``tangent_rtol = 1e-4 rtol``; neither the Magnus steps nor the exponents depend on ``tau``."""
+    state's dense output) and DOP853 stages on the variational equations are two discretizations of the same tangent
+    flow, so over 60 s their five exponents agree to about the tolerance, on the same trajectory.  At their defaults
+    (Magnus: ``tangent_rtol = MAGNUS_TANGENT_RTOL rtol``, its sixth-order steps being controlled by a fourth-order
+    estimate) both are accurate far inside the exponents' own uncertainty, measured from Magnus tangents at
+    ``tangent_rtol = 1e-4 rtol`` (measured at rtol 1e-8: Magnus 2.7e-7, DOP853 stages 2.4e-8, Dormand-Prince 5(4)
+    stages, the earlier Runge-Kutta tangents, 3.4e-7); neither the Magnus steps nor the exponents depend on ``tau``."""
     m = ke.load("celt")
     p = m.preset("schoemer", sigma=0.0)
     y0 = m.initial_state(n0=(np.sin(0.05), 0.0, np.cos(0.05)), omega0=(0.0, 0.0, -2.0))
@@ -306,7 +327,7 @@ def test_magnus_tangents_agree_with_runge_kutta_tangents_through_a_reversal():
     ref, rk, magnus = (ke.lyapunov(m, y0, p, 60.0, tau=1.0, rtol=1e-8, **kw)
                        for kw in ({"tangent_rtol": 1e-12}, {"tangents": "rk"}, {}))
     errors = [np.abs(r.exponents - ref.exponents).max() for r in (magnus, rk)]
-    assert errors[0] <= 2.0 * errors[1] and errors[1] <= 1e-3 * ref.uncertainty.min(), errors
+    assert max(errors) <= 1e-3 * ref.uncertainty.min(), errors
     # the re-orthonormalization interval: neither the Magnus steps nor (beyond the tolerance) the exponents depend
     # on it (it sets the history's times and when the invariants' round-off is projected away)
     for tau in (0.25, 5.0):

@@ -7,8 +7,9 @@ vectors are re-orthonormalized (modified Gram-Schmidt, the QR of ChaosTools.jl's
 logarithms of the diagonal of R are summed.  The tangent vectors start orthogonal to the gradients of the
 closed state's invariants (``STATE_INVARIANTS``), so they span the physical phase space, which the tangent flow
 keeps (the round-off that leaks out of it is projected away before each re-orthonormalization).  With step
-control (``rtol``) the state takes Dormand-Prince 5(4) steps and the tangent vectors, by default, exponential
-(Magnus) steps of their own (:func:`_benettin_magnus`).
+control (``rtol``) the state and the tangent vectors take DOP853 steps together (:func:`_benettin_adaptive`), or
+the state Dormand-Prince 5(4) steps and the tangent vectors exponential (Magnus) steps of their own
+(:func:`_benettin_magnus`; the default for more than one exponent).
 """
 from __future__ import annotations
 
@@ -18,7 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit, types
 
-from .integrators.methods import DP54_A, DP54_B, DP54_E, DP54_P
+from .integrators.methods import DP54_A, DP54_B, DP54_E, DP54_P, erk_arrays
 from . import magnus
 from .magnus import GAUSS_NODES
 from .models import Model
@@ -90,6 +91,8 @@ def _rk4_update(x, h, d1, d2, d3, d4):
 _VECTOR = types.float64[::1]
 _MATRIX = types.float64[:, ::1]
 _JVP = types.FunctionType(types.none(_VECTOR, _VECTOR, _MATRIX, _VECTOR, _MATRIX))
+#: ``jvp1_into(s, p, _v, ds, _dv)``: the product of one vector (the largest exponent's loop)
+_JVP1 = types.FunctionType(types.none(_VECTOR, _VECTOR, _VECTOR, _VECTOR, _VECTOR))
 _MATRIX_OF_STATE = types.FunctionType(_MATRIX(_VECTOR, _VECTOR))
 _SIGNATURE = (_JVP, _MATRIX_OF_STATE, _VECTOR, _MATRIX, _VECTOR, types.float64, types.int64, types.int64)
 
@@ -138,13 +141,14 @@ def _kernel():
     return _benettin.overloads[_SIGNATURE].entry_point
 
 
-#: Dormand-Prince 5(4) (SciPy's RK45; the project's ``DP54``): row s < 6 the coefficients of stage s, row 6 the
-#: weights of the new point (whose rate is the seventh stage, FSAL); ``_E`` the error estimator over the 7
+#: Dormand-Prince 5(4) (SciPy's RK45; the project's ``DP54``), the state's steps of the Magnus loop: row s < 6 the
+#: coefficients of stage s, row 6 the weights of the new point (whose rate is the seventh stage, FSAL); ``_E`` the
+#: error estimator over the 7
 _A = np.zeros((7, 6))
 _A[:6, :5] = DP54_A
 _A[6] = DP54_B
 _E = DP54_E
-_ADAPTIVE_SIGNATURE = (_JVP, _MATRIX_OF_STATE, _VECTOR, _MATRIX, _VECTOR, types.float64,
+_ADAPTIVE_SIGNATURE = (_JVP, _JVP1, _MATRIX_OF_STATE, _VECTOR, _MATRIX, _VECTOR, types.float64,
                        types.int64, types.float64, types.float64, types.float64, types.float64, types.int64)
 
 
@@ -172,55 +176,131 @@ def _error_squares(x, x_new, K, h, rtol, atol):
     return acc
 
 
+#: Dormand-Prince 8(5,3) (SciPy's and Hairer's DOP853, ``integrators.methods``): row s < 12 of ``_A8`` the
+#: coefficients of stage s, row 12 the weights of the new point; ``_E5``, ``_E3`` its two error estimators over the
+#: 12 stages (the rate at the new point, the thirteenth stage, first same as last, enters neither)
+_DOP853 = erk_arrays("DOP853")
+_S8 = _DOP853.n_stages
+_A8 = np.ascontiguousarray(_DOP853.A[:_S8 + 1, :_S8])
+_E5, _E3 = np.ascontiguousarray(_DOP853.E5[:_S8]), np.ascontiguousarray(_DOP853.E3[:_S8])
+
+
+@njit(cache=True, inline="always")
+def _dop853_point(out, z, K, h, s):
+    """``out = z + h sum_j A[s, j] K[j]`` over the stages ``j < s`` of DOP853 (row 12: the new point); stage by stage,
+    so that the components' sums are independent (summed component by component, each waits on its previous term).
+    Inlined, as :func:`_put` (numba's IR: as calls, the two cost the loop 11 % of its time, measured)."""
+    _copy(out, z)
+    for j in range(s):
+        c = h * _A8[s, j]
+        if c != 0.0:
+            for i in range(z.size):
+                out[i] += c * K[j, i]
+
+
+#: the stages that DOP853's error estimators weigh (0, 5-11; the same for both), a constant tuple: the loop over them
+#: is unrolled
+_E_STAGES = tuple(int(j) for j in np.flatnonzero((_E5 != 0.0) | (_E3 != 0.0)))
+
+
 @njit(cache=True)
-def _benettin_adaptive(jvp_into, gradients, y, Q, p, tau, n_blocks, rtol, atol, tangent_tol, h, max_steps):
-    """As :func:`_benettin`, stepped by Dormand-Prince 5(4) over ``n_blocks tau`` with the errors of the state and
-    the tangent vectors controlled, the state's to ``rtol``, ``atol``, the tangent vectors' to ``tangent_tol``.
-    The tangent vectors are re-orthonormalized at the end of the first step at or past each multiple of ``tau``
-    (the steps are not cut there: the sums of log |R_jj| do not depend on when); returns the times and running
-    estimates of the re-orthonormalizations (at most ``n_blocks``, the last at the end), and the numbers of
-    accepted and rejected steps (``max_steps`` reached: accepted = -1)."""
+def _dop853_error(z, z_new, K, h, n, rtol, atol, tangent_tol):
+    """SciPy's DOP853 error norm of a step of ``z``: the state (its first ``n`` components, scaled by ``atol + rtol
+    |z|``), then the tangent vectors (of unit length after each QR: scaled by ``tangent_tol (1 + |z|)``)."""
+    s5, s3 = 0.0, 0.0
+    for i in range(z.size):
+        e5, e3 = 0.0, 0.0
+        for j in _E_STAGES:
+            e5 += _E5[j] * K[j, i]
+            e3 += _E3[j] * K[j, i]
+        size = max(abs(z[i]), abs(z_new[i]))
+        inverse = 1.0 / (atol + rtol * size if i < n else tangent_tol * (1.0 + size))
+        s5 += (e5 * inverse) ** 2
+        s3 += (e3 * inverse) ** 2
+    if s5 == 0.0 and s3 == 0.0:
+        return 0.0
+    return h * s5 / math.sqrt((s5 + 0.01 * s3) * z.size)
+
+
+@njit(cache=True, inline="always")
+def _put(row, ds, dq):
+    """``row = (ds, dq)`` (vectors)."""
+    for i in range(ds.size):
+        row[i] = ds[i]
+    for i in range(dq.size):
+        row[ds.size + i] = dq[i]
+
+
+@njit(cache=True, inline="always")
+def _stage(jvp_into, jvp1_into, z, p, n, k, row, ds, dQ):
+    """``row`` = the rates at the state ``z[:n]`` and the derivatives of the ``k`` tangent vectors ``z[n:]`` (row by
+    row): one vector by ``jvp1_into``, several by ``jvp_into`` through the buffers ``ds``, ``dQ``."""
+    if k == 1:
+        jvp1_into(z[:n], p, z[n:], row[:n], row[n:])
+    else:
+        jvp_into(z[:n], p, z[n:].reshape((n, k)), ds, dQ)
+        _put(row, ds, dQ.ravel())
+
+
+@njit(cache=True)
+def _no_product(s, p, V, ds, out):
+    """In place of the ``jvp_into`` a loop of one tangent vector never calls (no model compiles it for nothing)."""
+
+
+@njit(cache=True)
+def _no_product1(s, p, v, ds, dv):
+    """In place of the ``jvp1_into`` a loop of several tangent vectors never calls."""
+
+
+@njit(cache=True)
+def _benettin_adaptive(jvp_into, jvp1_into, gradients, y, Q, p, tau, n_blocks, rtol, atol, tangent_tol, h, max_steps):
+    """As :func:`_benettin`, the state and the tangent vectors stepped together by DOP853 (SciPy's, ``simulate``'s
+    default method) over ``n_blocks tau``, the errors of the state controlled to ``rtol``, ``atol``, the tangent
+    vectors' to ``tangent_tol``.  The tangent vectors are re-orthonormalized at the end of the first step at or
+    past each multiple of ``tau`` (the steps are not cut there: the sums of log |R_jj| do not depend on when);
+    returns the times and running estimates of the re-orthonormalizations (at most ``n_blocks``, the last at the
+    end), and the numbers of accepted and rejected steps (``max_steps`` reached: accepted = -1)."""
     n, k = Q.shape
+    N = n * (k + 1)
     sums, hist, hist_t = np.zeros(k), np.empty((n_blocks, k)), np.empty(n_blocks)
-    K, KQ = np.empty((7, n)), np.empty((7, n, k))
-    yt, y_new, Qt, Q_new = np.empty(n), np.empty(n), np.empty((n, k)), np.empty((n, k))
-    # flat views of the tangent vectors, so that one loop over a vector serves the state and the tangents
-    KQf, q, qt, q_new = KQ.reshape((7, n * k)), Q.ravel(), Qt.ravel(), Q_new.ravel()
+    # one vector z: the state, then the tangent vectors row by row, so that one loop serves both in every stage
+    z, zt, z_new, K = np.empty(N), np.empty(N), np.empty(N), np.empty((_S8, N))
+    y_z, Q_z, ds, dQ = z[:n], z[n:].reshape((n, k)), np.empty(n), np.empty((n, k))
+    _copy(y_z, y)
+    _copy(z[n:], Q.ravel())
     t, t_final, t_qr, b, accepted, rejected = 0.0, n_blocks * tau, tau, 0, 0, 0
-    jvp_into(y, p, Q, K[0], KQ[0])
+    _stage(jvp_into, jvp1_into, z, p, n, k, K[0], ds, dQ)
     while t_final - t > 1e-12 * tau:
         step = min(h, t_final - t)
-        for s in range(1, 6):
-            _stage_point(yt, y, step, K, s)
-            _stage_point(qt, q, step, KQf, s)
-            jvp_into(yt, p, Qt, K[s], KQ[s])
-        _stage_point(y_new, y, step, K, 6)
-        _stage_point(q_new, q, step, KQf, 6)
-        jvp_into(y_new, p, Q_new, K[6], KQ[6])
+        for s in range(1, _S8):
+            _dop853_point(zt, z, K, step, s)
+            _stage(jvp_into, jvp1_into, zt, p, n, k, K[s], ds, dQ)
+        _dop853_point(z_new, z, K, step, _S8)
         # the tangent vectors are controlled too (at an equilibrium the state alone would let the step grow past
-        # the stability of the tangent dynamics), relative to their unit length after each QR
-        err = math.sqrt((_error_squares(y, y_new, K, step, rtol, atol)
-                         + _error_squares(q, q_new, KQf, step, tangent_tol, tangent_tol)) / (n + n * k))
+        # the stability of the tangent dynamics), relative to their unit length after each QR; the rate at the
+        # new point (first same as last) enters neither estimate: it is computed once the step is accepted
+        err = _dop853_error(z, z_new, K, step, n, rtol, atol, tangent_tol)
         if err <= 1.0:
             t = t_final if step == t_final - t else t + step
-            y[:] = y_new
-            q[:] = q_new
-            K[0] = K[6]
-            KQ[0] = KQ[6]
+            _copy(z, z_new)
             accepted += 1
             if t >= t_qr - 1e-12 * tau:
-                _project_out(gradients(y, p), Q)
-                _orthonormalize(Q, sums)
+                # round-off leaks into the invariants' directions (rate 0), which would outgrow decaying directions
+                _project_out(gradients(y_z, p), Q_z)
+                _orthonormalize(Q_z, sums)
                 hist_t[b] = t
                 hist[b] = sums / t
                 b += 1
                 t_qr = min(t_final, (math.floor(t / tau + 1e-9) + 1) * tau)
-                jvp_into(y, p, Q, K[0], KQ[0])  # the derivatives of the new tangent vectors
+            _stage(jvp_into, jvp1_into, z, p, n, k, K[0], ds, dQ)  # the first stage of the next step
         else:
             rejected += 1
-        h = _controlled(h, step, err)
+        h = _controlled(h, step, err, -1.0 / 8.0)
         if accepted + rejected >= max_steps:
-            return y, Q, sums, hist_t[:b], hist[:b], -1, rejected
+            accepted = -1
+            break
+    _copy(y, y_z)
+    _copy(Q.ravel(), z[n:])
     return y, Q, sums, hist_t[:b], hist[:b], accepted, rejected
 
 
@@ -308,9 +388,10 @@ def _drop_before(time, held_t, held_h, held_y, held_K, n_held):
 
 
 @njit(cache=True)
-def _controlled(h, step, err):
-    """The next step after ``step`` (tried as ``h`` or clipped below it) with the scaled error ``err`` (order 5)."""
-    factor = 10.0 if err == 0.0 else min(10.0, max(0.2, 0.9 * err ** -0.2))
+def _controlled(h, step, err, exponent):
+    """The next step after ``step`` (tried as ``h`` or clipped below it) with the scaled error ``err`` (``exponent``:
+    -1 / (1 + the order of the error estimate))."""
+    factor = 10.0 if err == 0.0 else min(10.0, max(0.2, 0.9 * err ** exponent))
     return step * factor if (err > 1.0 or step == h) else max(h, step * factor)
 
 
@@ -355,7 +436,7 @@ def _benettin_magnus(rhs_into, jvp_into, gradients, magnus_step, y, Q, p, tau, n
                 accepted += 1
             else:
                 rejected += 1
-            h = _controlled(h, step, err)
+            h = _controlled(h, step, err, -0.2)
             if accepted + rejected >= max_steps:
                 return y, Q, sums, hist_t[:b], hist[:b], -1, rejected, tangent_steps, tangent_rejected
         step = min(H, t - T)
@@ -388,11 +469,11 @@ def _benettin_magnus(rhs_into, jvp_into, gradients, magnus_step, y, Q, p, tau, n
                     hist[b, j] = sums[j] / T
                 b += 1
                 t_qr = min(t_final, (math.floor(T / tau + 1e-9) + 1) * tau)
-            H = _controlled(H, step, err)
+            H = _controlled(H, step, err, -0.2)
         else:
             tangent_rejected += 1
             if err <= 1e300 and spread < math.inf:
-                H = min(_controlled(H, step, err), step * 0.9 * _SPREAD / max(spread, 1e-300))
+                H = min(_controlled(H, step, err, -0.2), step * 0.9 * _SPREAD / max(spread, 1e-300))
             else:  # the exponential overflowed
                 H = 0.2 * step
     return y, Q, sums, hist_t[:b], hist[:b], accepted, rejected, tangent_steps, tangent_rejected
@@ -452,25 +533,26 @@ def lyapunov(m: Model, y0, p, t_end: float, k: int | None = None, h: float | Non
 
     Without ``rtol``: classical Runge-Kutta with the fixed step ``h`` (default: 1/50 of the period of the fastest
     linear mode at ``y0``); ``tau``: the time between re-orthonormalizations (default ``10 h``), rounded to a whole
-    number of steps.  With ``rtol`` (and ``atol``, default ``rtol * 1e-2``): Dormand-Prince 5(4) with the errors of
-    the state and of the tangent vectors controlled as in ``simulate(method="DP54")`` (the tangent vectors, of unit
-    length after each re-orthonormalization, to ``tangent_rtol``, relative and absolute; default ``rtol``, and
-    ``MAGNUS_TANGENT_RTOL * rtol`` for Magnus tangents), ``h``
-    the first step; the tangent vectors are re-orthonormalized at the end of the first step at or past each
-    multiple of ``tau`` (default ``span / 1000``, rounded to divide the span), the last time at ``t_end``;
-    ``max_steps`` bounds the steps.  ``tangents`` (with ``rtol``): ``"magnus"`` steps the tangent vectors by the
-    sixth-order Magnus exponential (:mod:`knifeedge.magnus`; ``J`` at the Gauss nodes of the state's dense output)
-    over steps of their own, each within the state's steps, so that where ``J`` hardly changes (a settled spin)
-    neither they nor the state take more steps than the state alone (they are re-orthonormalized after every step,
-    which is bounded by the spread of the vectors' lengths it causes, not by ``tau``; the history is recorded at
-    the end of the first tangent step at or past each multiple of ``tau``); ``"rk"`` steps them with the state's
-    Dormand-Prince stages (the steps then also resolve the tangent vectors' oscillation; a step costs less: one
-    Jacobian-vector product per vector and stage, no full Jacobian, no matrix exponential).  Default: Magnus for
-    more than one exponent, Runge-Kutta for the largest alone (measured: docs/performance.md).  A looser
-    ``tangent_rtol`` takes fewer tangent steps; the exponents then move by about that tolerance for Runge-Kutta
-    tangents, by much less for Magnus tangents, whose sixth-order steps are controlled by the fourth-order
-    estimate: hence their looser default, with which their exponents are about as accurate as the Runge-Kutta
-    tangents' at ``rtol`` (docs/performance.md, "Lyapunov exponents").
+    number of steps.  With ``rtol`` (and ``atol``, default ``rtol * 1e-2``): the errors of the state and of the
+    tangent vectors controlled as in ``simulate`` (the tangent vectors, of unit length after each
+    re-orthonormalization, to ``tangent_rtol``, relative and absolute; default ``rtol``, and
+    ``MAGNUS_TANGENT_RTOL * rtol`` for Magnus tangents), ``h`` the first step; the tangent vectors are
+    re-orthonormalized at the end of the first step at or past each multiple of ``tau`` (default ``span / 1000``,
+    rounded to divide the span), the last time at ``t_end``; ``max_steps`` bounds the steps.  ``tangents`` (with
+    ``rtol``): ``"magnus"`` steps the tangent vectors by the sixth-order Magnus exponential
+    (:mod:`knifeedge.magnus`; ``J`` at the Gauss nodes of the dense output of the state's Dormand-Prince 5(4)
+    steps, as ``simulate(method="DP54")``) over steps of their own, each within the state's steps, so that where
+    ``J`` hardly changes (a settled spin) neither they nor the state take more steps than the state alone (they are
+    re-orthonormalized after every step, which is bounded by the spread of the vectors' lengths it causes, not by
+    ``tau``; the history is recorded at the end of the first tangent step at or past each multiple of ``tau``);
+    ``"rk"`` steps the state and them together by DOP853 (``simulate``'s default method; the steps then also
+    resolve the tangent vectors' oscillation; a step costs less: one Jacobian-vector product per vector and stage,
+    no full Jacobian, no matrix exponential).  Default: Magnus for more than one exponent, DOP853 for the largest
+    alone (measured: docs/performance.md).  A looser ``tangent_rtol`` takes fewer tangent steps; the exponents
+    then move by about that tolerance for Runge-Kutta tangents, by much less for Magnus tangents, whose
+    sixth-order steps are controlled by the fourth-order estimate: hence their looser default, with which their
+    exponents are about as accurate as Dormand-Prince 5(4) tangents at ``rtol`` (DOP853's are more accurate still;
+    docs/performance.md, "Lyapunov exponents").
     """
     p = m.check_params(p)
     y = m._closed(y0).copy()
@@ -496,9 +578,18 @@ def lyapunov(m: Model, y0, p, t_end: float, k: int | None = None, h: float | Non
         raise ValueError(f"`tangents` must be 'magnus', 'rk' or None (Magnus for more than one exponent), got "
                          f"{tangents!r}")
     if rtol is not None:
-        if tangents == "magnus" or (tangents is None and Q.shape[1] > 1):
+        magnus_tangents = tangents == "magnus" or (tangents is None and Q.shape[1] > 1)
+        if magnus_tangents:
             functions = (mod.rhs_into, *functions)
-        return _adaptive(functions, y, Q, p, span, float(t0), h, tau, rtol, atol, max_steps, tangent_rtol)
+        elif Q.shape[1] > 1:
+            functions = (mod.jvp_into, _no_product1, mod.invariant_gradients)
+        elif hasattr(mod, "jvp1_into"):
+            functions = (_no_product, mod.jvp1_into, mod.invariant_gradients)
+        else:
+            raise ValueError(f"the module of {m.name} ({m.fidelity}) was written without the product of one vector "
+                             f"(jvp1_into) by an older knifeedge: regenerate it (make derive, or knifeedge derive)")
+        return _adaptive(functions, magnus_tangents, y, Q, p, span, float(t0), h, tau, rtol, atol, max_steps,
+                         tangent_rtol)
     if atol is not None or tangent_rtol is not None:
         raise ValueError("`atol` and `tangent_rtol` need `rtol` (the adaptive method); with a fixed step `h` leave "
                          "them out")
@@ -513,17 +604,19 @@ def lyapunov(m: Model, y0, p, t_end: float, k: int | None = None, h: float | Non
 
 
 #: the Magnus tangents' default ``tangent_rtol`` in units of ``rtol``: their sixth-order steps are controlled by the
-#: fourth-order estimate, so that at ``10 rtol`` their exponents are about as accurate as the Runge-Kutta tangents'
-#: at ``rtol`` (measured from references at ``tangent_rtol = 1e-4 rtol``: through the celt's reversal, 60 s, rtol
+#: fourth-order estimate, so that at ``10 rtol`` their exponents are about as accurate as Dormand-Prince 5(4)
+#: tangents at ``rtol`` (the Runge-Kutta tangents before they moved to DOP853, more accurate still; measured
+#: from references at ``tangent_rtol = 1e-4 rtol``: through the celt's reversal, 60 s, rtol
 #: 1e-8: 2.7e-7 against 3.4e-7, rtol 1e-10: 1.1e-9 against 8.7e-10; over 10^4 s, rtol 1e-8: 1.6e-9 against 3.6e-8;
 #: docs/performance.md), at ``100 rtol`` 13-20x less accurate
 MAGNUS_TANGENT_RTOL = 10.0
 
 
-def _adaptive(functions, y, Q, p, span, t0, h, tau, rtol, atol, max_steps, tangent_rtol) -> LyapunovResult:
+def _adaptive(functions, magnus_tangents, y, Q, p, span, t0, h, tau, rtol, atol, max_steps,
+              tangent_rtol) -> LyapunovResult:
     atol = rtol * 1e-2 if atol is None else atol
     if tangent_rtol is None:
-        tangent_rtol = MAGNUS_TANGENT_RTOL * rtol if len(functions) == 3 else rtol
+        tangent_rtol = MAGNUS_TANGENT_RTOL * rtol if magnus_tangents else rtol
     for name, v in (("rtol", rtol), ("atol", atol), ("tangent_rtol", tangent_rtol)):
         if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
             raise ValueError(f"`{name}` must be a positive tolerance, got {v!r}")
@@ -536,7 +629,7 @@ def _adaptive(functions, y, Q, p, span, t0, h, tau, rtol, atol, max_steps, tange
     tau = span / n_blocks
     tolerances = float(rtol), float(atol), float(tangent_rtol)
     tangent_steps = tangent_rejected = 0
-    if len(functions) == 3:
+    if magnus_tangents:
         y, Q, sums, hist_t, hist, accepted, rejected, tangent_steps, tangent_rejected = _magnus_kernel()(
             *functions, magnus.magnus_step, y, Q, p, tau, n_blocks, *tolerances, min(h, tau), max_steps)
     else:
@@ -545,10 +638,11 @@ def _adaptive(functions, y, Q, p, span, t0, h, tau, rtol, atol, max_steps, tange
     if accepted < 0:
         raise RuntimeError(f"the variational equations needed more than `max_steps` = {max_steps} steps; raise it "
                            f"or loosen `rtol`")
-    method = (f"DP54 rtol {rtol:g} atol {atol:g}" + (f" tangent_rtol {tangent_rtol:g}" if tangent_rtol != rtol else "")
-              + (", Magnus tangents" if len(functions) == 3 else ""))
+    method = (f"{'DP54' if magnus_tangents else 'DOP853'} rtol {rtol:g} atol {atol:g}"
+              + (f" tangent_rtol {tangent_rtol:g}" if tangent_rtol != rtol else "")
+              + (", Magnus tangents" if magnus_tangents else ""))
     # the Magnus loop's history is not evenly spaced (a long tangent step passes several multiples of tau)
-    tail_after = t0 + 0.75 * span if len(functions) == 3 else None
+    tail_after = t0 + 0.75 * span if magnus_tangents else None
     return _result(y, hist_t + t0, hist, span / accepted, tau, accepted, method, rejected, tangent_steps,
                    tangent_rejected, tail_after)
 
