@@ -22,8 +22,8 @@ import stub_model as _stub
 _D = ctypes.c_double
 _I = ctypes.c_int64
 _P = ctypes.c_void_p
-ATTEMPT = ctypes.CFUNCTYPE(_D, _D, _D, _D, _D, _I, _P, _I, _P, _P)
-DENSE = ctypes.CFUNCTYPE(None, _D, _D, _P, _I)
+ATTEMPT = ctypes.CFUNCTYPE(_D, _D, _D, _D, _D, _I, _P, _I, _I, _P, _P)
+DENSE = ctypes.CFUNCTYPE(None, _D, _D, _P, _I, _I)
 RHS = ctypes.CFUNCTYPE(None, _D, _P, _P, _I, _P)
 
 
@@ -43,8 +43,8 @@ def _workspace(mod, y, p):
 
 def _step(mod, ws, h, rtol, atol, pair, mode):
     fns = mod.parts()
-    err = ATTEMPT(int(fns[1]))(0.0, h, h, rtol, mode, _ptr(ws), mod.NQ, _ptr(atol), _ptr(pair))
-    DENSE(int(fns[2]))(0.0, h, _ptr(ws), mod.NQ)
+    err = ATTEMPT(int(fns[1]))(0.0, h, h, rtol, mode, _ptr(ws), mod.N, mod.NQ, _ptr(atol), _ptr(pair))
+    DENSE(int(fns[2]))(0.0, h, _ptr(ws), mod.N, mod.NQ)
     return err
 
 
@@ -194,3 +194,62 @@ def test_compiled_parts_are_loaded_by_a_second_process_and_a_damaged_file_is_com
     lines = [ln for ln in again.stderr.splitlines() if ln.strip()]
     assert len(lines) == 1 and "discarded a damaged compiled-parts cache file" in lines[0], again.stderr
     assert parts[0].stat().st_size > 1000
+
+
+def test_the_stages_are_written_at_derive_time_and_are_not_stale():
+    """generated/stages.py is what derivation/stage_ir.py writes now from the registered adaptive methods (a
+    changed writer or tableau without `make derive` fails here), sealed as every generated module, and holds
+    every registered adaptive method with the fingerprint of its tables."""
+    from pathlib import Path
+
+    from knifeedge.derive import stage_ir
+    from knifeedge.generated import stages
+    from knifeedge.modulecheck import seal
+
+    path = Path(stages.__file__)
+    assert path.read_text(encoding="utf-8") == seal(stage_ir.module_source()), "run make derive"
+    erk = [name for name, m in methods.COMPILED_METHODS.items() if m.kind == "erk"]
+    assert set(erk) <= set(stages.IR)
+    assert all(stages.TABLES[name] == methods.erk_fingerprint(name) for name in erk)
+
+
+def test_the_runtime_writes_no_ir_it_parses_only_what_derive_time_wrote(tmp_path, monkeypatch):
+    """Compiling a model's parts (a fresh cache) parses only IR texts written at derive time: the method's
+    stages and the sizes of generated/stages.py, the model's own ``LLVM_IR``; and no string under
+    src/knifeedge/integrators holds an IR definition (the runtime writes none)."""
+    import ast
+    from pathlib import Path
+
+    import llvmlite.binding as ll
+
+    from knifeedge.generated import single_mode_full, stages
+    from knifeedge.integrators import erk
+
+    parsed, original, folder = [], ll.parse_assembly, Path(erk.__file__).parent
+
+    def parse(text, *args):
+        if Path(sys._getframe(1).f_code.co_filename).parent == folder:  # (numba parses IR of its own too)
+            parsed.append(text)
+        return original(text, *args)
+
+    monkeypatch.setattr(ll, "parse_assembly", parse)
+    monkeypatch.setenv("KNIFEEDGE_CACHE_DIR", str(tmp_path))
+    kernel = erk.AdaptiveKernel("DP54", single_mode_full, "rhs_q_into", 3)
+    assert kernel.parts()[1] != 0 and list(tmp_path.glob("kernels/*.parts-*.nbo"))
+    allowed = {stages.IR["DP54"], stages.SIZES, *single_mode_full.LLVM_IR.values()}
+    assert parsed and all(text in allowed for text in parsed)
+    for path in sorted(folder.glob("*.py")):
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        strings = [n.value for n in ast.walk(tree) if isinstance(n, ast.Constant) and isinstance(n.value, str)]
+        assert not [s for s in strings if "define " in s and "@" in s], path
+
+
+def test_an_adaptive_method_without_derived_stages_is_refused(monkeypatch):
+    """A tableau registered at run time has no stages written at derive time: its kernel is refused with what
+    to do (the runtime writes no code)."""
+    tab = methods.ExplicitTableau(name="heun_euler", c=[0.0, 1.0], A=[[0.0, 0.0], [1.0, 0.0]], b=[0.5, 0.5],
+                                  e=[-0.5, 0.5, 0.0], order=2, error_order=1, P=[[1.0, -0.5], [0.0, 0.5], [0.0, 0.0]],
+                                  description="", reference="")
+    monkeypatch.setitem(methods.COMPILED_METHODS, "heun_euler", tab)
+    with pytest.raises(ValueError, match="no stages in generated/stages.py.*run make derive"):
+        load_kernel("erk", "heun_euler", _stub, "rhs_q_into", 3)
