@@ -1,4 +1,4 @@
-"""The stages of a step and the interpolant written as LLVM IR (knifeedge.integrators.irparts).
+"""The stages of a step and the interpolant as LLVM IR (written by derivation/stage_ir.py, compiled by irparts).
 
 Each check calls the IR parts of a kernel and compares with the method's loops over the tableau written here in
 numpy (an independent implementation of the same method) from one workspace, or checks the IR parts
@@ -16,7 +16,7 @@ import sys
 import numpy as np
 import pytest
 
-from knifeedge.integrators import Status, from_code, irparts, load_kernel, methods
+from knifeedge.integrators import Status, from_code, load_kernel, methods
 import stub_model as _stub
 
 _D = ctypes.c_double
@@ -31,13 +31,28 @@ def _ptr(a):
     return a.ctypes.data
 
 
+class Layout:
+    """The offsets of the integrator's workspace (derivation/stage_ir.py): K (n_ext x n), y, y_new, work, scale
+    (n each), F (dense_rows x n), then q."""
+
+    def __init__(self, n: int, method: str):
+        t = methods.erk_arrays(method)
+        self.k = [j * n for j in range(t.n_ext)]
+        o = t.n_ext * n
+        self.y, self.q = o, o + (4 + t.dense_rows) * n
+
+
+def _layout(mod):
+    return Layout(mod.N, mod.TABLEAU)
+
+
 def _workspace(mod, y, p):
     """The workspace the integrator gives the parts: y, q = constants(p) and K[0] = f(0, y)."""
-    ws = np.zeros(mod.layout.q + mod.NQ)
-    ws[mod.layout.y:mod.layout.y + mod.N] = y
-    ws[mod.layout.q:] = mod._constants(p)
+    ws = np.zeros(_layout(mod).q + mod.NQ)
+    ws[_layout(mod).y:_layout(mod).y + mod.N] = y
+    ws[_layout(mod).q:] = mod._constants(p)
     fns = mod.parts()
-    RHS(int(fns[0]))(0.0, _ptr(ws[mod.layout.y:]), _ptr(ws[mod.layout.q:]), mod.NQ, _ptr(ws))
+    RHS(int(fns[0]))(0.0, _ptr(ws[_layout(mod).y:]), _ptr(ws[_layout(mod).q:]), mod.NQ, _ptr(ws))
     return ws
 
 
@@ -55,7 +70,7 @@ def _loops(method, ws, n, h, rtol, atol, pair, mode, rhs):
     t = methods.erk_arrays(method)
     K = np.zeros((t.n_ext, n))
     K[0] = ws[:n]
-    lay = irparts.Layout(n, t.n_ext, t.dense_rows)
+    lay = Layout(n, method)
     y, q = ws[lay.y:lay.y + n].copy(), ws[lay.q:]
     for s in range(1, t.n_ext):
         K[s] = rhs(0.0 + t.C[s] * h, y + h * (t.A[s, :s] @ K[:s]), q)
@@ -104,23 +119,23 @@ def test_ir_parts_compute_the_loops_over_the_tableau(method):
         ea = _step(ir, wa, 0.3, 1e-7, atol, pair, mode)
         assert math.isfinite(ea) and ea > 0.0
         assert math.isclose(ea, eb, rel_tol=1e-6), (ea, eb)  # round-off in the estimate: 1e-9 seen
-        np.testing.assert_allclose(wa[:ir.layout.y], K.ravel(), rtol=1e-13, atol=1e-15)  # the stages K
-        y_new = wa[ir.layout.y + 3:ir.layout.y + 6]
+        np.testing.assert_allclose(wa[:_layout(ir).y], K.ravel(), rtol=1e-13, atol=1e-15)  # the stages K
+        y_new = wa[_layout(ir).y + 3:_layout(ir).y + 6]
         np.testing.assert_allclose(y_new, y_new_b, rtol=1e-14)
         # the scale, from its definition (mode_scaled: max over the component and its partner)
         mag = np.maximum(np.abs(y), np.abs(y_new))
         if mode:
             mag = np.array([max(mag[0], mag[1]), max(mag[0], mag[1]), mag[2]])
-        np.testing.assert_allclose(wa[ir.layout.y + 9:ir.layout.y + 12], atol + 1e-7 * mag, rtol=1e-15)
+        np.testing.assert_allclose(wa[_layout(ir).y + 9:_layout(ir).y + 12], atol + 1e-7 * mag, rtol=1e-15)
         np.testing.assert_allclose(scale, atol + 1e-7 * mag, rtol=1e-13)  # from the loops' y_new
         wb = Fb.ravel()
-        F = slice(ir.layout.y + 12, ir.layout.q)
+        F = slice(_layout(ir).y + 12, _layout(ir).q)
         np.testing.assert_allclose(wa[F], wb, rtol=0, atol=1e-12 * np.abs(wb).max())  # 2e-13 seen
     # the exact solution q = 0.8 cos(2t) - 0.15 sin(2t): one short step of the 8th (5th) order method is that close
     ws = _workspace(ir, y, p)
     _step(ir, ws, 0.05, 1e-7, atol, pair, 0)
     exact = 0.8 * math.cos(0.1) - 0.15 * math.sin(0.1)
-    assert abs(ws[ir.layout.y + 3] - exact) < (1e-14 if method == "DOP853" else 1e-9), abs(ws[ir.layout.y + 3] - exact)
+    assert abs(ws[_layout(ir).y + 3] - exact) < (1e-14 if method == "DOP853" else 1e-9), abs(ws[_layout(ir).y + 3] - exact)
 
 
 def test_the_error_norm_is_hairers_from_the_stages():
@@ -134,7 +149,7 @@ def test_the_error_norm_is_hairers_from_the_stages():
     h = 0.2
     err = _step(mod, ws, h, 1e-8, np.full(3, 1e-10), np.full(3, -1, dtype=np.int64), 0)
     K = ws[:t.n_ext * 3].reshape(t.n_ext, 3)[:t.n_stages + 1]
-    scale = ws[mod.layout.y + 9:mod.layout.y + 12]
+    scale = ws[_layout(mod).y + 9:_layout(mod).y + 12]
     n5 = np.sum((t.E5 @ K / scale) ** 2)
     n3 = np.sum((t.E3 @ K / scale) ** 2)
     assert math.isclose(err, h * n5 / math.sqrt((n5 + 0.01 * n3) * 3), rel_tol=1e-9)

@@ -295,9 +295,6 @@ class AdaptiveKernel:
         self.NV = len(getattr(model_module, "EVENT_NAMES", ()))
         self.NQ = _n_constants(model_module)
         self._rhs, self._constants = getattr(model_module, rhs_name), model_module.constants
-        tab = erk_arrays(tableau)
-        #: the integrator's workspace, as the parts read it (offsets of K, y, y_new, work, scale, F, q)
-        self.layout = _irparts.Layout(n_state, tab.n_ext, tab.dense_rows)
         stem = digest(tableau, _irparts.stages_ir(tableau), self._rhs, n_state, self.NQ)
         self.path = cache_dir() / "kernels" / f"erk-{tableau}-{model_module.__name__.rsplit('.', 1)[-1]}-{stem}"
         self.driver = driver(tableau)

@@ -41,18 +41,6 @@ from .methods import erk_fingerprint
 FORMAT = 6
 
 
-class Layout:
-    """The offsets of the integrator's workspace, as the integrator of :mod:`.erk` lays it out: K (n_ext x n), y, y_new,
-    work, scale (n each), F (dense_rows x n), then q."""
-
-    def __init__(self, n: int, n_ext: int, dense_rows: int):
-        self.n = n
-        self.k = [j * n for j in range(n_ext)]
-        o = n_ext * n
-        self.y, self.y_new, self.work, self.scale, self.f = o, o + n, o + 2 * n, o + 3 * n, o + 4 * n
-        self.q = o + (4 + dense_rows) * n
-
-
 def stages_ir(tableau: str) -> str:
     """The IR of the stages of the registered adaptive method ``tableau``, as ``make derive`` wrote it."""
     from ..generated import stages
