@@ -101,14 +101,23 @@ def _stub_rhs(p):
     return rhs
 
 
-@pytest.mark.parametrize("method", ["DOP853", pytest.param("DP54", marks=pytest.mark.slow),
-                                    pytest.param("Tsit5", marks=pytest.mark.slow)])
-def test_ir_parts_compute_the_loops_over_the_tableau(method):
+@pytest.mark.parametrize("method,rolled", [("DOP853", False), pytest.param("DP54", False, marks=pytest.mark.slow),
+                                           pytest.param("Tsit5", False, marks=pytest.mark.slow),
+                                           pytest.param("DOP853", True, marks=pytest.mark.slow)])
+def test_ir_parts_compute_the_loops_over_the_tableau(method, rolled, tmp_path, monkeypatch):
     """One step of the stand-in from one workspace: the stages K, y_new, the scale, the error norm and the
     interpolant's rows F agree between the IR parts and the loops over the tableau to round-off (the IR sums a
     stage as y + (h a_0) K_0 + ... with fused multiply-adds, the loops as y + h (a_0 K_0 + ...)); with
-    ``mode_scaled`` the scale of a component takes its partner's magnitude too."""
-    ir = load_kernel("erk", method, _stub, "rhs_q_into", 3)
+    ``mode_scaled`` the scale of a component takes its partner's magnitude too.  ``rolled``: the state size
+    taken from the argument, as for a state larger than ``stages.MAX_SIZE`` (here made 2)."""
+    if rolled:
+        from knifeedge.generated import stages
+        from knifeedge.integrators import erk
+
+        monkeypatch.setattr(stages, "MAX_SIZE", 2)
+        monkeypatch.setenv("KNIFEEDGE_CACHE_DIR", str(tmp_path))
+    ir = erk.AdaptiveKernel(method, _stub, "rhs_q_into", 3) if rolled else load_kernel("erk", method, _stub,
+                                                                                        "rhs_q_into", 3)
     y, p = np.array([0.8, -0.3, 0.1]), np.array([2.0, 0.1])
     atol = np.array([1e-9, 2e-9, 3e-9])
     pair = np.array([1, 0, -1], dtype=np.int64)
