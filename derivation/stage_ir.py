@@ -42,7 +42,7 @@ its extra stages lie inside a step whose own stages all succeeded.)
 
 The workspace is the integrator's one array: ``K`` (``n_ext x n``), ``y``,
 ``y_new``, ``work``, ``scale`` (``n`` each), ``F`` (``dense_rows x n``), then
-``q`` (:class:`knifeedge.integrators.irparts.Layout`).
+``q`` (``workspace`` in ``knifeedge.integrators.erk``).
 """
 from __future__ import annotations
 
@@ -322,9 +322,7 @@ def module_source() -> str:
     from knifeedge.integrators.methods import COMPILED_METHODS, erk_arrays, erk_fingerprint
 
     names = [name for name, m in COMPILED_METHODS.items() if m.kind == "erk"]
-    entries = "".join(f"    {name!r}: (\n" + "".join(f"        {line + chr(10)!r}\n"
-                                                       for line in module_ir(erk_arrays(name)).splitlines())
-                      + "    ),\n" for name in names)
+    entries = "".join(f"    {name!r}: {_lines(module_ir(erk_arrays(name)), 8)},\n" for name in names)
     return (
         '"""stages: the stages of a step and the interpolant of every adaptive method as LLVM IR.\n\n'
         "GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.\n"
@@ -335,11 +333,17 @@ def module_source() -> str:
         f"#: the symbol of the right-hand side the stages call, and those they define (attempt, dense, C rhs)\n"
         f"RHS = {RHS!r}\nSYMBOLS = {SYMBOLS!r}\n"
         "#: the constant the stages read the state size from, and the module defining SIZE.k = k for k <= MAX_SIZE\n"
-        f"SIZE = {SIZE!r}\nMAX_SIZE = {MAX_SIZE}\nSIZES = {sizes_ir()!r}\n"
+        f"SIZE = {SIZE!r}\nMAX_SIZE = {MAX_SIZE}\nSIZES = {_lines(sizes_ir(), 4)}\n"
         "#: method -> the fingerprint of the tables the IR was written from (methods.erk_fingerprint)\n"
         f"TABLES = {{{', '.join(f'{n!r}: {erk_fingerprint(n)!r}' for n in names)}}}\n"
         f"#: method -> its IR module (symbols {', '.join(SYMBOLS)}; calls {RHS})\n"
         f"IR = {{\n{entries}}}\n")
+
+
+def _lines(text: str, indent: int) -> str:
+    """``text`` as a parenthesized Python literal of one string per line."""
+    pad = " " * indent
+    return "(\n" + "".join(f"{pad}{line + chr(10)!r}\n" for line in text.splitlines()) + " " * (indent - 4) + ")"
 
 
 def write(out_dir: Path) -> Path:
