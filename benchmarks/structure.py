@@ -102,9 +102,11 @@ def cycles(edges: dict) -> list:
 #: the layers, lowest first (issue 25: derivation -> generated -> models -> integrators -> simulate ->
 #: sweep/scenes/figures/animation -> cli), each a tuple of module-name prefixes; a module imports only modules
 #: of its own layer or lower ones.  The first layer holds the runtime's helpers that the derivation shares
-#: (the seal of a generated module, the checks of a rigid body's numbers).
+#: (the seal of a generated module, the checks of a rigid body's numbers, the registered methods' tables that
+#: derivation/stage_ir.py writes the adaptive methods' stages from).
 LAYERS = (
-    ("knifeedge.modulecheck", "knifeedge.bodies", "knifeedge._validate", "knifeedge._process"),
+    ("knifeedge.modulecheck", "knifeedge.bodies", "knifeedge._validate", "knifeedge._process",
+     "knifeedge.integrators.methods"),
     ("knifeedge.derive",),
     ("knifeedge.generated",),
     ("knifeedge.models", "knifeedge.inputs"),

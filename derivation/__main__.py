@@ -16,6 +16,7 @@ from pathlib import Path
 
 from .cli import MANIFEST, ROOT, DeriveError, derive_files, derive_specs, manifest_text, project_specs
 from .emit import write_all
+from .stage_ir import write as write_stages
 
 
 def main(argv=None) -> int:
@@ -37,6 +38,7 @@ def main(argv=None) -> int:
         written = derive_files(args.files, args.out, log=log)
     else:
         written = write_all(args.out, derive_specs(project_specs(), check=False, log=log))
+        written.append(write_stages(args.out))  # the adaptive methods' stages as IR, for every model
     for path in written:
         print(f"wrote {path}", file=sys.stderr)
     if not args.files:  # the package's models: what they were derived from, checked by the tests without deriving

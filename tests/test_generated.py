@@ -86,7 +86,8 @@ def test_derivation_is_deterministic_under_any_hash_seed(fresh, tmp_path):
 
 
 def test_generated_headers():
-    for p in sorted(q for q in (ROOT / "generated").glob("*.py") if q.name != "__init__.py"):
+    # (stages.py is no model: the adaptive methods' stages as IR, checked by tests/test_irparts.py)
+    for p in sorted(q for q in (ROOT / "generated").glob("*.py") if q.name not in ("__init__.py", "stages.py")):
         text = p.read_text()
         head = text[:3000]
         assert "DO NOT EDIT BY HAND" in head and "make derive" in head, p.name

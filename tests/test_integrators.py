@@ -17,7 +17,7 @@ import numpy as np
 import pytest
 
 import knifeedge as ke
-from knifeedge.integrators import COMPILED_METHODS, Status, cache, irparts, kernel, load_kernel
+from knifeedge.integrators import COMPILED_METHODS, Status, cache, kernel, load_kernel
 from knifeedge.integrators import methods
 
 SINGLE = dict(g=1.0, ell=1.0, L=1.0, D=1.0)
@@ -254,24 +254,27 @@ def test_per_component_atol_and_mode_error_control_run():
 
 
 # -- the kernel cache ------------------------------------------------------------
-def test_kernel_parts_are_the_models_rhs_with_the_tableau_unrolled(tmp_path):
-    from knifeedge.generated import two_mode_full
+def test_kernel_parts_are_the_models_rhs_with_the_tableau_as_literals(tmp_path):
+    from knifeedge.derive.ir_emit import literal
+    from knifeedge.generated import stages, two_mode_full
 
     kernel = load_kernel("erk", "DP54", two_mode_full, "rhs_pose_q_into", 8)
     assert (kernel.TABLEAU, kernel.RHS_NAME, kernel.N, kernel.NQ) == ("DP54", "rhs_pose_q_into", 8,
                                                                      two_mode_full.constants(np.ones(5)).size)
-    # stages unrolled with the Dormand-Prince coefficients as exact literals (a21 = 1/5, b1 = 35/384)
-    ir = irparts.module_ir(methods.erk_arrays("DP54"), 8, 3, ("a", "d"), "rhs")
-    assert f"fmul contract double %h, {irparts.literal(0.2)}" in ir
-    assert f"fmul contract double %h, {irparts.literal(35 / 384)}" in ir
+    # the stages written at derive time with the Dormand-Prince coefficients as exact literals (a21 = 1/5,
+    # b1 = 35/384)
+    ir = stages.IR["DP54"]
+    assert f"fmul contract double %h, {literal(0.2)}" in ir
+    assert f"fmul contract double %h, {literal(35 / 384)}" in ir
     # the error estimate likewise (e1 = -71/57600)
-    assert f"fmul contract double {irparts.literal(-71 / 57600)}, " in ir
+    assert f"fmul contract double {literal(-71 / 57600)}, " in ir
     # one call of the right-hand side per stage: DP54 6 in attempt (7 stages, first same as last);
     # DOP853 12 in attempt and its 3 extra stages of the dense output in dense
-    assert ir.count('call i32 @"rhs"') == 6
-    ir8 = irparts.module_ir(methods.erk_arrays("DOP853"), 3, 2, ("a", "d"), "rhs")
-    attempt, dense = ir8.split('define void @"d"')
-    assert attempt.count('call i32 @"rhs"') == 12 and dense.count('call i32 @"rhs"') == 3
+    call = f'call i32 @"{stages.RHS}"'
+    attempt, dense = ir.split(f'define void @"{stages.SYMBOLS[1]}"')
+    assert attempt.count(call) == 6 and dense.count(call) == 0 + 1  # (+ the C wrapper's one call, after dense)
+    attempt, dense = stages.IR["DOP853"].split(f'define void @"{stages.SYMBOLS[1]}"')
+    assert attempt.count(call) == 12 and dense.count(call) == 3 + 1
     with pytest.raises(ValueError, match="`kind`"):
         load_kernel("euler", "DOP853", two_mode_full, "rhs_q_into", 3)
     with pytest.raises(ValueError, match="n_state"):

@@ -7,11 +7,12 @@ import importlib
 import inspect
 import math
 
+import llvmlite.binding as ll
 import numpy as np
 import pytest
 from numba import njit
 
-from knifeedge.derive import ir_emit
+from knifeedge.derive import ir_emit, stage_ir
 from knifeedge.generated import MODULES
 from knifeedge.integrators import irparts
 
@@ -33,9 +34,18 @@ def _source(func):
 
 
 def _compiled(text, native, name):
-    """The C-callable rhs of the IR ``text`` (defining ``native``) compiled, and the library kept."""
-    text = text + irparts.c_wrapper_ir(native, f"test.c.{name}")
-    lib = irparts.compile_library(text, f"test_ir_emit_{name}", [])
+    """The C-callable rhs of the IR ``text`` (defining ``native``) compiled, and the library kept: ``text``'s
+    function bound to the stages' right-hand-side symbol and called by their C wrapper (derivation/stage_ir.py),
+    as the runtime binds it (llvmlite renames; no text written)."""
+    module = ll.parse_assembly(stage_ir.c_wrapper_ir()
+                               + f'declare i32 @"{stage_ir.RHS}"(ptr, ptr, double, ptr, ptr, i64, ptr)\n')
+    rhs = ll.parse_assembly(text)
+    function = rhs.get_function(native)
+    function.name, function.linkage = stage_ir.RHS, "external"
+    module.link_in(rhs)
+    module.get_function(stage_ir.RHS).linkage = "internal"
+    module.get_function(stage_ir.SYMBOLS[2]).name = f"test.c.{name}"
+    lib = irparts.compile_library(module, f"test_ir_emit_{name}", [])
     _KEEP.append(lib)
     return RHS(lib.get_pointer_to_function(f"test.c.{name}"))
 
@@ -88,7 +98,7 @@ def test_generated_constants_are_written_and_agree_bit_for_bit(key):
     assert ir_emit.constants_ir(_source(mod.constants), "constants", nq) == (mod.LLVM_IR["constants"], mod.LLVM_IR_READS)
     text = (mod.LLVM_IR["constants"] + f'define void @"test.constants.{MODULES[key]}"(ptr %p, ptr %q) {{\n'
             'entry:\n  call void @"constants"(ptr %p, ptr %q)\n  ret void\n}\n')
-    lib = irparts.compile_library(text, f"test_ir_emit_constants_{MODULES[key]}", [])
+    lib = irparts.compile_library(ll.parse_assembly(text), f"test_ir_emit_constants_{MODULES[key]}", [])
     _KEEP.append(lib)
     fn = CONSTANTS(lib.get_pointer_to_function(f"test.constants.{MODULES[key]}"))
     for _ in range(3):

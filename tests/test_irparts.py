@@ -1,4 +1,4 @@
-"""The stages of a step and the interpolant written as LLVM IR (knifeedge.integrators.irparts).
+"""The stages of a step and the interpolant as LLVM IR (written by derivation/stage_ir.py, compiled by irparts).
 
 Each check calls the IR parts of a kernel and compares with the method's loops over the tableau written here in
 numpy (an independent implementation of the same method) from one workspace, or checks the IR parts
@@ -16,14 +16,14 @@ import sys
 import numpy as np
 import pytest
 
-from knifeedge.integrators import Status, from_code, irparts, load_kernel, methods
+from knifeedge.integrators import Status, from_code, load_kernel, methods
 import stub_model as _stub
 
 _D = ctypes.c_double
 _I = ctypes.c_int64
 _P = ctypes.c_void_p
-ATTEMPT = ctypes.CFUNCTYPE(_D, _D, _D, _D, _D, _I, _P, _I, _P, _P)
-DENSE = ctypes.CFUNCTYPE(None, _D, _D, _P, _I)
+ATTEMPT = ctypes.CFUNCTYPE(_D, _D, _D, _D, _D, _I, _P, _I, _I, _P, _P)
+DENSE = ctypes.CFUNCTYPE(None, _D, _D, _P, _I, _I)
 RHS = ctypes.CFUNCTYPE(None, _D, _P, _P, _I, _P)
 
 
@@ -31,20 +31,35 @@ def _ptr(a):
     return a.ctypes.data
 
 
+class Layout:
+    """The offsets of the integrator's workspace (derivation/stage_ir.py): K (n_ext x n), y, y_new, work, scale
+    (n each), F (dense_rows x n), then q."""
+
+    def __init__(self, n: int, method: str):
+        t = methods.erk_arrays(method)
+        self.k = [j * n for j in range(t.n_ext)]
+        o = t.n_ext * n
+        self.y, self.q = o, o + (4 + t.dense_rows) * n
+
+
+def _layout(mod):
+    return Layout(mod.N, mod.TABLEAU)
+
+
 def _workspace(mod, y, p):
     """The workspace the integrator gives the parts: y, q = constants(p) and K[0] = f(0, y)."""
-    ws = np.zeros(mod.layout.q + mod.NQ)
-    ws[mod.layout.y:mod.layout.y + mod.N] = y
-    ws[mod.layout.q:] = mod._constants(p)
+    ws = np.zeros(_layout(mod).q + mod.NQ)
+    ws[_layout(mod).y:_layout(mod).y + mod.N] = y
+    ws[_layout(mod).q:] = mod._constants(p)
     fns = mod.parts()
-    RHS(int(fns[0]))(0.0, _ptr(ws[mod.layout.y:]), _ptr(ws[mod.layout.q:]), mod.NQ, _ptr(ws))
+    RHS(int(fns[0]))(0.0, _ptr(ws[_layout(mod).y:]), _ptr(ws[_layout(mod).q:]), mod.NQ, _ptr(ws))
     return ws
 
 
 def _step(mod, ws, h, rtol, atol, pair, mode):
     fns = mod.parts()
-    err = ATTEMPT(int(fns[1]))(0.0, h, h, rtol, mode, _ptr(ws), mod.NQ, _ptr(atol), _ptr(pair))
-    DENSE(int(fns[2]))(0.0, h, _ptr(ws), mod.NQ)
+    err = ATTEMPT(int(fns[1]))(0.0, h, h, rtol, mode, _ptr(ws), mod.N, mod.NQ, _ptr(atol), _ptr(pair))
+    DENSE(int(fns[2]))(0.0, h, _ptr(ws), mod.N, mod.NQ)
     return err
 
 
@@ -55,7 +70,7 @@ def _loops(method, ws, n, h, rtol, atol, pair, mode, rhs):
     t = methods.erk_arrays(method)
     K = np.zeros((t.n_ext, n))
     K[0] = ws[:n]
-    lay = irparts.Layout(n, t.n_ext, t.dense_rows)
+    lay = Layout(n, method)
     y, q = ws[lay.y:lay.y + n].copy(), ws[lay.q:]
     for s in range(1, t.n_ext):
         K[s] = rhs(0.0 + t.C[s] * h, y + h * (t.A[s, :s] @ K[:s]), q)
@@ -86,14 +101,23 @@ def _stub_rhs(p):
     return rhs
 
 
-@pytest.mark.parametrize("method", ["DOP853", pytest.param("DP54", marks=pytest.mark.slow),
-                                    pytest.param("Tsit5", marks=pytest.mark.slow)])
-def test_ir_parts_compute_the_loops_over_the_tableau(method):
+@pytest.mark.parametrize("method,rolled", [("DOP853", False), pytest.param("DP54", False, marks=pytest.mark.slow),
+                                           pytest.param("Tsit5", False, marks=pytest.mark.slow),
+                                           pytest.param("DOP853", True, marks=pytest.mark.slow)])
+def test_ir_parts_compute_the_loops_over_the_tableau(method, rolled, tmp_path, monkeypatch):
     """One step of the stand-in from one workspace: the stages K, y_new, the scale, the error norm and the
     interpolant's rows F agree between the IR parts and the loops over the tableau to round-off (the IR sums a
     stage as y + (h a_0) K_0 + ... with fused multiply-adds, the loops as y + h (a_0 K_0 + ...)); with
-    ``mode_scaled`` the scale of a component takes its partner's magnitude too."""
-    ir = load_kernel("erk", method, _stub, "rhs_q_into", 3)
+    ``mode_scaled`` the scale of a component takes its partner's magnitude too.  ``rolled``: the state size
+    taken from the argument, as for a state larger than ``stages.MAX_SIZE`` (here made 2)."""
+    if rolled:
+        from knifeedge.generated import stages
+        from knifeedge.integrators import erk
+
+        monkeypatch.setattr(stages, "MAX_SIZE", 2)
+        monkeypatch.setenv("KNIFEEDGE_CACHE_DIR", str(tmp_path))
+    ir = erk.AdaptiveKernel(method, _stub, "rhs_q_into", 3) if rolled else load_kernel("erk", method, _stub,
+                                                                                        "rhs_q_into", 3)
     y, p = np.array([0.8, -0.3, 0.1]), np.array([2.0, 0.1])
     atol = np.array([1e-9, 2e-9, 3e-9])
     pair = np.array([1, 0, -1], dtype=np.int64)
@@ -104,23 +128,23 @@ def test_ir_parts_compute_the_loops_over_the_tableau(method):
         ea = _step(ir, wa, 0.3, 1e-7, atol, pair, mode)
         assert math.isfinite(ea) and ea > 0.0
         assert math.isclose(ea, eb, rel_tol=1e-6), (ea, eb)  # round-off in the estimate: 1e-9 seen
-        np.testing.assert_allclose(wa[:ir.layout.y], K.ravel(), rtol=1e-13, atol=1e-15)  # the stages K
-        y_new = wa[ir.layout.y + 3:ir.layout.y + 6]
+        np.testing.assert_allclose(wa[:_layout(ir).y], K.ravel(), rtol=1e-13, atol=1e-15)  # the stages K
+        y_new = wa[_layout(ir).y + 3:_layout(ir).y + 6]
         np.testing.assert_allclose(y_new, y_new_b, rtol=1e-14)
         # the scale, from its definition (mode_scaled: max over the component and its partner)
         mag = np.maximum(np.abs(y), np.abs(y_new))
         if mode:
             mag = np.array([max(mag[0], mag[1]), max(mag[0], mag[1]), mag[2]])
-        np.testing.assert_allclose(wa[ir.layout.y + 9:ir.layout.y + 12], atol + 1e-7 * mag, rtol=1e-15)
+        np.testing.assert_allclose(wa[_layout(ir).y + 9:_layout(ir).y + 12], atol + 1e-7 * mag, rtol=1e-15)
         np.testing.assert_allclose(scale, atol + 1e-7 * mag, rtol=1e-13)  # from the loops' y_new
         wb = Fb.ravel()
-        F = slice(ir.layout.y + 12, ir.layout.q)
+        F = slice(_layout(ir).y + 12, _layout(ir).q)
         np.testing.assert_allclose(wa[F], wb, rtol=0, atol=1e-12 * np.abs(wb).max())  # 2e-13 seen
     # the exact solution q = 0.8 cos(2t) - 0.15 sin(2t): one short step of the 8th (5th) order method is that close
     ws = _workspace(ir, y, p)
     _step(ir, ws, 0.05, 1e-7, atol, pair, 0)
     exact = 0.8 * math.cos(0.1) - 0.15 * math.sin(0.1)
-    assert abs(ws[ir.layout.y + 3] - exact) < (1e-14 if method == "DOP853" else 1e-9), abs(ws[ir.layout.y + 3] - exact)
+    assert abs(ws[_layout(ir).y + 3] - exact) < (1e-14 if method == "DOP853" else 1e-9), abs(ws[_layout(ir).y + 3] - exact)
 
 
 def test_the_error_norm_is_hairers_from_the_stages():
@@ -134,7 +158,7 @@ def test_the_error_norm_is_hairers_from_the_stages():
     h = 0.2
     err = _step(mod, ws, h, 1e-8, np.full(3, 1e-10), np.full(3, -1, dtype=np.int64), 0)
     K = ws[:t.n_ext * 3].reshape(t.n_ext, 3)[:t.n_stages + 1]
-    scale = ws[mod.layout.y + 9:mod.layout.y + 12]
+    scale = ws[_layout(mod).y + 9:_layout(mod).y + 12]
     n5 = np.sum((t.E5 @ K / scale) ** 2)
     n3 = np.sum((t.E3 @ K / scale) ** 2)
     assert math.isclose(err, h * n5 / math.sqrt((n5 + 0.01 * n3) * 3), rel_tol=1e-9)
@@ -194,3 +218,64 @@ def test_compiled_parts_are_loaded_by_a_second_process_and_a_damaged_file_is_com
     lines = [ln for ln in again.stderr.splitlines() if ln.strip()]
     assert len(lines) == 1 and "discarded a damaged compiled-parts cache file" in lines[0], again.stderr
     assert parts[0].stat().st_size > 1000
+
+
+def test_the_stages_are_written_at_derive_time_and_are_not_stale():
+    """generated/stages.py is what derivation/stage_ir.py writes now from the registered adaptive methods (a
+    changed writer or tableau without `make derive` fails here), sealed as every generated module, and holds
+    every registered adaptive method with the fingerprint of its tables."""
+    from pathlib import Path
+
+    from knifeedge.derive import stage_ir
+    from knifeedge.generated import stages
+    from knifeedge.modulecheck import seal
+
+    path = Path(stages.__file__)
+    assert path.read_text(encoding="utf-8") == seal(stage_ir.module_source()), "run make derive"
+    erk = [name for name, m in methods.COMPILED_METHODS.items() if m.kind == "erk"]
+    assert set(erk) <= set(stages.IR)
+    assert all(stages.TABLES[name] == methods.erk_fingerprint(name) for name in erk)
+
+
+def test_the_runtime_writes_no_ir_it_parses_only_what_derive_time_wrote(tmp_path, monkeypatch):
+    """Compiling a model's parts (a fresh cache) parses only IR texts written at derive time: the method's
+    stages and the sizes of generated/stages.py, the model's own ``LLVM_IR``; and no string under
+    src/knifeedge/integrators holds an IR definition (the runtime writes none)."""
+    import ast
+    from pathlib import Path
+
+    import llvmlite.binding as ll
+
+    from knifeedge.generated import single_mode_full, stages
+    from knifeedge.integrators import erk
+
+    parsed, original, folder = [], ll.parse_assembly, Path(erk.__file__).parent
+
+    def parse(text, *args):
+        if Path(sys._getframe(1).f_code.co_filename).parent == folder:  # (numba parses IR of its own too)
+            parsed.append(text)
+        return original(text, *args)
+
+    monkeypatch.setattr(ll, "parse_assembly", parse)
+    monkeypatch.setenv("KNIFEEDGE_CACHE_DIR", str(tmp_path))
+    kernel = erk.AdaptiveKernel("DP54", single_mode_full, "rhs_q_into", 3)
+    assert kernel.parts()[1] != 0 and list(tmp_path.glob("kernels/*.parts-*.nbo"))
+    allowed = {stages.IR["DP54"], stages.SIZES, *single_mode_full.LLVM_IR.values()}
+    assert parsed and all(text in allowed for text in parsed)
+    for path in sorted(folder.glob("*.py")):
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        strings = [n.value for n in ast.walk(tree) if isinstance(n, ast.Constant) and isinstance(n.value, str)]
+        strings += ["".join(v.value for v in n.values if isinstance(v, ast.Constant)) for n in ast.walk(tree)
+                    if isinstance(n, ast.JoinedStr)]  # an f-string's text around its fields
+        assert not [s for s in strings if "define " in s and "@" in s], path
+
+
+def test_an_adaptive_method_without_derived_stages_is_refused(monkeypatch):
+    """A tableau registered at run time has no stages written at derive time: its kernel is refused with what
+    to do (the runtime writes no code)."""
+    tab = methods.ExplicitTableau(name="heun_euler", c=[0.0, 1.0], A=[[0.0, 0.0], [1.0, 0.0]], b=[0.5, 0.5],
+                                  e=[-0.5, 0.5, 0.0], order=2, error_order=1, P=[[1.0, -0.5], [0.0, 0.5], [0.0, 0.0]],
+                                  description="", reference="")
+    monkeypatch.setitem(methods.COMPILED_METHODS, "heun_euler", tab)
+    with pytest.raises(ValueError, match="no stages in generated/stages.py.*run make derive"):
+        load_kernel("erk", "heun_euler", _stub, "rhs_q_into", 3)

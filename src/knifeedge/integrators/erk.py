@@ -14,8 +14,8 @@ The integrator (:func:`driver`) is the part that does not depend on the
 model: the step-size control, the output and the location of zero crossings,
 compiled once per method and machine for every model.  The model's parts
 (:class:`AdaptiveKernel`) -- its right-hand side, the stages of a step with
-the error norm, the interpolant's extra stages (straight-line LLVM IR with the
-state size and the coefficients as constants, :mod:`.irparts`), its event
+the error norm, the interpolant's extra stages (LLVM IR written at derive time
+with the coefficients as constants, the state size bound when linked, :mod:`.irparts`), its event
 functions -- are passed as machine addresses in ``fns`` and called through
 them (:mod:`.fnptr`): one indirect call per step, per initial step and per
 interpolant.
@@ -164,7 +164,7 @@ def _driver_closure(tableau: str):
         ts, ys, ev_t, ev_k = out
         N = y0.size
         rhs, attempt, dense, ev = fns[0], fns[1], fns[2], fns[3:5]
-        ms, nq = np.int64(1 if mode_scaled else 0), np.int64(q.size)
+        ms, n, nq = np.int64(1 if mode_scaled else 0), np.int64(N), np.int64(q.size)
         ws, K, y, y_new, work, F = workspace(y0, q)
         fa, fb = K[0], K[N_STAGES]  # the derivatives at the ends of a step (views of the first and last stages)
         ne, n_fun, ga, gb, sa, sb, crit, n_crit, flag, xs, gs = _c.alloc(events)
@@ -200,7 +200,7 @@ def _driver_closure(tableau: str):
                 h = t_new - t
                 h_abs = abs(h)
                 # the stages, y_new, K[N_STAGES] and the scaled error norm: the model's part
-                err = call_f8(attempt, (t, h, t_new, rtol, ms, ws, nq, atol, pair))
+                err = call_f8(attempt, (t, h, t_new, rtol, ms, ws, n, nq, atol, pair))
                 nfev += N_STAGES
                 if err < 1.0:
                     if err == 0.0:
@@ -243,7 +243,7 @@ def _driver_closure(tableau: str):
                 if suspect:
                     any_flag = _c.screen(ga, gb, sa, sb, crit, n_crit, flag)
             if any_flag or (ie < t_eval.size and t_eval[ie] < t_new):
-                call_void(dense, (t, h, ws, nq))  # the interpolant of the step: F (DENSE_ROWS x N)
+                call_void(dense, (t, h, ws, n, nq))  # the interpolant of the step: F (DENSE_ROWS x N)
                 nfev += DENSE_NFEV
             if any_flag:
                 marks = (ga, gb, crit, n_crit, flag, xs, gs)
@@ -279,7 +279,7 @@ class AdaptiveKernel:
     """A model's parts of the integrator of ``tableau`` and :meth:`solve`, the integrator run with them.
 
     The parts are the right-hand side, the stages of a step with the error norm (``attempt``), the
-    interpolant (``dense``), all straight-line LLVM IR (:mod:`.irparts`) linked with the IR of the model's
+    interpolant (``dense``), all LLVM IR written at derive time (:mod:`.irparts`) linked with the IR of the model's
     ``rhs_q_into`` and ``constants`` that the generated module carries (``LLVM_IR``, written at derive time;
     the right-hand side inlined into the stages), numba compiling the right-hand side only where the module
     has no IR of it; and the event functions (a ``numba.cfunc``; address 0, never called, for a model
@@ -295,10 +295,7 @@ class AdaptiveKernel:
         self.NV = len(getattr(model_module, "EVENT_NAMES", ()))
         self.NQ = _n_constants(model_module)
         self._rhs, self._constants = getattr(model_module, rhs_name), model_module.constants
-        tab = erk_arrays(tableau)
-        #: the integrator's workspace, as the parts read it (offsets of K, y, y_new, work, scale, F, q)
-        self.layout = _irparts.Layout(n_state, tab.n_ext, tab.dense_rows)
-        stem = digest(tableau, tuple(vars(tab).values()), self._rhs, n_state, self.NQ)
+        stem = digest(tableau, _irparts.stages_ir(tableau), self._rhs, n_state, self.NQ)
         self.path = cache_dir() / "kernels" / f"erk-{tableau}-{model_module.__name__.rsplit('.', 1)[-1]}-{stem}"
         self.driver = driver(tableau)
         self._events = compiled_cfunc(self._events_py(), EVENTS_SIG, f"{self.path.name}-events") if self.NV else None
@@ -332,8 +329,8 @@ class AdaptiveKernel:
         ``NV``: the ``fns`` argument of the integrator."""
         if self._parts is None:
             constants = None
-            lib, addresses = _irparts.load_or_compile(self.path, self.TABLEAU, self.N, self.NQ, self.model,
-                                                      self.RHS_NAME, self._rhs_cfunc)
+            lib, addresses = _irparts.load_or_compile(self.path, self.TABLEAU, self.N, self.model, self.RHS_NAME,
+                                                      self._rhs_cfunc)
             attempt_address, dense_address, rhs_address, constants_address = addresses
             if constants_address:  # with the number of parameters it reads
                 constants = (np.int64(constants_address), self.model.LLVM_IR_READS)

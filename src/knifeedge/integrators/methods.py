@@ -11,6 +11,7 @@ published literals).
 """
 from __future__ import annotations
 
+import hashlib
 import math
 from dataclasses import dataclass, field
 from types import SimpleNamespace
@@ -249,6 +250,14 @@ def erk_arrays(name: str) -> SimpleNamespace:
     return SimpleNamespace(name=name, A=A, C=C, E5=E5, E3=E3, DD=DD, P=P, hairer=hairer, n_stages=s, n_ext=n_ext,
                            dense_rows=dense_rows, alt=alt, error_order=t.error_order)
 
+
+
+def erk_fingerprint(name: str) -> str:
+    """A SHA-256 of :func:`erk_arrays` of ``name``: the tables the stages' IR (generated/stages.py) was written
+    from must be the registered ones."""
+    tab = erk_arrays(name)
+    data = [repr((k, v.shape, v.tobytes()) if isinstance(v, np.ndarray) else (k, v)) for k, v in vars(tab).items()]
+    return hashlib.sha256("".join(data).encode()).hexdigest()
 
 # -- the methods -----------------------------------------------------------------------------------------------
 #: Dormand-Prince 5(4), the tables of SciPy's ``RK45`` (lyapunov.py reads them): ``DP54_A`` (6 x 5), ``DP54_E``
