@@ -1,7 +1,7 @@
 """The cache of compiled kernels: one private folder, numba's files checked by SHA-256 before they are unpickled.
 
 :func:`compiled` gives a kernel (a numba closure made by :mod:`.fixed` or :mod:`.erk`) numba's cache in
-``<cache>/kernels`` under a name that stands for everything its machine code depends on (:func:`stamp`).  Every
+``<cache>/kernels`` under a name that stands for everything its machine code depends on (its stamp).  Every
 file kept there carries a magic line and the SHA-256 of the rest, verified before anything in it is read
 (:class:`CheckedCacheFile`, :func:`read_checked`); a damaged one is discarded and compiled again
 (:func:`discard`), one that cannot be written is said (:func:`not_kept`).  docs/integrators.md says more.
@@ -39,16 +39,10 @@ def cache_dir() -> Path:
     It and its ``kernels`` folder are created private (mode 0700) and refused, said once on stderr, when another
     user could write to them (files planted there would be loaded as machine code).
     """
-    env = os.environ.get("KNIFEEDGE_CACHE_DIR")
-    if env:
-        candidates = [Path(env)]
-    else:
-        xdg = os.environ.get("XDG_CACHE_HOME")
-        base = Path(xdg) if xdg else Path.home() / ".cache"
-        candidates = [base / "knifeedge"]
+    env, xdg = os.environ.get("KNIFEEDGE_CACHE_DIR"), os.environ.get("XDG_CACHE_HOME")
     uid = os.getuid() if hasattr(os, "getuid") else "user"
     fallback = Path(tempfile.gettempdir()) / f"knifeedge-cache-{uid}"
-    candidates.append(fallback)
+    candidates = [Path(env) if env else (Path(xdg) if xdg else Path.home() / ".cache") / "knifeedge", fallback]
     refused = []
     for c in candidates:
         try:
@@ -120,13 +114,6 @@ def _code_named(f) -> tuple:
     read = tuple((n, _named(glob_[n])) for n in code.co_names if isinstance(glob_.get(n), (int, float, complex,
                                                                                             np.ndarray, CPUDispatcher)))
     return ("code", hashlib.sha256(marshal.dumps(code)).hexdigest(), read)
-
-
-def stamp(py_func) -> str:
-    """A hash of everything the machine code of the closure ``py_func`` depends on (:func:`digest` of its cells),
-    after its compiled closures are given names of their own (:func:`_distinct_names`)."""
-    _distinct_names(py_func)
-    return digest(_closure_named(py_func))
 
 
 def digest(*items) -> str:
@@ -203,8 +190,11 @@ def _distinct_names(py_func) -> None:
 
 
 def _named_in_cache(py_func, label: str) -> None:
-    """Name ``py_func``'s entry in ``<cache>/kernels``: ``<label>-<stamp>`` (read by :class:`_Locator`)."""
-    py_func.__knifeedge_cache__ = (str(cache_dir() / "kernels"), f"{label}-{stamp(py_func)}")
+    """Name ``py_func``'s entry in ``<cache>/kernels`` (read by :class:`_Locator`): ``<label>-<stamp>``, the stamp a
+    hash of everything the closure's machine code depends on (:func:`digest` of its cells), after its compiled
+    closures are given names of their own (:func:`_distinct_names`)."""
+    _distinct_names(py_func)
+    py_func.__knifeedge_cache__ = (str(cache_dir() / "kernels"), f"{label}-{digest(_closure_named(py_func))}")
 
 
 def compiled(py_func, label: str):

@@ -1,24 +1,11 @@
 """Adaptive embedded explicit Runge--Kutta integrator for any registered tableau (DOP853, DP54, Tsit5, ...).
 
-The algorithm is the one of SciPy's ``solve_ivp`` (``DOP853`` and ``RK45``):
-same tableaus (for those two), initial step (Hairer, Norsett & Wanner I, Sect. II.4), error
-norms and step-size controller (safety 0.9, factors in [0.2, 10], no increase
-right after a rejection), so the two agree step for step up to round-off.
-
-Error control: ``scale_i = atol_i + rtol * max(|y_i|, |y_new_i|)``.  With
-``mode_scaled`` the magnitude of a component is taken as the larger of itself
-and its partner ``pair[i]`` (a tilt and its rate), i.e. each oscillation
-mode is measured on its own amplitude rather than through its zero crossings.
-
-The integrator (:func:`driver`) is the part that does not depend on the
-model: the step-size control, the output and the location of zero crossings,
-compiled once per method and machine for every model.  The model's parts
-(:class:`AdaptiveKernel`) -- its right-hand side, the stages of a step with
-the error norm, the interpolant's extra stages (LLVM IR written at derive time
-with the coefficients as constants, the state size bound when linked, :mod:`.irparts`), its event
-functions -- are passed as machine addresses in ``fns`` and called through
-them (:mod:`.fnptr`): one indirect call per step, per initial step and per
-interpolant.
+SciPy's ``solve_ivp`` algorithm (``DOP853``, ``RK45``): initial step (Hairer, Norsett & Wanner I, Sect. II.4),
+error norm ``scale_i = atol_i + rtol * max(|y_i|, |y_new_i|)`` (``mode_scaled``: the magnitude of a component is
+the larger of itself and its partner ``pair[i]``) and controller (safety 0.9, factors in [0.2, 10], no increase
+right after a rejection), so the two agree step for step up to round-off.  :func:`driver` serves every model;
+a model's parts (:class:`AdaptiveKernel`) are called through their addresses (docs/integrators.md, "How the
+compiled methods are built").
 """
 from __future__ import annotations
 
@@ -41,7 +28,39 @@ _DRIVERS: dict = {}
 
 
 def driver(tableau: str):
-    """The compiled integrator of the registered tableau ``tableau`` (one per method, every model)."""
+    """The compiled integrator of the registered tableau ``tableau`` (one per method, every model):
+    ``solve(fns, t0, t1, y0, f0, q, p, control, request, out)`` integrates from ``t0`` toward ``t1 > t0``, at most
+    ``chunk`` accepted steps, as many as the buffers hold.
+
+    Parameters
+    ----------
+    fns : (5,) int64: the addresses of the model's parts ``rhs``, ``attempt``, ``dense``, ``events`` (see
+        :class:`AdaptiveKernel`) and the number of its event functions.
+    y0 : (n,) initial state; f0 : (n,) its derivative when continuing (``h_init > 0``), else ignored.
+    q : ``constants(p)`` of the right-hand side; p : the parameters (of the event functions).
+    control : ``(rtol, atol, h_init, max_step, pair, mode_scaled)``, the step control: ``rtol`` float, ``atol``
+        (n,) absolute tolerances; ``h_init`` the next step when continuing a run, or 0 to start one (the first
+        step is then chosen); ``max_step`` the largest step; ``pair`` (n,) int, the partner component for
+        ``mode_scaled`` error control (-1: none).
+    request : ``(t_eval, every, events, max_steps, chunk)``, what to record and for how long (the same for
+        every kernel): ``t_eval`` (m,) increasing output times in (t0, t1] still ahead (used when not
+        ``every``); ``every``: store every accepted step instead (the start is not stored); ``events`` (e,)
+        int, whose zero crossings are recorded: a state component ``c >= 0``, or ``-1 - j`` for the model's
+        event function ``j`` (``event_values(s, p)[j]``), see :mod:`.common`; ``max_steps`` accepted steps
+        allowed (the caller subtracts those already taken); ``chunk`` accepted steps after which the call
+        returns with status 1 (paused).
+    out : ``(ts, ys, ev_t, ev_k)``, the buffers filled (the same for every kernel): ``ts`` (r,), ``ys`` (r, n)
+        output rows (with ``every``, the call pauses when they are full; otherwise they must hold
+        ``t_eval``); ``ev_t`` (c,), ``ev_k`` (c,) int event times and numbers (the call pauses when a step
+        could overflow them: a step finds at most ``EVENTS_PER_STEP`` crossings of each event).
+
+    A paused run continues from the returned ``t, y, f, h_next`` (passed as ``t0, y0, f0, h_init``)
+    with the steps, evaluations and results of one uninterrupted call.
+
+    Returns
+    -------
+    n_out, n_ev, status, nfev, accepted, rejected, t, y, f, h_next
+    """
     if tableau not in _DRIVERS:
         _DRIVERS[tableau] = compiled(_driver_closure(tableau), f"erk-{tableau}")
     return _DRIVERS[tableau]
@@ -128,37 +147,7 @@ def _driver_closure(tableau: str):
     EIGHTH = ERROR_ORDER == 7  # err ** (-1/8) as three square roots, cheaper than pow (DOP853)
 
     def solve(fns, t0, t1, y0, f0, q, p, control, request, out):
-        """Integrate from ``t0`` toward ``t1 > t0``: at most ``chunk`` accepted steps, as many as the buffers hold.
-
-        Parameters
-        ----------
-        fns : (5,) int64: the addresses of the model's parts ``rhs``, ``attempt``, ``dense``, ``events`` (see
-            :class:`AdaptiveKernel`) and the number of its event functions.
-        y0 : (n,) initial state; f0 : (n,) its derivative when continuing (``h_init > 0``), else ignored.
-        q : ``constants(p)`` of the right-hand side; p : the parameters (of the event functions).
-        control : ``(rtol, atol, h_init, max_step, pair, mode_scaled)``, the step control: ``rtol`` float, ``atol``
-            (n,) absolute tolerances; ``h_init`` the next step when continuing a run, or 0 to start one (the first
-            step is then chosen); ``max_step`` the largest step; ``pair`` (n,) int, the partner component for
-            ``mode_scaled`` error control (-1: none).
-        request : ``(t_eval, every, events, max_steps, chunk)``, what to record and for how long (the same for
-            every kernel): ``t_eval`` (m,) increasing output times in (t0, t1] still ahead (used when not
-            ``every``); ``every``: store every accepted step instead (the start is not stored); ``events`` (e,)
-            int, whose zero crossings are recorded: a state component ``c >= 0``, or ``-1 - j`` for the model's
-            event function ``j`` (``event_values(s, p)[j]``), see :mod:`.common`; ``max_steps`` accepted steps
-            allowed (the caller subtracts those already taken); ``chunk`` accepted steps after which the call
-            returns with status 1 (paused).
-        out : ``(ts, ys, ev_t, ev_k)``, the buffers filled (the same for every kernel): ``ts`` (r,), ``ys`` (r, n)
-            output rows (with ``every``, the call pauses when they are full; otherwise they must hold
-            ``t_eval``); ``ev_t`` (c,), ``ev_k`` (c,) int event times and numbers (the call pauses when a step
-            could overflow them: a step finds at most ``EVENTS_PER_STEP`` crossings of each event).
-
-        A paused run continues from the returned ``t, y, f, h_next`` (passed as ``t0, y0, f0, h_init``)
-        with the steps, evaluations and results of one uninterrupted call.
-
-        Returns
-        -------
-        n_out, n_ev, status, nfev, accepted, rejected, t, y, f, h_next
-        """
+        """Integrate from ``t0`` toward ``t1 > t0`` (:func:`driver` says the arguments and returns)."""
         rtol, atol, h_init, max_step, pair, mode_scaled = control
         t_eval, every, events, max_steps, chunk = request
         ts, ys, ev_t, ev_k = out
@@ -278,16 +267,10 @@ EVENTS_SIG = types.void(_D, _D, _I8, _D)
 class AdaptiveKernel:
     """A model's parts of the integrator of ``tableau`` and :meth:`solve`, the integrator run with them.
 
-    The parts are the right-hand side, the stages of a step with the error norm (``attempt``), the
-    interpolant (``dense``), all LLVM IR written at derive time (:mod:`.irparts`) linked with the IR of the model's
-    ``rhs_q_into`` and ``constants`` that the generated module carries (``LLVM_IR``, written at derive time;
-    the right-hand side inlined into the stages), numba compiling the right-hand side only where the module
-    has no IR of it; and the event functions (a ``numba.cfunc``; address 0, never called, for a model
-    without event functions).  All are compiled on first use (:meth:`parts`) and cached.
-
-    Attributes: ``TABLEAU``, ``RHS_NAME``, ``N`` (state size), ``NV`` (event functions), ``NQ`` (size of
-    ``constants(p)``), ``path`` (the kernel's name in the cache folder: its parts file and the background
-    compiler's lock are named after it).
+    The parts: ``attempt`` (the stages of a step with the error norm) and ``dense`` (the interpolant), the IR of
+    ``generated/stages.py`` bound to the model's right-hand side (:mod:`.irparts`); the C-callable ``rhs``; the
+    event functions (a ``numba.cfunc``; address 0, never called, for a model without them).  All are compiled,
+    or loaded from the cache, on first use (:meth:`parts`).  ``path`` is the kernel's name in the cache folder.
     """
 
     def __init__(self, tableau: str, model_module, rhs_name: str, n_state: int):
@@ -299,7 +282,7 @@ class AdaptiveKernel:
         self.path = cache_dir() / "kernels" / f"erk-{tableau}-{model_module.__name__.rsplit('.', 1)[-1]}-{stem}"
         self.driver = driver(tableau)
         self._events = compiled_cfunc(self._events_py(), EVENTS_SIG, f"{self.path.name}-events") if self.NV else None
-        self._parts = None
+        self._fns = self._library = self._constants_ir = None
 
     def _rhs_cfunc(self):
         rhs, N = self._rhs, self.N
@@ -325,32 +308,28 @@ class AdaptiveKernel:
         return events_part
 
     def parts(self) -> np.ndarray:
-        """The addresses of the compiled parts (compiled, or loaded from the cache, at the first call), then
-        ``NV``: the ``fns`` argument of the integrator."""
-        if self._parts is None:
-            constants = None
-            lib, addresses = _irparts.load_or_compile(self.path, self.TABLEAU, self.N, self.model, self.RHS_NAME,
-                                                      self._rhs_cfunc)
-            attempt_address, dense_address, rhs_address, constants_address = addresses
-            if constants_address:  # with the number of parameters it reads
-                constants = (np.int64(constants_address), self.model.LLVM_IR_READS)
-            kept = (lib,)  # kept alive: the integrator calls them by address
-            events_address = 0  # no event functions: never called
+        """``fns``, the integrator's first argument: the addresses of the compiled parts (compiled, or loaded from
+        the cache, at the first call), then ``NV``."""
+        if self._fns is None:
+            self._library, addresses = _irparts.load_or_compile(self.path, self.TABLEAU, self.N, self.model,
+                                                                self.RHS_NAME, self._rhs_cfunc)
+            attempt, dense, rhs, constants = addresses  # the library is kept: the integrator calls them by address
+            if constants:  # with the number of parameters it reads
+                self._constants_ir = (np.int64(constants), self.model.LLVM_IR_READS)
+            events = 0  # no event functions: never called
             if self._events is not None:
                 self._events.compile()
-                kept += (self._events,)
-                events_address = self._events.address
-            fns = np.array([rhs_address, attempt_address, dense_address, events_address, self.NV], dtype=np.int64)
-            self._parts = (kept, fns, constants)
-        return self._parts[1]
+                events = self._events.address
+            self._fns = np.array([rhs, attempt, dense, events, self.NV], dtype=np.int64)
+        return self._fns
 
     def constants(self, p) -> np.ndarray:
         """``q = constants(p)`` of the right-hand side: the model's, compiled as IR with the parts where it
         could be written so (``p`` must hold the parameters it reads), else numba's compilation of it."""
         self.parts()
-        if self._parts[2] is None:
+        if self._constants_ir is None:
             return self._constants(p)
-        address, reads = self._parts[2]
+        address, reads = self._constants_ir
         if not (type(p) is np.ndarray and p.dtype == np.float64 and p.ndim == 1 and p.flags.c_contiguous):
             p = np.ascontiguousarray(p, dtype=np.float64)
         if p.ndim != 1 or p.size < reads:

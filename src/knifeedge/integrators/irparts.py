@@ -1,38 +1,23 @@
 """A model's stages of a step and its interpolant: the method's LLVM IR written at derive time, compiled here.
 
-The adaptive integrator (:mod:`.erk`) calls four parts of each model through
-their addresses (:class:`.erk.AdaptiveKernel`).  Two of them, ``attempt``
-(the stages of a step, ``y_new``, the error scale and norm) and ``dense``
-(the interpolant's extra stages and rows), are the method's IR that ``make
-derive`` wrote into ``generated/stages.py`` (``derivation/stage_ir.py``: loops
-over the state's components, the coefficients as exact literals, the
-summation order documented there); the third is the C-callable right-hand
-side defined there too.  The IR calls the right-hand side by one symbol
-(``stages.RHS``), which :func:`bound_module` binds to the model's by renaming
-symbols with llvmlite (no text is written here): the IR of the model's
-``rhs_q_into`` that the generated module carries (``LLVM_IR``, written by
-``derivation/ir_emit.py``), linked in before optimization so that LLVM
-inlines it into every stage, or else numba's compiled ``rhs`` part (a
-``numba.cfunc``) linked as a library.  The model's ``constants`` IR, where it
-carries one, is exported likewise.  numba's codegen optimizes and compiles
-the result (:func:`compile_library`: LLVM alone, 0.1-0.3 s; numba's front end
-took 2.3-2.9 s for the same parts).
-
-The compiled parts are kept in one file per kernel and machine
-(:func:`cache_file`: numba's serialized object code), so that a second
-process loads them in milliseconds (:func:`load_or_compile`).  The file is a
-checked cache file, as numba's files of the kernels (:func:`.cache.write_checked`:
-a SHA-256 verified before anything in it is read, only files of this user
-that no one else may write are read), and no pickle: a JSON line with the
-compilers' versions and the machine (:func:`_key`) and the sizes of numba's
-two blobs (object code, bitcode), then the blobs; a file of another
-key, or one that fails a check, is removed, said in one line and compiled again.
+``attempt`` and ``dense`` (:class:`.erk.AdaptiveKernel`) are the IR that ``make derive`` wrote into
+``generated/stages.py`` (``derivation/stage_ir.py``, which documents it).  :func:`bound_module` binds its
+right-hand side to the model's by renaming symbols with llvmlite (no text is written here): the model's
+``LLVM_IR``, linked in so that LLVM inlines it into every stage, or else numba's compiled ``rhs`` part.  LLVM
+alone compiles the result (:func:`compile_library`, 0.1-0.3 s), kept in one checked cache file per kernel and
+machine (:func:`cache_file`, :func:`write_parts`: a JSON line and numba's two blobs, no pickle).
 """
 from __future__ import annotations
 
 import hashlib
 import json
 from pathlib import Path
+
+import llvmlite
+import llvmlite.binding as ll
+import numba
+from numba.core.compiler_lock import global_compiler_lock
+from numba.core.registry import cpu_target
 
 from .cache import discard, read_checked, write_checked
 from .methods import erk_fingerprint
@@ -55,8 +40,6 @@ def stages_ir(tableau: str) -> str:
 
 
 def _parsed(text: str, name: str):
-    import llvmlite.binding as ll
-
     module = ll.parse_assembly(text)
     module.name = name
     return module
@@ -64,14 +47,9 @@ def _parsed(text: str, name: str):
 
 def bound_module(tableau: str, n: int, model, rhs_name: str, rhs_cfunc, names: tuple) -> tuple:
     """``(module, libraries)``: the stages of ``tableau`` with their right-hand side bound to ``model``'s
-    ``rhs_name`` and their symbols renamed to ``names`` (``attempt``, ``dense``, the C-callable ``rhs``, then
-    ``constants`` where the model carries its IR), and the numba libraries to link with it.  The state size
-    the stages read is bound to the constant ``n`` (``stages.SIZES``; a state larger than ``stages.MAX_SIZE``
-    reads it from the argument).
-
-    The right-hand side is the IR the generated ``model`` carries (``model.LLVM_IR``), renamed to the stages'
-    symbol and linked in; one it does not carry is numba's compiled ``rhs`` part (``rhs_cfunc()``, a
-    ``numba.cfunc``), whose symbol the stages' declaration takes.
+    ``rhs_name`` (its ``LLVM_IR`` linked in, else the symbol of ``rhs_cfunc()``, a ``numba.cfunc``, whose library
+    is returned to be linked), the state size to the constant ``n`` (``stages.SIZES``; above
+    ``stages.MAX_SIZE`` read from the argument), and their symbols renamed to ``names`` (:func:`symbols`).
     """
     from ..generated import stages
 
@@ -110,11 +88,8 @@ def _link(module, text: str, name: str, symbol: str) -> None:
 
 
 def compile_library(module, name: str, link):
-    """numba's code library of the parsed IR ``module``, the libraries ``link`` linked in before optimization
-    (so that their functions inline), optimized by numba's pipeline, finalized, its object code kept to be
-    saved."""
-    from numba.core.compiler_lock import global_compiler_lock
-
+    """numba's code library of the parsed IR ``module`` with the libraries ``link`` (linked before optimization,
+    so that their functions inline), finalized, its object code kept to be saved."""
     with global_compiler_lock:
         lib = _codegen().create_library(name)
         lib.enable_object_caching()
@@ -126,30 +101,24 @@ def compile_library(module, name: str, link):
 
 
 def _codegen():
-    from numba.core.registry import cpu_target
-
     return cpu_target.target_context.codegen()
 
 
 def _key() -> tuple:
     """What compiled parts depend on beside their IR: this module's format, numba, llvmlite and the machine."""
-    import llvmlite
-    import numba
-
     return (FORMAT, numba.__version__, llvmlite.__version__, _codegen().magic_tuple())
 
 
 def cache_file(kernel_path) -> Path:
-    """Where the compiled parts of the kernel ``kernel_path`` (``AdaptiveKernel.path``, a name in the cache
-    folder) are kept on this machine: named after it and a hash of :func:`_key`."""
+    """Where the compiled parts of the kernel ``kernel_path`` (``AdaptiveKernel.path``) are kept on this
+    machine: named after it and a hash of :func:`_key`."""
     path = Path(kernel_path)
     return path.with_name(f"{path.stem}.parts-{hashlib.sha256(repr(_key()).encode()).hexdigest()[:16]}.nbo")
 
 
 def symbols(kernel_path) -> tuple:
-    """The symbols of ``attempt``, ``dense``, the C-callable ``rhs`` and ``constants`` for the kernel
-    ``kernel_path`` (unique per module; the first three are in every parts library, ``constants`` where the
-    model carries its IR)."""
+    """The symbols of ``attempt``, ``dense``, ``rhs`` and ``constants`` (where the model carries its IR) in the
+    parts of the kernel ``kernel_path``, unique per kernel."""
     stem = Path(kernel_path).stem
     return (f"knifeedge.attempt.{stem}", f"knifeedge.dense.{stem}", f"knifeedge.rhs.{stem}",
             f"knifeedge.constants.{stem}")
@@ -157,8 +126,6 @@ def symbols(kernel_path) -> tuple:
 
 def _load(path: Path, names: tuple):
     """``(library, addresses)`` kept in ``path``, or None (a file that cannot be used is discarded)."""
-    from numba.core.compiler_lock import global_compiler_lock
-
     if not path.exists():
         return None
     try:
@@ -175,13 +142,10 @@ def _load(path: Path, names: tuple):
 
 
 def load_or_compile(kernel_path, tableau: str, n: int, model, rhs_name: str, rhs_cfunc) -> tuple:
-    """``(library, addresses)`` of the parts of the kernel ``kernel_path`` (``AdaptiveKernel.path``, a name in
-    the cache folder), loaded from :func:`cache_file`, or compiled from :func:`bound_module` and saved there;
-    ``addresses`` are those of :func:`symbols` (0 for ``constants`` where the model has no IR of it).  A cache
-    file that cannot be read is removed, said in one line on stderr, and compiled again.
+    """``(library, addresses)`` of the parts of the kernel ``kernel_path``, loaded from :func:`cache_file`, or
+    compiled from :func:`bound_module` and saved there; ``addresses`` are those of :func:`symbols` (0 for
+    ``constants`` where the model has no IR of it).  A file that cannot be read is discarded and compiled again.
     """
-    from numba.core.compiler_lock import global_compiler_lock
-
     path = cache_file(kernel_path)
     names = symbols(kernel_path)
     loaded = _load(path, names)

@@ -1,13 +1,9 @@
 """Integration methods as data: every compiled method is a tableau, checked when it is built, registered by name.
 
-Two kinds, one registry (:data:`COMPILED_METHODS`, :func:`register`): :class:`ExplicitTableau`, an embedded
-explicit Runge--Kutta pair with dense output in the first-same-as-last form, run by the adaptive integrator
-(:mod:`.erk`); :class:`FixedMethod`, a Butcher tableau taken with a fixed step (:mod:`.fixed`: an explicit one
-stage after stage, an implicit one by fixed-point iteration of its stage equations).  Adding a method is its
-tableau and one :func:`register` line at the end of this module (docs/integrators.md, "A method is data").
-Each method's ``reference`` (or the comment above it) gives its source; SciPy's public tables are DOP853's and
-DP54's, so the compiled runs and SciPy's share them (``tests/test_tableaus.py`` checks them against the
-published literals).
+:class:`ExplicitTableau` (an embedded explicit pair with dense output, run by :mod:`.erk`) and
+:class:`FixedMethod` (a Butcher tableau taken with a fixed step, :mod:`.fixed`) share one registry
+(:data:`COMPILED_METHODS`, :func:`register`); adding one is docs/integrators.md, "A method is data".  DOP853's
+and DP54's tables are SciPy's (``tests/test_tableaus.py`` checks them against the published literals).
 """
 from __future__ import annotations
 
@@ -251,13 +247,13 @@ def erk_arrays(name: str) -> SimpleNamespace:
                            dense_rows=dense_rows, alt=alt, error_order=t.error_order)
 
 
-
 def erk_fingerprint(name: str) -> str:
     """A SHA-256 of :func:`erk_arrays` of ``name``: the tables the stages' IR (generated/stages.py) was written
     from must be the registered ones."""
     tab = erk_arrays(name)
     data = [repr((k, v.shape, v.tobytes()) if isinstance(v, np.ndarray) else (k, v)) for k, v in vars(tab).items()]
     return hashlib.sha256("".join(data).encode()).hexdigest()
+
 
 # -- the methods -----------------------------------------------------------------------------------------------
 #: Dormand-Prince 5(4), the tables of SciPy's ``RK45`` (lyapunov.py reads them): ``DP54_A`` (6 x 5), ``DP54_E``
