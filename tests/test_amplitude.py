@@ -141,6 +141,9 @@ def test_generated_rhs_equals_its_sympy_source(systems, key):
         np.testing.assert_allclose(m.rhs(0.0, np.array(s), np.array(p)), f(s, p), rtol=1e-12, atol=1e-15)
 
 
+# not the symbolic group: that group goes first, to one worker, while the other compiles the DOP853 driver for
+# its first checks; run later, this check loads the driver from the cache instead of compiling it again (~8 s)
+@pytest.mark.xdist_group("amplitude_runtime")
 def test_amplitude_model_runtime():
     """ke.load(..., 'amplitude'): state (A_theta, A_phi) / (A1, A2, A_phi), spin A_phi, no pose,
     no multipliers; its energy is conserved along a simulation."""

@@ -154,6 +154,7 @@ def _issue_rhs(t, y, g, r):
     return [q2d, q1dd, q2dd, q3dd]
 
 
+@pytest.mark.slow  # compiles the module's rhs (~1.5 s); the compiled module against #27631: the trajectory check below
 def test_compiled_rhs_matches_sympy_issue_27631_at_random_states():
     """The generated, numba-compiled module (what ke.load gives) against #27631, 1e-10 relative."""
     m = ke.load("rolling_disk")
