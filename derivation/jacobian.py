@@ -4,8 +4,8 @@
 ``jacobian_p(s, p)`` is ``d rhs / d p``, shape ``(n, n_params)``.  Both are
 derived exactly and printed with shared subexpressions, like the right-hand
 side (SymForce emits Jacobians beside values; jitcode derives the variational
-equations the same way).  ``jvp_into(s, p, V, ds, out)`` writes the rates and
-the Jacobian-vector product ``J(s) V`` of the columns of ``V`` (what the
+equations the same way).  ``jvp_into(s, p, _V, ds, out)`` writes the rates and
+the Jacobian-vector product ``J(s) _V`` of the columns of ``_V`` (what the
 Lyapunov loop steps its tangent vectors with; :func:`jvp_source`), and
 ``jvp1_into(s, p, _v, ds, _dv)`` the same of one vector ``_v``.  An emitter
 appends :func:`block_source` to its module; the block also adds the functions'
@@ -243,8 +243,8 @@ def _primal_and_tangent(program, rates, seeds: dict) -> tuple[list, list, list]:
 
 
 def jvp_source(program, rates, state, params) -> tuple[str, int, int]:
-    """Source of ``jvp_into(s, p, V, ds, out)``: the rates ``ds`` (as ``rhs_into``) and their derivatives along
-    the ``k`` columns of ``V``, ``out = J(s) V`` (both ``(n, k)``), as JAX's ``jvp`` returns the value with the
+    """Source of ``jvp_into(s, p, _V, ds, out)``: the rates ``ds`` (as ``rhs_into``) and their derivatives along
+    the ``k`` columns of ``_V``, ``out = J(s) _V`` (both ``(n, k)``), as JAX's ``jvp`` returns the value with the
     derivative; with the operations once per call and per column.
 
     ``rates`` bound by the straight-line ``program`` (pairs ``(symbol, expression)``: a closed form's CSE, or the
@@ -271,16 +271,16 @@ def jvp_source(program, rates, state, params) -> tuple[str, int, int]:
     timed = names.t in set().union(set(), *(e.free_symbols for _, e in program), *(e.free_symbols for _, e in values))
     nl = "\n"
     head = (nl.join(unpack), nl.join(f"    {sym} = {_code(e)}" for sym, e in once + values))
-    body = (*head, "    for _j in range(V.shape[1]):",
-            nl.join(f"        {v} = V[{j}, _j]" for j, v in enumerate(seeds.values()) if v in used),
+    body = (*head, "    for _j in range(_V.shape[1]):",
+            nl.join(f"        {v} = _V[{j}, _j]" for j, v in enumerate(seeds.values()) if v in used),
             nl.join(f"        {sym} = {_code(e)}" for sym, e in loop))
-    doc = (f"Write d(state)/dt into ``ds`` and ``J(s) V`` into ``out`` (``V``, ``out``: ({len(state)}, k)), the "
-           f"derivatives of the rates along the columns of ``V`` by forward mode through the right-hand side "
+    doc = (f"Write d(state)/dt into ``ds`` and ``J(s) _V`` into ``out`` (``_V``, ``out``: ({len(state)}, k)), the "
+           f"derivatives of the rates along the columns of ``_V`` by forward mode through the right-hand side "
            f"({ops_once} operations once, {ops_column} per column).")
-    args = "s, p, t, V, ds, out" if timed else "s, p, V, ds, out"
+    # the directions named with "_" (no user's name is): a model may name a parameter ``V``
+    args = "s, p, t, _V, ds, out" if timed else "s, p, _V, ds, out"
     # one column, the same lines without the loop over the columns: straight-line code is ~13 % faster per call
     # (the Lyapunov loop's largest exponent: ~6 % of its time)
-    # (its vectors named with "_": a model may name a state ``v``)
     one = (*head, nl.join(f"    {v} = _v[{j}]" for j, v in enumerate(seeds.values()) if v in used),
            nl.join(f"    {str(sym).replace('out[', '_dv[').replace(', _j]', ']')} = {_code(e)}" for sym, e in loop))
     doc1 = (f"``jvp_into`` of one column: d(state)/dt into ``ds`` and ``J(s) _v`` into ``_dv`` (vectors of length "
