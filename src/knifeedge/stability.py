@@ -158,40 +158,56 @@ def linearize(m: Model, y, p, family: str | None = None) -> Linearization:
     if m.jacobian_needs_time:
         raise ValueError(f"{m.name} depends on the time explicitly: a linearization at a state alone is not "
                          f"defined (its steady motions are those of autonomous models)")
-    names = m.closed_state_names
-    n = len(names)
-    A = jacobian(m, y, p)
-    eigenvalues, eigenvectors = np.linalg.eig(A)
-    value = None
     if family is None:
         family, value = _through(m, y, p)
     else:
-        k = _family_index(m, family)
-        info = m.module.STEADY_FAMILIES[family]
-        value = float(y[names.index(info["value_state"])]) if info["value_state"] else None
-    inv_names = tuple(getattr(m.module, "STATE_INVARIANTS", ()))
-    G = m.module.invariant_gradients(y, p) if inv_names else np.zeros((0, n))
-    trivial = []
+        _family_index(m, family)
+        value = _family_value(m, y, family)
+    return _linearize(m, y, p, family, value)
+
+
+def _family_value(m: Model, y: np.ndarray, family: str) -> float | None:
+    """The parameter of the steady motions ``family`` read from the closed state ``y`` (``None`` if it has none)."""
+    info = m.module.STEADY_FAMILIES[family]
+    return float(y[m.closed_state_names.index(info["value_state"])]) if info["value_state"] else None
+
+
+def _frame(m: Model, y: np.ndarray, p: np.ndarray, family: str | None, value: float | None) -> tuple:
+    """``(A, G, N, t, Q, B)`` at the closed state ``y`` (``p`` validated): the Jacobian, the invariants' gradients
+    and an orthonormal basis ``N`` of their complement, the unit tangent of the family (``None`` off one), the
+    basis ``Q`` of the physical directions and ``B = Q^T A Q``."""
+    n = y.size
+    A = jacobian(m, y, p)
+    G = m.module.invariant_gradients(y, p) if getattr(m.module, "STATE_INVARIANTS", ()) else np.zeros((0, n))
     N, _ = _basis(G, n)
+    t, rows = None, G
+    if family is not None:
+        t = m.module.steady_state(_family_index(m, family), value if value is not None else 0.0, p)[1]
+        t = t - N @ (N.T @ t)
+        t = t / np.linalg.norm(t)
+        rows = np.vstack([G, t])
+    _, Q = _basis(rows, n)
+    return A, G, N, t, Q, Q.T @ A @ Q
+
+
+def _linearize(m: Model, y: np.ndarray, p: np.ndarray, family: str | None, value: float | None) -> Linearization:
+    """:func:`linearize` at the closed state ``y`` with ``p`` validated and the family's ``value`` known."""
+    names = m.closed_state_names
+    A, G, N, t, Q, B = _frame(m, y, p, family, value)
+    eigenvalues, eigenvectors = np.linalg.eig(A)
+    inv_names = tuple(getattr(m.module, "STATE_INVARIANTS", ()))
+    trivial = []
     if N.shape[1]:
         lam, w = np.linalg.eig(N.T @ A @ N)
         for j in range(len(lam)):
             v = N @ w[:, j]
             which = int(np.argmax(np.abs(G @ v.real) + np.abs(G @ v.imag)))
             trivial.append(Mode(f"invariant: {inv_names[which]}", complex(lam[j]), v))
-    rows = G
     mode_names, skip = {}, ""
     if family is not None:
-        k = _family_index(m, family)
         info = m.module.STEADY_FAMILIES[family]
         mode_names, skip = info["mode_names"], info["value_state"]
-        t = m.module.steady_state(k, value if value is not None else 0.0, p)[1]
-        t = t - N @ (N.T @ t)
-        t = t / np.linalg.norm(t)
         trivial.append(Mode(f"family {family}: {info['description']}", complex(t @ A @ t), t))
-        rows = np.vstack([G, t])
-    _, Q = _basis(rows, n)
-    B = Q.T @ A @ Q
     lam, w = np.linalg.eig(B)
     order = np.lexsort((-lam.imag, -lam.real))
     modes = tuple(Mode(_name(Q @ w[:, j], names, mode_names, skip), complex(lam[j]), Q @ w[:, j]) for j in order)
@@ -224,17 +240,21 @@ def stability(m: Model, p, family: str, values) -> StabilityTable:
     p = m.check_params(p)
     values = _values(values)
     rows, names = [], []
+    k = _family_index(m, family)
     for v in values:
-        lin = linearize(m, steady_state(m, p, family, v), p, family=family)
+        y = m.module.steady_state(k, float(v), p)[0].copy()
+        lin = _linearize(m, y, p, family, _family_value(m, y, family))
         rows.append(lin.physical_eigenvalues)
         names.append(tuple(md.name for md in lin.modes))
     return StabilityTable(family, values, np.array(rows), tuple(names))
 
 
 def _growth(m: Model, p: np.ndarray, family: str, v: float) -> tuple:
-    """Largest physical real part at ``v`` and the threshold below which it counts as zero."""
-    lin = linearize(m, steady_state(m, p, family, v), p, family=family)
-    return float(lin.physical_eigenvalues.real.max()), MARGINAL * max(float(np.linalg.norm(lin.A_physical)), 1e-300)
+    """Largest physical real part at ``v`` and the threshold below which it counts as zero (``p`` validated: the
+    eigenvalues of the physical block alone, as :func:`linearize` computes them, without naming the modes)."""
+    y = m.module.steady_state(_family_index(m, family), float(v), p)[0].copy()
+    B = _frame(m, y, p, family, _family_value(m, y, family))[-1]
+    return float(np.linalg.eig(B)[0].real.max()), MARGINAL * max(float(np.linalg.norm(B)), 1e-300)
 
 
 def stability_boundaries(m: Model, p, family: str, interval, n_grid: int = 400) -> np.ndarray:
