@@ -32,14 +32,12 @@ def _ptr(a):
 
 
 class Layout:
-    """The offsets of the integrator's workspace (derivation/stage_ir.py): K (n_ext x n), y, y_new, work, scale
-    (n each), F (dense_rows x n), then q."""
+    """The offsets of ``y`` and ``q`` in the integrator's workspace on ``n`` states (its one layout,
+    ``methods.erk_arrays(method).rows``: K (n_ext x n), y, y_new, work, scale (n each), F (dense_rows x n), q)."""
 
     def __init__(self, n: int, method: str):
-        t = methods.erk_arrays(method)
-        self.k = [j * n for j in range(t.n_ext)]
-        o = t.n_ext * n
-        self.y, self.q = o, o + (4 + t.dense_rows) * n
+        rows = methods.erk_arrays(method).rows
+        self.y, self.q = rows["y"] * n, rows["q"] * n
 
 
 def _layout(mod):

@@ -218,7 +218,10 @@ def erk_arrays(name: str) -> SimpleNamespace:
     ``A``, ``C`` over all ``n_ext`` stages (the method's ``n_stages``, the weights as the stage at ``t + h``, then
     DOP853's extra dense-output stages); ``E5`` the error estimator, ``E3`` DOP853's second one (else zeros);
     ``DD`` DOP853's interpolant or ``P`` the others' power series (the unused one a 1 x 1 zero); ``dense_rows``
-    and ``alt``: the rows of the interpolant ``F`` and their Horner factors (:mod:`.common`).
+    and ``alt``: the rows of the interpolant ``F`` and their Horner factors (:mod:`.common`); ``rows``: the
+    integrator's one array (the workspace, its one layout), where each of its arrays starts, in rows of ``n``
+    (the state's size): ``K`` (``n_ext`` rows) at 0, ``y``, ``y_new``, ``work``, ``scale`` (one row each),
+    ``F`` (``dense_rows``), then ``q``.
     """
     t = get(name, "erk")
     hairer = t.hairer is not None
@@ -243,8 +246,9 @@ def erk_arrays(name: str) -> SimpleNamespace:
         P = t.P.copy()
         dense_rows = P.shape[1]
     alt = np.array([hairer and r % 2 == 1 for r in range(dense_rows)])
+    rows = dict(zip(("y", "y_new", "work", "scale", "F"), range(n_ext, n_ext + 5)), q=n_ext + 4 + dense_rows)
     return SimpleNamespace(name=name, A=A, C=C, E5=E5, E3=E3, DD=DD, P=P, hairer=hairer, n_stages=s, n_ext=n_ext,
-                           dense_rows=dense_rows, alt=alt, error_order=t.error_order)
+                           dense_rows=dense_rows, alt=alt, error_order=t.error_order, rows=rows)
 
 
 def erk_fingerprint(name: str) -> str:
