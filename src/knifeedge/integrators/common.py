@@ -22,7 +22,7 @@ slicing and broadcasting assignments (numba compiles their error messages, half 
 import numpy as np
 from numba import njit
 
-EPS = np.finfo(np.float64).eps
+_EPS = np.finfo(np.float64).eps
 #: interior samples of a suspected step: SAMPLES - 1 equally spaced points, plus the Hermite extrema
 SAMPLES = 8
 #: most zero crossings of one event a kernel finds in one step (room the event buffers keep per event)
@@ -172,7 +172,7 @@ def locator(values=None, event_at=None):
                                 if side == 1:
                                     fb_ *= 0.5
                                 side = 1
-                            if b - a <= 4.0 * EPS:
+                            if b - a <= 4.0 * _EPS:
                                 break
                     if n_ev < ev_t.size:
                         ev_t[n_ev] = t + x * h

@@ -12,7 +12,7 @@ from numba import njit
 
 from . import common as _c
 from .cache import compiled, is_cached
-from .common import EPS, EVENTS_PER_STEP, NEAR
+from .common import _EPS, EVENTS_PER_STEP, NEAR
 from .methods import get
 
 MAX_STAGE_ITER = 100
@@ -107,7 +107,7 @@ def _increments(m, N: int, rhs):
                 return nfev, False
             if it == 0:
                 dfirst = d
-            if d <= 4.0 * EPS or dglob == 0.0 or (d >= dprev and dglob <= 1e-14 * ynorm):
+            if d <= 4.0 * _EPS or dglob == 0.0 or (d >= dprev and dglob <= 1e-14 * ynorm):
                 for i in range(N):
                     acc = 0.0
                     for k in range(S):
