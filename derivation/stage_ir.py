@@ -40,9 +40,8 @@ return NaN, so the step is rejected and the run ends with the step-size
 failure instead of going on with garbage.  (``dense`` has no way to say so:
 its extra stages lie inside a step whose own stages all succeeded.)
 
-The workspace is the integrator's one array: ``K`` (``n_ext x n``), ``y``,
-``y_new``, ``work``, ``scale`` (``n`` each), ``F`` (``dense_rows x n``), then
-``q`` (``workspace`` in ``knifeedge.integrators.erk``).
+The workspace is the integrator's one array, laid out as
+``knifeedge.integrators.methods.erk_arrays(...).rows`` says (its one home).
 """
 from __future__ import annotations
 
@@ -163,17 +162,17 @@ class _Writer:
 
 
 class _Layout:
-    """Pointers to the workspace's arrays (see the module's doc), computed from ``%ws`` and ``%n``."""
+    """Pointers to the workspace's arrays (``tab.rows``), computed from ``%ws`` and ``%n``."""
 
     def __init__(self, w: _Writer, tab):
         def row(r: int) -> str:
             return "%ws" if r == 0 else w.at("%ws", w.value(f"mul nuw nsw i64 %n, {r}"))
 
-        o = tab.n_ext
+        rows = tab.rows
         self.k = [row(j) for j in range(tab.n_ext)]
-        self.y, self.y_new, self.work, self.scale = row(o), row(o + 1), row(o + 2), row(o + 3)
-        self.f = [row(o + 4 + r) for r in range(tab.dense_rows)]
-        self.q = row(o + 4 + tab.dense_rows)
+        self.y, self.y_new, self.work, self.scale = (row(rows[a]) for a in ("y", "y_new", "work", "scale"))
+        self.f = [row(rows["F"] + r) for r in range(tab.dense_rows)]
+        self.q = row(rows["q"])
 
 
 def _stage(w: _Writer, lay: _Layout, row, s: int, time: str, target: str, scaled: bool) -> None:

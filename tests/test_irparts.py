@@ -32,14 +32,12 @@ def _ptr(a):
 
 
 class Layout:
-    """The offsets of the integrator's workspace (derivation/stage_ir.py): K (n_ext x n), y, y_new, work, scale
-    (n each), F (dense_rows x n), then q."""
+    """The offsets of ``y`` and ``q`` in the integrator's workspace on ``n`` states (its one layout,
+    ``methods.erk_arrays(method).rows``: K (n_ext x n), y, y_new, work, scale (n each), F (dense_rows x n), q)."""
 
     def __init__(self, n: int, method: str):
-        t = methods.erk_arrays(method)
-        self.k = [j * n for j in range(t.n_ext)]
-        o = t.n_ext * n
-        self.y, self.q = o, o + (4 + t.dense_rows) * n
+        rows = methods.erk_arrays(method).rows
+        self.y, self.q = rows["y"] * n, rows["q"] * n
 
 
 def _layout(mod):
@@ -145,6 +143,25 @@ def test_ir_parts_compute_the_loops_over_the_tableau(method, rolled, tmp_path, m
     _step(ir, ws, 0.05, 1e-7, atol, pair, 0)
     exact = 0.8 * math.cos(0.1) - 0.15 * math.sin(0.1)
     assert abs(ws[_layout(ir).y + 3] - exact) < (1e-14 if method == "DOP853" else 1e-9), abs(ws[_layout(ir).y + 3] - exact)
+
+
+def test_the_workspace_has_one_layout_read_by_the_integrator_and_the_stages():
+    """The integrator's one array (``methods.erk_arrays(...).rows``, read by the stages' IR and by the
+    integrator's ``workspace``): K, y, y_new, work, scale, F, then q, in rows of n, with the published methods'
+    sizes: DOP853 12 stages, the step's own (f at t + h) and the 3 extra stages of Hairer's dense output, its
+    interpolant 7 rows (SciPy's ``Dop853DenseOutput``); DP54 (SciPy's RK45) and Tsit5 6 + 1 stages, 4 rows."""
+    from knifeedge.integrators.erk import _workspace_closure
+
+    n = 3
+    for name, (n_k, n_f) in {"DOP853": (16, 7), "DP54": (7, 4), "Tsit5": (7, 4)}.items():
+        rows = methods.erk_arrays(name).rows
+        assert rows == {"y": n_k, "y_new": n_k + 1, "work": n_k + 2, "scale": n_k + 3, "F": n_k + 4,
+                        "q": n_k + 4 + n_f}, name
+        ws, K, y, y_new, work, F = _workspace_closure(rows).py_func(np.arange(1.0, n + 1), np.array([7.0, 8.0]))
+        assert ws.size == (n_k + 4 + n_f) * n + 2 and list(ws[-2:]) == [7.0, 8.0] and list(y) == [1.0, 2.0, 3.0]
+        assert K.shape == (n_k, n) and F.shape == (n_f, n)
+        for view, row in ((K, 0), (y, n_k), (y_new, n_k + 1), (work, n_k + 2), (F, n_k + 4)):
+            assert view.ctypes.data - ws.ctypes.data == 8 * row * n, name
 
 
 def test_the_error_norm_is_hairers_from_the_stages():

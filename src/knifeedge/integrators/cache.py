@@ -172,29 +172,29 @@ class KernelCache(FunctionCache):
         return (sig, codegen.magic_tuple(), self._py_func.__knifeedge_cache__[1])
 
 
-def _distinct_names(py_func) -> None:
+def _distinct_names(py_func) -> str:
     """Give the closure ``py_func`` and every compiled closure in its cells (and in theirs) a name that stands for
     its code and cells: numba links machine code of one name once per process, so a kernel loaded from the cache
     would call another closure of the same factory (or be another kernel, of another model) compiled or loaded
-    here under the same name (NOTES, fourth stop)."""
-    if getattr(py_func, "__knifeedge_named__", False):
-        return
-    for cell in py_func.__closure__ or ():
-        contents = cell.cell_contents
-        for value in contents if isinstance(contents, tuple) else (contents,):
-            f = getattr(value, "py_func", None)
-            if f is not None and f.__closure__:
-                _distinct_names(f)
-    py_func.__qualname__ = f"{py_func.__qualname__}_{digest(_closure_named(py_func))[:12]}"
-    py_func.__knifeedge_named__ = True
+    here under the same name (NOTES, fourth stop).  Returns its stamp, the :func:`digest` of its code and cells."""
+    stamp = getattr(py_func, "__knifeedge_stamp__", None)
+    if stamp is None:
+        for cell in py_func.__closure__ or ():
+            contents = cell.cell_contents
+            for value in contents if isinstance(contents, tuple) else (contents,):
+                f = getattr(value, "py_func", None)
+                if f is not None and f.__closure__:
+                    _distinct_names(f)
+        stamp = digest(_closure_named(py_func))
+        py_func.__qualname__ = f"{py_func.__qualname__}_{stamp[:12]}"
+        py_func.__knifeedge_stamp__ = stamp
+    return stamp
 
 
 def _named_in_cache(py_func, label: str) -> None:
-    """Name ``py_func``'s entry in ``<cache>/kernels`` (read by :class:`_Locator`): ``<label>-<stamp>``, the stamp a
-    hash of everything the closure's machine code depends on (:func:`digest` of its cells), after its compiled
-    closures are given names of their own (:func:`_distinct_names`)."""
-    _distinct_names(py_func)
-    py_func.__knifeedge_cache__ = (str(cache_dir() / "kernels"), f"{label}-{digest(_closure_named(py_func))}")
+    """Name ``py_func``'s entry in ``<cache>/kernels`` (read by :class:`_Locator`): ``<label>-<stamp>``, after its
+    compiled closures are given names of their own (:func:`_distinct_names`, which gives the stamp)."""
+    py_func.__knifeedge_cache__ = (str(cache_dir() / "kernels"), f"{label}-{_distinct_names(py_func)}")
 
 
 def compiled(py_func, label: str):

@@ -114,23 +114,23 @@ def _initial_step_closure(ERROR_ORDER: int):
     return njit(error_model="numpy")(initial_step)
 
 
-def _workspace_closure(N_EXT: int, DENSE_ROWS: int):
-    """``workspace(y0, q)``: the integrator's one array laid out as the parts read it (K, y, y_new, work,
-    scale, F, then q; the parts take their arrays at fixed offsets of one pointer, so the compiler can tell
-    them apart), y and q filled in; returns it and its views ``K, y, y_new, work, F``."""
+def _workspace_closure(rows: dict):
+    """``workspace(y0, q)``: the integrator's one array laid out as ``erk_arrays(...).rows`` says (the parts take
+    their arrays at fixed offsets of one pointer, so the compiler can tell them apart), y and q filled in; returns
+    it and its views ``K`` (the rows before ``y``), ``y, y_new, work, F``."""
+    Y, Y_NEW, WORK, F, Q = rows["y"], rows["y_new"], rows["work"], rows["F"], rows["q"]
 
     def workspace(y0, q):
         N = y0.size
-        ws = np.empty((N_EXT + 4 + DENSE_ROWS) * N + q.size)
-        o = N_EXT * N
-        qw = ws[o + (4 + DENSE_ROWS) * N:]
+        ws = np.empty(Q * N + q.size)
+        qw = ws[Q * N:]
         for i in range(q.size):
             qw[i] = q[i]
-        y = ws[o:o + N]
+        y = ws[Y * N:(Y + 1) * N]
         for i in range(N):
             y[i] = y0[i]
-        return (ws, ws[:o].reshape((N_EXT, N)), y, ws[o + N:o + 2 * N], ws[o + 2 * N:o + 3 * N],
-                ws[o + 4 * N:o + (4 + DENSE_ROWS) * N].reshape((DENSE_ROWS, N)))
+        return (ws, ws[:Y * N].reshape((Y, N)), y, ws[Y_NEW * N:(Y_NEW + 1) * N], ws[WORK * N:(WORK + 1) * N],
+                ws[F * N:Q * N].reshape((Q - F, N)))
 
     return njit(inline="always", error_model="numpy")(workspace)
 
@@ -142,7 +142,7 @@ def _driver_closure(tableau: str):
     DENSE_NFEV = N_EXT - N_STAGES - 1  # evaluations of the interpolant beyond the step's (DOP853: 3)
     values = njit(error_model="numpy")(_values_)
     function_ends, locate = _c.function_ends(values), _c.locator(values)
-    initial_step, workspace = _initial_step_closure(ERROR_ORDER), _workspace_closure(N_EXT, DENSE_ROWS)
+    initial_step, workspace = _initial_step_closure(ERROR_ORDER), _workspace_closure(tab.rows)
     ERROR_EXPONENT = -1.0 / (ERROR_ORDER + 1)
     EIGHTH = ERROR_ORDER == 7  # err ** (-1/8) as three square roots, cheaper than pow (DOP853)
 

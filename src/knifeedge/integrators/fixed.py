@@ -12,20 +12,18 @@ from numba import njit
 
 from . import common as _c
 from .cache import compiled, is_cached
-from .common import EVENTS_PER_STEP, NEAR
+from .common import _EPS, EVENTS_PER_STEP, NEAR
 from .methods import get
 
 MAX_STAGE_ITER = 100
-_EPS = 2.220446049250313e-16
 #: the interpolant of a step: cubic Hermite as a power series
 DENSE_ROWS = 3
 ALT = np.zeros(DENSE_ROWS, dtype=np.bool_)
 _OPTIONS = {"error_model": "numpy"}
 
 
-def _increments(method: str, N: int, rhs):
-    """``(rk4, explicit, gauss, solver_scale)``: the step functions of ``method`` on ``N`` states."""
-    m = get(method, "fixed")
+def _increments(m, N: int, rhs):
+    """``(rk4, explicit, gauss, solver_scale)``: the step functions of the method ``m`` on ``N`` states."""
     S, GA, GC, DENOMINATOR = m.stages, m.A.copy(), m.c.copy(), m.denominator
     GB = m.b * DENOMINATOR  # the increment is h / DENOMINATOR * sum_j GB[j] K_j
 
@@ -142,8 +140,7 @@ class FixedKernel:
 
             values = njit(**_OPTIONS)(values_)
             function_ends, locate = _c.function_ends(values), _c.locator(values)
-        py = _solve_closure(get(method, "fixed"), N, rhs, constants, _increments(method, N, rhs), bool(names),
-                            function_ends, locate)
+        py = _solve_closure(get(method, "fixed"), N, rhs, constants, bool(names), function_ends, locate)
         self.solve = compiled(py, f"fixed-{method}-{model_module.__name__.rsplit('.', 1)[-1]}-{rhs_name}")
 
     def is_compiled(self) -> bool:
@@ -176,9 +173,9 @@ def _begin_closure(N: int, S: int, rhs):
     return njit(inline="always", **_OPTIONS)(begin)
 
 
-def _solve_closure(m, N: int, rhs, constants, increments, HAS_FUN, function_ends, locate):
+def _solve_closure(m, N: int, rhs, constants, HAS_FUN, function_ends, locate):
     """The kernel as a Python closure over the method ``m``, the state size, the model's functions."""
-    rk4_increment, explicit_increment, gauss_increment, solver_scale = increments
+    rk4_increment, explicit_increment, gauss_increment, solver_scale = _increments(m, N, rhs)
     IMPLICIT, CLASSICAL_RK4, S, EXTRAP = m.implicit, m.is_classical_rk4, m.stages, m.extrapolation
     begin = _begin_closure(N, S, rhs)
     NO_EV = np.zeros(2, dtype=np.int64)  # the event functions are the model's own (the adaptive kernel's ``ev``)

@@ -216,9 +216,12 @@ def erk_arrays(name: str) -> SimpleNamespace:
     """The tables of the registered adaptive method ``name`` as the integrator and a model's parts read them.
 
     ``A``, ``C`` over all ``n_ext`` stages (the method's ``n_stages``, the weights as the stage at ``t + h``, then
-    DOP853's extra dense-output stages); ``E5`` the error estimator, ``E3`` DOP853's second one (else zeros);
-    ``DD`` DOP853's interpolant or ``P`` the others' power series (the unused one a 1 x 1 zero); ``dense_rows``
-    and ``alt``: the rows of the interpolant ``F`` and their Horner factors (:mod:`.common`).
+    DOP853's extra dense-output stages); ``E5`` the error estimator, ``E3`` DOP853's second one (else None);
+    ``DD`` DOP853's interpolant or ``P`` the others' power series (the other one None); ``dense_rows``
+    and ``alt``: the rows of the interpolant ``F`` and their Horner factors (:mod:`.common`); ``rows``: the
+    integrator's one array (the workspace, its one layout), where each of its arrays starts, in rows of ``n``
+    (the state's size): ``K`` (``n_ext`` rows) at 0, ``y``, ``y_new``, ``work``, ``scale`` (one row each),
+    ``F`` (``dense_rows``), then ``q``.
     """
     t = get(name, "erk")
     hairer = t.hairer is not None
@@ -229,22 +232,20 @@ def erk_arrays(name: str) -> SimpleNamespace:
     A[s, :s] = t.b
     C = np.ones(n_ext)
     C[:s] = t.c
-    E5 = t.e.copy()
+    E3 = DD = P = None
     if hairer:
         A[s + 1:] = t.hairer["A_ext"]
         C[s + 1:] = t.hairer["c_ext"]
-        E3 = t.hairer["e3"].copy()
-        DD = t.hairer["D"].copy()
-        P = np.zeros((1, 1))
+        E3, DD = t.hairer["e3"].copy(), t.hairer["D"].copy()
         dense_rows = 3 + DD.shape[0]
     else:
-        E3 = np.zeros(n_ext)
-        DD = np.zeros((1, 1))
         P = t.P.copy()
         dense_rows = P.shape[1]
     alt = np.array([hairer and r % 2 == 1 for r in range(dense_rows)])
-    return SimpleNamespace(name=name, A=A, C=C, E5=E5, E3=E3, DD=DD, P=P, hairer=hairer, n_stages=s, n_ext=n_ext,
-                           dense_rows=dense_rows, alt=alt, error_order=t.error_order)
+    rows = {"y": n_ext, "y_new": n_ext + 1, "work": n_ext + 2, "scale": n_ext + 3, "F": n_ext + 4,
+            "q": n_ext + 4 + dense_rows}
+    return SimpleNamespace(name=name, A=A, C=C, E5=t.e.copy(), E3=E3, DD=DD, P=P, hairer=hairer, n_stages=s,
+                           n_ext=n_ext, dense_rows=dense_rows, alt=alt, error_order=t.error_order, rows=rows)
 
 
 def erk_fingerprint(name: str) -> str:
