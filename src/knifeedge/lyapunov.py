@@ -78,6 +78,14 @@ def _shifted(out, x, c, dx):
 
 
 @njit(cache=True)
+def _running(hist, b, sums, t):
+    """Row ``b`` of the history: the running estimates ``sums / t`` (a loop: the array expression's assignment
+    compiles numba's formatting of its shape error, half the loop's compile time)."""
+    for j in range(sums.size):
+        hist[b, j] = sums[j] / t
+
+
+@njit(cache=True)
 def _rk4_update(x, h, d1, d2, d3, d4):
     """The classical Runge-Kutta step ``x += h/6 (d1 + 2 d2 + 2 d3 + d4)`` in place (vectors)."""
     for i in range(x.size):
@@ -129,7 +137,7 @@ def _benettin(jvp_into, gradients, y, Q, p, h, n_blocks, steps_per_block):
         _project_out(gradients(y, p), Q)
         _orthonormalize(Q, sums)
         hist_t[b] = (b + 1) * steps_per_block * h
-        hist[b] = sums / hist_t[b]
+        _running(hist, b, sums, hist_t[b])
     return y, Q, sums, hist_t, hist
 
 
@@ -289,7 +297,7 @@ def _benettin_adaptive(jvp_into, jvp1_into, gradients, y, Q, p, tau, n_blocks, r
                 _project_out(gradients(y_z, p), Q_z)
                 _orthonormalize(Q_z, sums)
                 hist_t[b] = t
-                hist[b] = sums / t
+                _running(hist, b, sums, t)
                 b += 1
                 t_qr = min(t_final, (math.floor(t / tau + 1e-9) + 1) * tau)
             _stage(jvp_into, jvp1_into, z, p, n, k, K[0], ds, dQ)  # the first stage of the next step
