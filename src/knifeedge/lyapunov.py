@@ -19,6 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit, types
 
+from .integrators.common import step_factor
 from .integrators.methods import DP54_A, DP54_B, DP54_E, DP54_P, erk_arrays
 from . import magnus
 from .magnus import GAUSS_NODES
@@ -398,8 +399,8 @@ def _drop_before(time, held_t, held_h, held_y, held_K, n_held):
 @njit(cache=True)
 def _controlled(h, step, err, exponent):
     """The next step after ``step`` (tried as ``h`` or clipped below it) with the scaled error ``err`` (``exponent``:
-    -1 / (1 + the order of the error estimate))."""
-    factor = 10.0 if err == 0.0 else min(10.0, max(0.2, 0.9 * err ** exponent))
+    -1 / (1 + the order of the error estimate); the factor: the integrators' controller, :func:`step_factor`)."""
+    factor = step_factor(err, exponent, False)
     return step * factor if (err > 1.0 or step == h) else max(h, step * factor)
 
 
