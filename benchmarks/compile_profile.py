@@ -12,7 +12,7 @@ Each repeat is a fresh process with empty caches (``NUMBA_CACHE_DIR``, ``KNIFEED
 * ``adaptive``: the largest exponent's DOP853 loop (``lyapunov._benettin_adaptive``) alone.
 
 Printed per repeat: the process's CPU for the imports, for numba's first compile in the process (a one-line
-function), for the target; then, from numba's events (``numba:compile``, ``numba:run_pass``,
+function), for the model's parts (``driver``), for the target; then, from numba's events (``numba:compile``, ``numba:run_pass``,
 ``numba:llvm_lock``), the CPU exclusive of nested compiles by pass, in LLVM, and by function.
 """
 from __future__ import annotations
@@ -77,10 +77,10 @@ def _child(target: str) -> dict:
     c_imports = cpu()
     numba.njit(lambda x: x + 1.0)(1.0)
     c_first = cpu()
-    profile = _profiler()
+    profile, c_parts = _profiler(), c_first
     if target == "driver":
         figures.warm_parts("single_mode", "reduced", True, "DOP853")
-        c_first = cpu()  # the model's parts are not the driver's
+        c_parts = cpu()  # the model's parts are not the driver's
         figures.warm("single_mode", "reduced", True, "DOP853")
     elif target == "benettin":
         importlib.import_module("knifeedge.lyapunov")._kernel()
@@ -91,7 +91,7 @@ def _child(target: str) -> dict:
         raise ValueError(f"`target` must be driver, benettin or adaptive, got {target!r}")
     top = lambda d, n: sorted(((round(v, 2), k) for k, v in d.items() if v >= 0.05), reverse=True)[:n]  # noqa: E731
     return {"imports": round(c_imports - c0, 2), "first_compile": round(c_first - c_imports, 2),
-            "target": round(cpu() - c_first, 2), "llvm": round(profile.llvm, 2), "passes": top(profile.passes, 6),
+            "parts": round(c_parts - c_first, 2), "target": round(cpu() - c_parts, 2), "llvm": round(profile.llvm, 2), "passes": top(profile.passes, 6),
             "functions": top(profile.functions, 14)}
 
 
