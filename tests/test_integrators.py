@@ -82,6 +82,24 @@ def test_adaptive_methods_take_scipys_steps(ours, theirs):
     np.testing.assert_allclose(a.y, b.y, rtol=1e-7, atol=1e-11)
 
 
+def test_the_one_step_size_controller_is_scipys():
+    """``common.step_factor`` (the driver's and the Lyapunov loops' controller) against SciPy's RungeKutta.step
+    (scipy.integrate._ivp.rk: safety 0.9, factors in [0.2, 10], ``min(MAX, ...)`` after an accepted step,
+    ``max(MIN, ...)`` after a rejected one), to the bit; DOP853's three square roots within an ulp of the power."""
+    from scipy.integrate._ivp import rk
+    from knifeedge.integrators.common import step_factor
+
+    for exponent in (-1 / 8, -1 / 5):
+        for err in np.geomspace(1e-12, 1e6, 61):
+            clipped = (min if err < 1.0 else max)(rk.MAX_FACTOR if err < 1.0 else rk.MIN_FACTOR,
+                                                  rk.SAFETY * err ** exponent)
+            assert step_factor(err, exponent, False) == clipped
+            np.testing.assert_allclose(step_factor(err, exponent, True), clipped if exponent == -1 / 8 else
+                                       step_factor(err, -1 / 8, False), rtol=4e-16)
+    assert step_factor(0.0, -0.2, False) == rk.MAX_FACTOR  # SciPy: a zero error takes the largest factor
+    assert step_factor(np.inf, -0.2, False) == step_factor(np.nan, -0.125, True) == rk.MIN_FACTOR
+
+
 def test_single_mode_reversal_located_as_scipy_and_an_implicit_method():
     """The reversal of Fig. 'numerical' at t = 106.361: dense output + root finding agrees with
     SciPy's event location (same steps) to 1e-10 and with LSODA (different method) to 1e-7."""

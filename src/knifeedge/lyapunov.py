@@ -19,6 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit, types
 
+from .integrators.common import step_factor
 from .integrators.methods import DP54_A, DP54_B, DP54_E, DP54_P, erk_arrays
 from . import magnus
 from .magnus import GAUSS_NODES
@@ -78,6 +79,14 @@ def _shifted(out, x, c, dx):
 
 
 @njit(cache=True)
+def _running(hist, b, sums, t):
+    """Row ``b`` of the history: the running estimates ``sums / t`` (a loop: the array expression's assignment
+    compiles numba's formatting of its shape error, half the loop's compile time)."""
+    for j in range(sums.size):
+        hist[b, j] = sums[j] / t
+
+
+@njit(cache=True)
 def _rk4_update(x, h, d1, d2, d3, d4):
     """The classical Runge-Kutta step ``x += h/6 (d1 + 2 d2 + 2 d3 + d4)`` in place (vectors)."""
     for i in range(x.size):
@@ -129,7 +138,7 @@ def _benettin(jvp_into, gradients, y, Q, p, h, n_blocks, steps_per_block):
         _project_out(gradients(y, p), Q)
         _orthonormalize(Q, sums)
         hist_t[b] = (b + 1) * steps_per_block * h
-        hist[b] = sums / hist_t[b]
+        _running(hist, b, sums, hist_t[b])
     return y, Q, sums, hist_t, hist
 
 
@@ -289,7 +298,7 @@ def _benettin_adaptive(jvp_into, jvp1_into, gradients, y, Q, p, tau, n_blocks, r
                 _project_out(gradients(y_z, p), Q_z)
                 _orthonormalize(Q_z, sums)
                 hist_t[b] = t
-                hist[b] = sums / t
+                _running(hist, b, sums, t)
                 b += 1
                 t_qr = min(t_final, (math.floor(t / tau + 1e-9) + 1) * tau)
             _stage(jvp_into, jvp1_into, z, p, n, k, K[0], ds, dQ)  # the first stage of the next step
@@ -390,8 +399,8 @@ def _drop_before(time, held_t, held_h, held_y, held_K, n_held):
 @njit(cache=True)
 def _controlled(h, step, err, exponent):
     """The next step after ``step`` (tried as ``h`` or clipped below it) with the scaled error ``err`` (``exponent``:
-    -1 / (1 + the order of the error estimate))."""
-    factor = 10.0 if err == 0.0 else min(10.0, max(0.2, 0.9 * err ** exponent))
+    -1 / (1 + the order of the error estimate); the factor: the integrators' controller, :func:`step_factor`)."""
+    factor = step_factor(err, exponent, False)
     return step * factor if (err > 1.0 or step == h) else max(h, step * factor)
 
 

@@ -31,6 +31,22 @@ EVENTS_PER_STEP = SAMPLES + 2
 NEAR = 0.5
 #: Illinois iterations (it stops at the resolution of x, a few ulps, long before)
 MAX_ITER = 200
+#: the step-size controller's safety factor and the bounds of its factor (SciPy's)
+SAFETY, MIN_FACTOR, MAX_FACTOR = 0.9, 0.2, 10.0
+
+
+@njit(cache=True, error_model="numpy")
+def step_factor(err, exponent, eighth):
+    """The step-size controller, every adaptive loop's: the factor of the next step after a step with the scaled
+    error ``err``, ``SAFETY err**exponent`` (``exponent`` = -1 / (1 + the order of the error estimate); ``eighth``:
+    ``err**(-1/8)`` as three square roots, cheaper than pow) within [``MIN_FACTOR``, ``MAX_FACTOR``];
+    ``MAX_FACTOR`` at a zero error, ``MIN_FACTOR`` at one that is not finite."""
+    if err == 0.0:
+        return MAX_FACTOR
+    if not np.isfinite(err):
+        return MIN_FACTOR
+    power = 1.0 / np.sqrt(np.sqrt(np.sqrt(err))) if eighth else err ** exponent
+    return min(MAX_FACTOR, max(MIN_FACTOR, SAFETY * power))
 
 
 @njit(cache=True, error_model="numpy")

@@ -17,12 +17,9 @@ from . import fnptr as _fnptr
 from . import irparts as _irparts
 from .methods import erk_arrays
 from .cache import cache_dir, compiled, compiled_cfunc, digest, is_cached
-from .common import EVENTS_PER_STEP, NEAR
+from .common import EVENTS_PER_STEP, NEAR, step_factor
 from .fnptr import call_f8, call_void
 
-SAFETY = 0.9
-MIN_FACTOR = 0.2
-MAX_FACTOR = 10.0
 _EPS = np.finfo(np.float64).eps
 _DRIVERS: dict = {}
 
@@ -191,21 +188,11 @@ def _driver_closure(tableau: str):
                 # the stages, y_new, K[N_STAGES] and the scaled error norm: the model's part
                 err = call_f8(attempt, (t, h, t_new, rtol, ms, ws, n, nq, atol, pair))
                 nfev += N_STAGES
+                factor = step_factor(err, ERROR_EXPONENT, EIGHTH)
                 if err < 1.0:
-                    if err == 0.0:
-                        factor = MAX_FACTOR
-                    elif EIGHTH:
-                        factor = min(MAX_FACTOR, SAFETY * (1.0 / np.sqrt(np.sqrt(np.sqrt(err)))))
-                    else:
-                        factor = min(MAX_FACTOR, SAFETY * err ** ERROR_EXPONENT)
                     h_abs *= min(1.0, factor) if rejected else factor
                     break
-                if not np.isfinite(err):
-                    h_abs *= MIN_FACTOR
-                elif EIGHTH:
-                    h_abs *= max(MIN_FACTOR, SAFETY * (1.0 / np.sqrt(np.sqrt(np.sqrt(err)))))
-                else:
-                    h_abs *= max(MIN_FACTOR, SAFETY * err ** ERROR_EXPONENT)
+                h_abs *= factor
                 rejected = True
                 n_rej += 1
             if status != 0:
