@@ -135,7 +135,7 @@ def _workspace_closure(rows: dict):
 def _driver_closure(tableau: str):
     """The integrator of ``tableau`` as a Python closure over its sizes and helpers."""
     tab = erk_arrays(tableau)
-    N_STAGES, N_EXT, DENSE_ROWS, ALT, ERROR_ORDER = tab.n_stages, tab.n_ext, tab.dense_rows, tab.alt, tab.error_order
+    N_STAGES, N_EXT, ALT, ERROR_ORDER = tab.n_stages, tab.n_ext, tab.alt, tab.error_order
     DENSE_NFEV = N_EXT - N_STAGES - 1  # evaluations of the interpolant beyond the step's (DOP853: 3)
     values = njit(error_model="numpy")(_values_)
     function_ends, locate = _c.function_ends(values), _c.locator(values)
@@ -219,7 +219,7 @@ def _driver_closure(tableau: str):
                 if suspect:
                     any_flag = _c.screen(ga, gb, sa, sb, crit, n_crit, flag)
             if any_flag or (ie < t_eval.size and t_eval[ie] < t_new):
-                call_void(dense, (t, h, ws, n, nq))  # the interpolant of the step: F (DENSE_ROWS x N)
+                call_void(dense, (t, h, ws, n, nq))  # the interpolant of the step: F (tab.dense_rows x N)
                 nfev += DENSE_NFEV
             if any_flag:
                 marks = (ga, gb, crit, n_crit, flag, xs, gs)
