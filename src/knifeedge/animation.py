@@ -596,7 +596,7 @@ class FrameRenderer:
             + [a for a, b in zip(self.body, below) if not b] + self.overlay
         for a in order:
             a.axes.draw_artist(a) if a.axes is not None else self.fig.draw_artist(a)
-        return self._write_labels(np.asarray(self.canvas.buffer_rgba())[:, :, :3].copy())
+        return self._with_labels()
 
     def _pil_font(self, text):
         from matplotlib import font_manager
@@ -605,14 +605,16 @@ class FrameRenderer:
         path = font_manager.findfont(text.get_fontproperties())
         return ImageFont.truetype(path, size=max(1, round(text.get_fontsize() * self.fig.dpi / 72.0)))
 
-    def _write_labels(self, rgb: np.ndarray) -> np.ndarray:
-        """Write the per-frame texts (:attr:`labels`) into the frame's pixels, where matplotlib would put them."""
+    def _with_labels(self) -> np.ndarray:
+        """The canvas's pixels with the per-frame texts (:attr:`labels`) written where matplotlib would put them."""
         from matplotlib.colors import to_rgb
         from PIL import Image, ImageDraw
 
-        img = Image.fromarray(rgb)
+        rgba = self.canvas.buffer_rgba()
+        height, width = rgba.shape[:2]
+        # pillow drops the alpha channel (5x faster than numpy's strided copy: 5 ms of a ~20 ms frame)
+        img = Image.frombuffer("RGBA", (width, height), rgba, "raw", "RGBA", 0, 1).convert("RGB")
         draw = ImageDraw.Draw(img)
-        height = rgb.shape[0]
         for text, font in zip(self.labels, self._label_fonts):
             x, y = text.get_transform().transform(text.get_position())
             anchor = {"left": "l", "center": "m", "right": "r"}[text.get_ha()] + \

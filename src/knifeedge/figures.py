@@ -16,6 +16,7 @@ import sys
 import time
 from pathlib import Path
 
+from ._process import heap_frozen
 from .scenes import SCENE_NAMES, get_scene
 from .scenes.base import format_number
 
@@ -287,7 +288,8 @@ def make_figures(out: str | Path, names=None, max_workers: int | None = None, pr
                 report("animation", render_animation(n, str(out)))
     else:
         _preload()
-        with cf.ProcessPoolExecutor(max_workers=workers) as pool:
+        # the forked workers' collector passes leave out what they inherit (numba, SciPy, matplotlib: ~10^5 objects)
+        with heap_frozen(), cf.ProcessPoolExecutor(max_workers=workers) as pool:
             _schedule(pool, workers, order, out, report, progress, t0)
     recs = [records[n] for n in names]
     for rec in recs:

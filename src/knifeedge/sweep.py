@@ -21,7 +21,6 @@ from __future__ import annotations
 
 import concurrent.futures as cf
 import contextlib
-import gc
 import hashlib
 import itertools
 import json
@@ -42,6 +41,7 @@ from typing import Any
 import numpy as np
 
 from . import _validate
+from ._process import heap_frozen
 from .runspec import RUN_SETTINGS, RunSpec
 from .simulate import METHODS, check_inputs
 from .store import (INPUT_COLUMNS, INT_COLUMNS, RESULT_COLUMNS, STATUSES, STORE_SUFFIXES, TEXT_COLUMNS, TEXT_SUFFIXES,
@@ -679,7 +679,7 @@ def sweep(
         raise TypeError("`progress` must be True, False or a callable(done, total, row)")
     if not isinstance(resume, bool):
         raise TypeError(f"`resume` must be True or False, got {resume!r}")
-    with _heap_frozen() as freeze:
+    with heap_frozen() as freeze:
         run = _base_run(scene_or_model, params, y0, t_span, method, rtol, atol)
         runs = _expand(run, _grid_points(grid))
         freeze()  # the grid's runs too: they live as long as the sweep
@@ -690,25 +690,6 @@ def sweep(
         finally:
             if store is not None:
                 store.close()
-
-
-@contextlib.contextmanager
-def _heap_frozen():
-    """The objects alive at the start of a sweep (the modules, the kernels) left out of the cyclic garbage
-    collector's passes until it ends (:func:`gc.freeze`); the context's value freezes those alive when called.
-
-    A full pass over them cost the sweep's process 0.1 s of CPU each (numba and SciPy hold some 10^5 objects),
-    once per few thousand rows; and local workers, forked from this process, would walk them too, copying the
-    pages they share with it.  Nothing is done if the collector is off or something else froze objects already.
-    """
-    if not gc.isenabled() or gc.get_freeze_count():
-        yield lambda: None
-        return
-    gc.freeze()
-    try:
-        yield gc.freeze
-    finally:
-        gc.unfreeze()
 
 
 @dataclass

@@ -5,7 +5,7 @@ import numpy as np
 
 from . import amplitude_theory as th
 from .base import Scene, SceneResult
-from .common import RATE_LABEL, T_LABEL, envelope, first_reversal, omega, require_success
+from .common import RATE_LABEL, T_LABEL, envelope, first_reversal, layout, omega, require_success
 from .numerical import RUN
 
 
@@ -58,7 +58,7 @@ def draw(res: SceneResult, fig) -> None:
     ax.set_ylabel(r"$\theta,\ A_\theta$ [rad];  " + RATE_LABEL)
     ax.set_title(r"amplitude equations vs simulation: $A_0=0.1\sqrt{g/\ell}$, $\ell/L=1$, $D/\ell=1$", fontsize=10)
     ax.legend(fontsize=8, loc="lower left")
-    fig.tight_layout()
+    layout(fig, res.scene is SCENE, dict(left=0.1373, right=0.9800, bottom=0.1167, top=0.9278))
 
 
 SCENE = Scene(

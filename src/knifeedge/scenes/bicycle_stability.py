@@ -22,6 +22,7 @@ import numpy as np
 from ..modulecheck import sealed_ok
 from ..stability import MARGINAL, growth_boundaries
 from .base import Scene, SceneResult
+from .common import layout
 
 #: Meijaard et al. 2007, section 4: the weave and capsize speeds of the benchmark bicycle [m/s]
 BENCHMARK_SPEEDS = {"weave": 4.29238253634111, "capsize": 6.02426201538837}
@@ -97,7 +98,7 @@ def draw(res: SceneResult, fig) -> None:
     ax.set_ylabel(r"eigenvalues $\lambda$ [1/s]")
     ax.set_title("Whipple bicycle (Meijaard et al. 2007), upright straight running", fontsize=10)
     ax.legend(fontsize=8, loc="lower left")
-    fig.tight_layout()
+    layout(fig, res.scene is SCENE, dict(left=0.1179, right=0.9800, bottom=0.1161, top=0.9322))
 
 
 SCENE = Scene(

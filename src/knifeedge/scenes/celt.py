@@ -14,7 +14,7 @@ import math
 import numpy as np
 
 from .base import RunSpec, Scene, SceneResult
-from .common import claim_energy_conserved, require_success
+from .common import claim_energy_conserved, layout, require_success
 
 #: Kane & Levinson's initial tilts (about the body x and y axes)
 TILT = math.radians(0.5)
@@ -125,7 +125,7 @@ def draw(res: SceneResult, fig) -> None:
         ax.legend(loc="upper right", fontsize=8)
     axes[-1].set_xlabel("t [s]")
     fig.suptitle("Kane & Levinson (1982) rattleback: vertical spin; ticks at the zero crossings", fontsize=10)
-    fig.tight_layout()
+    layout(fig, res.scene is SCENE, dict(left=0.0872, right=0.9800, bottom=0.0968, top=0.8963, hspace=0.1730))
 
 
 SCENE = Scene(

@@ -27,6 +27,7 @@ import numpy as np
 from ..lyapunov import lyapunov
 from ..sections import poincare
 from .base import RunSpec, Scene, SceneResult
+from .common import layout
 
 #: Schoemer's set (the ``schoemer`` preset of the celt), undamped
 PARAMS = {"a": 1.618033988749895, "b": 1.0, "c": 1.0, "h": 0.1875, "m": 0.2, "g": 9.81, "I_xx": 0.05796875,
@@ -124,7 +125,7 @@ def draw(res: SceneResult, fig) -> None:
     a2.set_xlabel("$n_y$")
     a2.set_ylabel(r"$\omega_z$ [rad/s]")
     a2.set_title(f"section $n_x$ = 0 (upward), {n['crossings']} crossings", fontsize=9)
-    fig.tight_layout()
+    layout(fig, res.scene is SCENE, dict(left=0.0651, right=0.9850, bottom=0.1359, top=0.9259, wspace=0.1763))
 
 
 SCENE = Scene(

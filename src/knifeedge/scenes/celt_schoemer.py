@@ -10,7 +10,7 @@ import numpy as np
 
 from .base import RunSpec, Scene, SceneResult
 from .celt import energy_balance, episodes, initial_state, max_tilt_deg, preset
-from .common import claim_energy_conserved, require_success
+from .common import claim_energy_conserved, layout, require_success
 
 RUN = RunSpec(
     model="celt", fidelity="full",
@@ -56,7 +56,7 @@ def draw(res: SceneResult, fig) -> None:
     a2.set_ylabel(r"$\omega\cdot n$ [rad/s]")
     a2.set_xlabel("t [s]")
     a1.set_title("Schoemer's rattleback, upright start, $\\omega_0 = (0.01, -0.02, -2)$ rad/s", fontsize=10)
-    fig.tight_layout()
+    layout(fig, res.scene is SCENE, dict(left=0.0872, right=0.9800, bottom=0.1056, top=0.9377, hspace=0.0907))
 
 
 SCENE = Scene(

@@ -16,6 +16,7 @@ import numpy as np
 from ..models import load
 from ..stability import stability, stability_boundaries
 from .base import RunSpec, Scene, SceneResult
+from .common import layout
 
 
 def _preset(name: str) -> dict:
@@ -117,7 +118,7 @@ def draw(res: SceneResult, fig) -> None:
         ax.set_title(f"{name} celt, upright steady spin", fontsize=10)
         ax.legend(fontsize=7, loc="best")
     axes[-1].set_xlabel(r"spin $\Omega$ [rad/s]")
-    fig.tight_layout()
+    layout(fig, res.scene is SCENE, dict(left=0.1049, right=0.9800, bottom=0.0839, top=0.9516, hspace=0.1363))
 
 
 SCENE = Scene(

@@ -78,3 +78,15 @@ def label_log_ticks(ax, x) -> None:
 
     ax.xaxis.set_minor_formatter(NullFormatter())
     ax.set_xticks(list(x), [f"{v:g}" for v in x], fontsize=8)
+
+
+def layout(fig, registered: bool, margins: dict, **tight) -> None:
+    """Lay out ``fig``: at the scene's registered settings (``registered``: ``result.scene is SCENE``) by
+    ``fig.subplots_adjust(**margins)``, the margins ``fig.tight_layout(**tight)`` gives it there (to 1e-4 of the
+    figure; tests/test_figures_layout.py checks them), at other settings (other texts and tick labels) by
+    ``fig.tight_layout(**tight)``.  The tight layout lays out every text once more before the drawing does:
+    0.05-0.5 s of CPU a figure, 40 % of drawing it."""
+    if registered:
+        fig.subplots_adjust(**margins)
+    else:
+        fig.tight_layout(**tight)

@@ -15,7 +15,7 @@ import numpy as np
 
 from . import amplitude_theory as th
 from .base import RunSpec, Scene, SceneResult
-from .common import envelope, omega, require_success
+from .common import envelope, layout, omega, require_success
 
 RUN = RunSpec(
     model="single_mode", fidelity="amplitude",
@@ -126,7 +126,7 @@ def draw(res: SceneResult, fig) -> None:
     ax.set_title(r"phase portrait of the amplitude equations, $\ell/L=2$, $D/\ell=1$", fontsize=10)
     ax.set_aspect("equal")
     fig.legend(fontsize=8, loc="lower center", ncol=2)
-    fig.tight_layout(rect=(0, 0.12, 1, 1))
+    layout(fig, res.scene is SCENE, dict(left=0.0214, right=0.9786, bottom=0.1979, top=0.9543), rect=(0, 0.12, 1, 1))
 
 
 SCENE = Scene(

@@ -28,7 +28,7 @@ import math
 import numpy as np
 
 from .base import RunSpec, Scene, SceneResult
-from .common import first_reversal, require_success
+from .common import first_reversal, layout, require_success
 
 PARAMS = {"g": 1.0, "ell": 1.0, "L": 2.0, "D": 0.5, "alpha": math.pi / 4}
 
@@ -226,7 +226,7 @@ def draw(res: SceneResult, fig) -> None:
     a2.set_ylabel("period of theta1: paper / rigid - 1 [%]")
     a2.legend(fontsize=7)
     fig.suptitle("two-mode knife edge: the paper's model against the rigid body of section III", fontsize=10)
-    fig.tight_layout()
+    layout(fig, res.scene is SCENE, dict(left=0.0998, right=0.9566, bottom=0.1117, top=0.9202, wspace=0.2839))
 
 
 SCENE = Scene(

@@ -26,7 +26,7 @@ import numpy as np
 
 from .base import RunSpec, Scene, SceneResult
 from .celt import initial_state, preset
-from .common import first_reversal, fit_power_law, label_log_ticks, require_success
+from .common import first_reversal, fit_power_law, label_log_ticks, layout, require_success
 
 KNIFE = RunSpec(
     model="two_mode", fidelity="full",
@@ -94,7 +94,7 @@ def draw(res: SceneResult, fig) -> None:
     label_log_ticks(ax, [1, 2, 4])
     ax.legend(fontsize=8)
     ax.set_title("reversal time against the initial spin: knife edge (paper) and classical celt", fontsize=10)
-    fig.tight_layout()
+    layout(fig, res.scene is SCENE, dict(left=0.1347, right=0.9800, bottom=0.1005, top=0.9384))
 
 
 SCENE = Scene(

@@ -23,7 +23,7 @@ import numpy as np
 
 from ..models import ValidityWarning
 from .base import RunSpec, Scene, SceneResult
-from .common import first_reversal, label_log_ticks, require_success
+from .common import first_reversal, label_log_ticks, layout, require_success
 from .numerical import RUN as SINGLE_RUN
 from .numerical2 import RUN as TWO_RUN
 
@@ -164,7 +164,7 @@ def draw(res: SceneResult, fig) -> None:
     a2.set_ylim(top=max(nfev for *_, nfev in two) * 30)
     a2.set_title("(b) two mode (Fig. Numerical2): cost;\nfirst reversal $t_1$ (well conditioned),\nsecond $t_2$ (ill-conditioned except amplitude)", fontsize=9)
     fig.suptitle("model fidelity: which model each scene may use", fontsize=10)
-    fig.tight_layout()
+    layout(fig, res.scene is SCENE, dict(left=0.0790, right=0.9885, bottom=0.1315, top=0.7946, wspace=0.1973))
 
 
 SCENE = Scene(

@@ -4,7 +4,7 @@ from __future__ import annotations
 import numpy as np
 
 from .base import RunSpec, Scene, SceneResult
-from .common import RATE_LABEL, T_LABEL, envelope, mark_reversals, omega, relative_energy_drift, require_success
+from .common import RATE_LABEL, T_LABEL, envelope, layout, mark_reversals, omega, relative_energy_drift, require_success
 
 RUN = RunSpec(
     model="single_mode", fidelity="reduced",
@@ -70,7 +70,7 @@ def draw(res: SceneResult, fig) -> None:
     a2.legend(loc="upper right", fontsize=8)
     a1.set_title("single mode: spin inversion (Eqs. FINAL3), " + r"$\ell/L=1,\ D/\ell=1,\ \dot\phi_0=0.1\sqrt{g/\ell}$",
                  fontsize=10)
-    fig.tight_layout()
+    layout(fig, res.scene is SCENE, dict(left=0.1252, right=0.9800, bottom=0.1167, top=0.9278, hspace=0.0932))
 
 
 SCENE = Scene(

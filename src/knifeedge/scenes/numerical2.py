@@ -18,7 +18,7 @@ import math
 import numpy as np
 
 from .base import RunSpec, Scene, SceneResult
-from .common import RATE_LABEL, T_LABEL, mark_reversals, require_success
+from .common import RATE_LABEL, T_LABEL, layout, mark_reversals, require_success
 
 RUN = RunSpec(
     model="two_mode", fidelity="reduced",
@@ -114,7 +114,7 @@ def draw(res: SceneResult, fig) -> None:
     a2.legend(loc="lower right", fontsize=8)
     a1.set_title(r"two modes (Eqs. eqs_2modes): $\ell/L=1/2$, $D/\ell=1/2$, $\alpha=\pi/4$, $\dot\phi_0=0.1\sqrt{g/\ell}$",
                  fontsize=10)
-    fig.tight_layout()
+    layout(fig, res.scene is SCENE, dict(left=0.1174, right=0.98125, bottom=0.1167, top=0.9278, hspace=0.0932))
 
 
 SCENE = Scene(

@@ -16,7 +16,7 @@ import numpy as np
 
 from ..lyapunov import lyapunov
 from .base import Scene, SceneResult
-from .common import T_LABEL, mark_reversals, require_success
+from .common import T_LABEL, layout, mark_reversals, require_success
 from .numerical2 import RUN as NUMERICAL2_RUN
 
 RUN = NUMERICAL2_RUN.with_(n_eval=None)
@@ -146,7 +146,7 @@ def draw(res: SceneResult, fig) -> None:
     a2.set_ylabel("amplification of one ulp")
     a2.set_xlabel(T_LABEL)
     a2.legend(fontsize=8, loc="center right")
-    fig.tight_layout()
+    layout(fig, res.scene is SCENE, dict(left=0.1418, right=0.9800, bottom=0.1069, top=0.9429, hspace=0.2776))
 
 
 SCENE = Scene(

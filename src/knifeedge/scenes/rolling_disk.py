@@ -17,7 +17,7 @@ import math
 import numpy as np
 
 from .base import RunSpec, Scene, SceneResult
-from .common import relative_energy_drift, require_success
+from .common import layout, relative_energy_drift, require_success
 
 RUN = RunSpec(
     model="rolling_disk", fidelity="full", pose=True,
@@ -122,7 +122,7 @@ def draw(res: SceneResult, fig) -> None:
     a2.set_ylabel("y [m]")
     a2.set_title("contact point on the table", fontsize=9)
     fig.suptitle(r"rolling disk: upright rolling is stable for $\dot q_3^2 > \Omega_c^2 = g/(3r)$", fontsize=10)
-    fig.tight_layout()
+    layout(fig, res.scene is SCENE, dict(left=0.0751, right=0.9833, bottom=0.1290, top=0.8461, wspace=0.2131))
 
 
 SCENE = Scene(

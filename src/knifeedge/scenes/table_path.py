@@ -12,7 +12,7 @@ import math
 import numpy as np
 
 from .base import Scene, SceneResult
-from .common import T_LABEL, mark_reversals, require_success
+from .common import T_LABEL, layout, mark_reversals, require_success
 from .numerical2 import RUN as TWO_MODE_RUN
 
 RUN = TWO_MODE_RUN.with_(pose=True, rtol=1e-12, t_end=5600.0, n_eval=56001)
@@ -68,7 +68,8 @@ def draw(res: SceneResult, fig) -> None:
     a2.legend(fontsize=8)
     fig.suptitle(r"two-mode knife edge on the table: $\ell/L=1/2$, $D/\ell=1/2$, $\alpha=\pi/4$, "
                  r"$\dot\phi_0=0.1\sqrt{g/\ell}$", fontsize=10)
-    fig.tight_layout(rect=(0, 0, 1, 0.92))
+    layout(fig, res.scene is SCENE, dict(left=0.0495, right=0.9875, bottom=0.1395, top=0.7515, wspace=0.3625),
+           rect=(0, 0, 1, 0.92))
 
 
 SCENE = Scene(

@@ -26,7 +26,7 @@ import numpy as np
 
 from ..models import ValidityWarning
 from .base import Scene, SceneResult
-from .common import fit_power_law, label_log_ticks
+from .common import fit_power_law, label_log_ticks, layout
 from .numerical2 import RUN as TWO_MODE_RUN
 
 RUN = TWO_MODE_RUN.with_(rtol=1e-10, atol=1e-14, n_eval=None, t_end=3600.0)
@@ -143,7 +143,7 @@ def draw(res: SceneResult, fig) -> None:
         ax.legend(fontsize=7)
     axes[0].set_ylabel(r"$t_R\ [\sqrt{\ell/g}]$")
     fig.suptitle(r"reversal time vs $\dot\phi_0$ and $D/\ell$; $\ell/L=1/2$, $\alpha=\pi/4$, tilts $10^{-3}$", fontsize=10)
-    fig.tight_layout()
+    layout(fig, res.scene is SCENE, dict(left=0.0990, right=0.9850, bottom=0.1364, top=0.8360, wspace=0.1807))
 
 
 def _shade_outside(ax, x, outside, bound: float) -> None:
