@@ -36,6 +36,19 @@ def test_layout_uses_the_margins_at_the_registered_settings_and_tight_layout_els
         assert same == registered, got
 
 
+def test_a_users_style_gets_the_tight_layout_not_the_fixed_margins():
+    """A matplotlibrc or style with other font sizes moves the texts: the fixed margins would cut them."""
+    margins = dict(left=0.3, right=0.9, bottom=0.2, top=0.8, wspace=0.5)
+    with matplotlib.rc_context({"font.size": 16}):
+        fig = plt.figure(figsize=(4, 3))
+        ax1, ax2 = fig.subplots(1, 2)
+        ax1.set_ylabel("a label")
+        layout(fig, True, margins)
+        got = _margins(fig)
+        plt.close(fig)
+    assert got["left"] != pytest.approx(margins["left"]), got
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize("name", FIXED)
 def test_fixed_margins_are_what_tight_layout_gives_the_registered_figure(name):

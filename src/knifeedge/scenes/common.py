@@ -80,13 +80,24 @@ def label_log_ticks(ax, x) -> None:
     ax.set_xticks(list(x), [f"{v:g}" for v in x], fontsize=8)
 
 
+#: the groups of matplotlib's settings that move texts and axes: fixed margins hold only at their defaults
+_LAYOUT_RC = ("font.", "axes.", "xtick.", "ytick.", "figure.", "text.", "mathtext.", "legend.")
+
+
+def _default_style() -> bool:
+    """Whether every setting of :data:`_LAYOUT_RC` is matplotlib's default (no style or matplotlibrc changes it)."""
+    from matplotlib import rcParams, rcParamsDefault
+
+    return all(rcParams[k] == rcParamsDefault[k] for k in rcParams if k.startswith(_LAYOUT_RC))
+
+
 def layout(fig, registered: bool, margins: dict, **tight) -> None:
-    """Lay out ``fig``: at the scene's registered settings (``registered``: ``result.scene is SCENE``) by
-    ``fig.subplots_adjust(**margins)``, the margins ``fig.tight_layout(**tight)`` gives it there (to 1e-4 of the
-    figure; tests/test_figures_layout.py checks them), at other settings (other texts and tick labels) by
-    ``fig.tight_layout(**tight)``.  The tight layout lays out every text once more before the drawing does:
-    0.05-0.5 s of CPU a figure, 40 % of drawing it."""
-    if registered:
+    """Lay out ``fig``: at the scene's registered settings (``registered``: ``result.scene is SCENE``) and
+    matplotlib's default style by ``fig.subplots_adjust(**margins)``, the margins ``fig.tight_layout(**tight)``
+    gives it there (to 1e-4 of the figure; tests/test_figures_layout.py checks them); otherwise (other texts and
+    tick labels, or a user's style with other fonts or sizes) by ``fig.tight_layout(**tight)``.  The tight layout
+    lays out every text once more before the drawing does: 0.05-0.5 s of CPU a figure, 40 % of drawing it."""
+    if registered and _default_style():
         fig.subplots_adjust(**margins)
     else:
         fig.tight_layout(**tight)
