@@ -23,30 +23,33 @@ def _margins(fig) -> dict:
     return {k: getattr(fig.subplotpars, k) for k in KEYS}
 
 
+#: margins no tight layout gives the small figure of :func:`_laid_out`
+MARGINS = dict(left=0.3, right=0.9, bottom=0.2, top=0.8, wspace=0.5)
+
+
+def _laid_out(registered: bool) -> dict:
+    """The margins :func:`layout` gives a small two-axes figure with a label, asked for :data:`MARGINS`."""
+    fig = plt.figure(figsize=(4, 3))
+    ax1, ax2 = fig.subplots(1, 2)
+    ax1.set_ylabel("a label")
+    layout(fig, registered, MARGINS)
+    got = _margins(fig)
+    plt.close(fig)
+    return got
+
+
 def test_layout_uses_the_margins_at_the_registered_settings_and_tight_layout_elsewhere():
-    margins = dict(left=0.3, right=0.9, bottom=0.2, top=0.8, wspace=0.5)
     for registered in (True, False):
-        fig = plt.figure(figsize=(4, 3))
-        ax1, ax2 = fig.subplots(1, 2)
-        ax1.set_ylabel("a label")
-        layout(fig, registered, margins)
-        got = _margins(fig)
-        plt.close(fig)
-        same = all(got[k] == pytest.approx(v) for k, v in margins.items())
+        got = _laid_out(registered)
+        same = all(got[k] == pytest.approx(v) for k, v in MARGINS.items())
         assert same == registered, got
 
 
 def test_a_users_style_gets_the_tight_layout_not_the_fixed_margins():
     """A matplotlibrc or style with other font sizes moves the texts: the fixed margins would cut them."""
-    margins = dict(left=0.3, right=0.9, bottom=0.2, top=0.8, wspace=0.5)
     with matplotlib.rc_context({"font.size": 16}):
-        fig = plt.figure(figsize=(4, 3))
-        ax1, ax2 = fig.subplots(1, 2)
-        ax1.set_ylabel("a label")
-        layout(fig, True, margins)
-        got = _margins(fig)
-        plt.close(fig)
-    assert got["left"] != pytest.approx(margins["left"]), got
+        got = _laid_out(True)
+    assert got["left"] != pytest.approx(MARGINS["left"]), got
 
 
 @pytest.mark.slow
