@@ -96,7 +96,12 @@ def _family_index(m: Model, family: str) -> int:
 def steady_state(m: Model, p, family: str, value: float) -> np.ndarray:
     """The closed state of the steady motion ``family`` at the parameter ``value``."""
     k = _family_index(m, family)
-    return m.module.steady_state(k, float(value), m.check_params(p))[0].copy()
+    return _steady(m, m.check_params(p), k, value)
+
+
+def _steady(m: Model, p: np.ndarray, k: int, value: float) -> np.ndarray:
+    """:func:`steady_state` of the family of index ``k`` with ``p`` validated."""
+    return m.module.steady_state(k, float(value), p)[0].copy()
 
 
 def _through(m: Model, y: np.ndarray, p: np.ndarray):
@@ -242,7 +247,7 @@ def stability(m: Model, p, family: str, values) -> StabilityTable:
     rows, names = [], []
     k = _family_index(m, family)
     for v in values:
-        y = m.module.steady_state(k, float(v), p)[0].copy()
+        y = _steady(m, p, k, v)
         lin = _linearize(m, y, p, family, _family_value(m, y, family))
         rows.append(lin.physical_eigenvalues)
         names.append(tuple(md.name for md in lin.modes))
@@ -252,7 +257,7 @@ def stability(m: Model, p, family: str, values) -> StabilityTable:
 def _growth(m: Model, p: np.ndarray, family: str, v: float) -> tuple:
     """Largest physical real part at ``v`` and the threshold below which it counts as zero (``p`` validated: the
     eigenvalues of the physical block alone, as :func:`linearize` computes them, without naming the modes)."""
-    y = m.module.steady_state(_family_index(m, family), float(v), p)[0].copy()
+    y = _steady(m, p, _family_index(m, family), v)
     B = _frame(m, y, p, family, _family_value(m, y, family))[-1]
     return float(np.linalg.eig(B)[0].real.max()), MARGINAL * max(float(np.linalg.norm(B)), 1e-300)
 
