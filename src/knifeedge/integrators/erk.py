@@ -17,10 +17,9 @@ from . import fnptr as _fnptr
 from . import irparts as _irparts
 from .methods import erk_arrays
 from .cache import cache_dir, compiled, compiled_cfunc, digest, is_cached
-from .common import EVENTS_PER_STEP, NEAR, step_factor
+from .common import _EPS, EVENTS_PER_STEP, NEAR, step_factor
 from .fnptr import call_f8, call_void
 
-_EPS = np.finfo(np.float64).eps
 _DRIVERS: dict = {}
 
 
