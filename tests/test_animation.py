@@ -16,6 +16,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import docs_blocks
 import pytest
 from PIL import Image
 
@@ -323,7 +324,7 @@ def test_docs_animation_code_runs(tmp_path, monkeypatch):
     assert blocks
     monkeypatch.chdir(tmp_path)
     for code in blocks:
-        exec(compile(code.replace("frames=120", "frames=12"), "docs/animation.md", "exec"), {})
+        docs_blocks.run(code.replace("frames=120", "frames=12"), "docs/animation.md", notes=True)
     assert (tmp_path / "spin.gif").exists() and (tmp_path / "sleigh.gif").exists()
 
 

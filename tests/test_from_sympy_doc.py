@@ -14,7 +14,8 @@ from pathlib import Path
 import pytest
 
 from knifeedge.cli import main
-from test_your_own_model import _check_printed, _squeeze
+import docs_blocks
+from test_your_own_model import _squeeze
 
 ROOT = Path(__file__).resolve().parents[1]
 DOC = ROOT / "docs" / "from-sympy.md"
@@ -42,8 +43,7 @@ def test_the_doc_runs_from_an_empty_folder(tmp_path, monkeypatch):
     for code in _blocks("python"):
         out = io.StringIO()
         with contextlib.redirect_stdout(out):
-            exec(compile(code, str(DOC), "exec"), namespace)
-        _check_printed(code, out.getvalue())
+            docs_blocks.run(code, str(DOC), namespace)
     assert (tmp_path / "disc.png").exists()
 
 
@@ -53,6 +53,5 @@ def test_the_docs_stability_chart_runs(tmp_path, monkeypatch):
     (code,) = _blocks("python chart")
     out = io.StringIO()
     with contextlib.redirect_stdout(out):
-        exec(compile(code, str(DOC), "exec"), {})
-    _check_printed(code, out.getvalue())
+        docs_blocks.run(code, str(DOC), {})
     assert (tmp_path / "bicycle_stability.png").exists()

@@ -390,7 +390,8 @@ def test_doc_section_on_inputs_runs(tmp_path, monkeypatch):
     import re
     import shlex
 
-    from test_your_own_model import DOC, _check_printed
+    import docs_blocks
+    from test_your_own_model import DOC
 
     monkeypatch.chdir(tmp_path)
     text = DOC.read_text()
@@ -407,8 +408,7 @@ def test_doc_section_on_inputs_runs(tmp_path, monkeypatch):
             continue
         out = io.StringIO()
         with contextlib.redirect_stdout(out):
-            exec(compile(code, str(DOC), "exec"), namespace)
-        _check_printed(code, out.getvalue())
+            docs_blocks.run(code, str(DOC), namespace)
     sampled = np.loadtxt(tmp_path / "sampled.csv", delimiter=",", skiprows=1)
     assert sampled[-1, 0] == 10.0 and np.allclose(sampled[-1, 1:], namespace["z"], rtol=1e-8, atol=1e-10)
 

@@ -117,7 +117,8 @@ def _run_doc_section(tmp_path, monkeypatch, tag: str, files: list) -> None:
     import shlex
 
     from knifeedge.cli import main
-    from test_your_own_model import DOC, _blocks, _check_printed
+    import docs_blocks
+    from test_your_own_model import DOC, _blocks
 
     monkeypatch.chdir(tmp_path)
     found = re.findall(rf"```python {tag}-file=(\w+\.py)\n(.*?)```", DOC.read_text(), flags=re.S)
@@ -130,8 +131,7 @@ def _run_doc_section(tmp_path, monkeypatch, tag: str, files: list) -> None:
     for code in _blocks(f"python {tag}-example"):
         out = io.StringIO()
         with contextlib.redirect_stdout(out):
-            exec(compile(code, "docs/your-own-model.md", "exec"), namespace)
-        _check_printed(code, out.getvalue())
+            docs_blocks.run(code, "docs/your-own-model.md", namespace)
 
 
 def test_the_docs_show_the_example_file_as_it_is():

@@ -196,7 +196,8 @@ def test_doc_section_on_two_bodies_runs(tmp_path, monkeypatch):
     import shlex
 
     from knifeedge.cli import main
-    from test_your_own_model import DOC, _blocks, _check_printed
+    import docs_blocks
+    from test_your_own_model import DOC, _blocks
 
     monkeypatch.chdir(tmp_path)
     files = re.findall(r"```python bodies-file=(\w+\.py)\n(.*?)```", DOC.read_text(), flags=re.S)
@@ -208,5 +209,4 @@ def test_doc_section_on_two_bodies_runs(tmp_path, monkeypatch):
     for code in _blocks("python bodies-example"):
         out = io.StringIO()
         with contextlib.redirect_stdout(out):
-            exec(compile(code, str(DOC), "exec"), namespace)
-        _check_printed(code, out.getvalue())
+            docs_blocks.run(code, str(DOC), namespace)

@@ -5,6 +5,7 @@ import re
 import shlex
 from pathlib import Path
 
+import docs_blocks
 import pytest
 
 import knifeedge as ke
@@ -26,7 +27,7 @@ def test_readme_python_blocks_run(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     namespace: dict = {}
     for code in _blocks("python"):  # in order: later blocks use earlier names
-        exec(compile(code, str(README), "exec"), namespace)
+        docs_blocks.run(code, str(README), namespace, notes=True)
     assert (tmp_path / "reversal.png").exists() and (tmp_path / "numerical-D05.png").exists()
     assert len((tmp_path / "tr.csv").read_text().splitlines()) == 4  # header + 3 runs
 

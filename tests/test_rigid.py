@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import docs_blocks
 import pytest
 import sympy as sp
 
@@ -271,7 +272,7 @@ def test_docs_snippets_run(tmp_path, monkeypatch):
     assert len(blocks) >= 2
     monkeypatch.chdir(tmp_path)
     for code in blocks:
-        exec(compile(code, "docs/rigid-bodies.md", "exec"), {})
+        docs_blocks.run(code, "docs/rigid-bodies.md", notes=True)
 
 
 def _load_example(name):

@@ -15,6 +15,7 @@ import importlib
 import math
 
 import numpy as np
+import docs_blocks
 import pytest
 
 import knifeedge as ke
@@ -115,7 +116,7 @@ def test_docs_snippets_run(tmp_path, monkeypatch):
     assert len(blocks) >= 2
     monkeypatch.chdir(tmp_path)
     for code in blocks:
-        exec(compile(code, "docs/stability.md", "exec"), {})
+        docs_blocks.run(code, "docs/stability.md", notes=True)
 
 
 @pytest.mark.slow

@@ -90,7 +90,7 @@ def test_the_docs_bicycle_section_runs(bicycle, monkeypatch):
     import re
     import shlex
 
-    from test_your_own_model import _check_printed
+    import docs_blocks
 
     doc = (Path(__file__).resolve().parents[1] / "docs" / "from-sympy.md").read_text()
     (command,) = re.findall(r"```sh bicycle\n(.*?)```", doc, flags=re.S)
@@ -99,8 +99,7 @@ def test_the_docs_bicycle_section_runs(bicycle, monkeypatch):
     for code in re.findall(r"```python bicycle\n(.*?)```", doc, flags=re.S):
         out = io.StringIO()
         with contextlib.redirect_stdout(out):
-            exec(compile(code, "docs/from-sympy.md", "exec"), {})
-        _check_printed(code, out.getvalue())
+            docs_blocks.run(code, "docs/from-sympy.md", {})
 
 
 def _run(bicycle, v: float, lean_rate: float, t_end: float):

@@ -14,6 +14,7 @@ import re
 import shlex
 from pathlib import Path
 
+import docs_blocks
 import pytest
 
 from knifeedge.cli import main
@@ -56,21 +57,5 @@ def test_the_doc_runs_from_an_empty_folder(tmp_path, monkeypatch):
     for code in _blocks("python"):  # in order: later blocks use earlier names
         out = io.StringIO()
         with contextlib.redirect_stdout(out):
-            exec(compile(code, str(DOC), "exec"), namespace)
-        _check_printed(code, out.getvalue())
+            docs_blocks.run(code, str(DOC), namespace)
     assert (tmp_path / "rolling_disk.png").exists()
-
-
-def _check_printed(code: str, printed: str) -> None:
-    """Each ``print(...)  # value`` line of the block printed ``value``; a ``# a b`` comment line after a
-    loop gives the lines the loop printed."""
-    expected = []
-    lines = code.splitlines()
-    for i, line in enumerate(lines):
-        m = re.match(r"\s*print\(.*\)\s+# (.*)$", line)
-        if m:
-            expected.append(m.group(1).strip())
-        elif line.startswith("# ") and i > 0 and (lines[i - 1].startswith("    ") or lines[i - 1].startswith("# ")):
-            expected.append(line[2:].strip())
-    got = [s.strip() for s in printed.splitlines()]
-    assert got == expected, (got, expected)

@@ -19,7 +19,8 @@ import pytest
 
 from knifeedge.cli import main
 
-from test_your_own_model import DOC, _blocks, _check_printed
+import docs_blocks
+from test_your_own_model import DOC, _blocks
 
 
 @pytest.mark.slow  # the docs' runs are the slow tier's (as test_your_own_model's)
@@ -44,5 +45,4 @@ def test_sections_on_time_constraints_and_rigid_bodies_run(tmp_path, monkeypatch
     for code in _blocks("python example"):
         out = io.StringIO()
         with contextlib.redirect_stdout(out):
-            exec(compile(code, str(DOC), "exec"), namespace)
-        _check_printed(code, out.getvalue())
+            docs_blocks.run(code, str(DOC), namespace)
