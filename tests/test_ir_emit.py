@@ -66,20 +66,25 @@ def test_generated_right_hand_sides_are_written_and_agree_bit_for_bit(key):
     """Every generated module carries the IR of its rhs_q_into (and rhs_pose_q_into): straight-line code the
     writer takes, and at random states and parameters that IR gives numba's result exactly (NaN where numba's
     does); it is the IR written from the module's own text now (not stale)."""
-    mod = importlib.import_module(f"knifeedge.generated.{MODULES[key]}")
-    rng = np.random.default_rng(sum(map(ord, MODULES[key])))
+    check_module_ir(importlib.import_module(f"knifeedge.generated.{MODULES[key]}"), MODULES[key])
+
+
+def check_module_ir(mod, label: str, rounds: int = 3) -> None:
+    """The generated module ``mod`` carries the IR of its rhs_q_into (and rhs_pose_q_into) as the writer writes it
+    from the module's text now, and at random states and parameters that IR gives numba's result exactly (also
+    used by the slow tests of derived numeric-elimination models)."""
+    rng = np.random.default_rng(sum(map(ord, label)))
     names = ["rhs_q_into"] + (["rhs_pose_q_into"] if hasattr(mod, "rhs_pose_q_into") else [])
     n, n_pose = len(mod.STATE_NAMES), len(getattr(mod, "POSE_NAMES", ()))
     for name in names:
         func = getattr(mod, name)
         assert mod.LLVM_IR[name] == ir_emit.rhs_ir(_source(func), name)
         size = n + (n_pose if name == "rhs_pose_q_into" else 0)
-        for _ in range(3):
+        for _ in range(rounds):
             p = rng.uniform(0.5, 2.0, len(mod.PARAM_NAMES))
             q = mod.constants(p)
             s = rng.uniform(-0.6, 0.6, size)
-            ir, nb = _both(func, f"{MODULES[key]}_{name}", float(rng.uniform(0, 10)), s, q, size,
-                           mod.LLVM_IR[name])
+            ir, nb = _both(func, f"{label}_{name}", float(rng.uniform(0, 10)), s, q, size, mod.LLVM_IR[name])
             assert np.isfinite(nb).any()
             np.testing.assert_array_equal(ir.view(np.int64), nb.view(np.int64))
 
