@@ -8,7 +8,8 @@ writer refused a select and the kernels called numba's compiled C callback of ``
 The bicycle is derived once from ``tests/models/whipple_bicycle.py`` (``knifeedge derive``, or ``--bicycle DIR``
 holding it).  The variant *without* is the same module with ``LLVM_IR`` written as the writer wrote it before
 (only ``constants``: the rhs functions left out), sealed again: byte for byte the module the writer of commit
-154029c derives (checked once, 2026-11-26).  Each round starts, per variant (order alternating), one child in a
+154029c derived, apart from the model file's path in the header (checked 2026-11-26, before the half-integer
+powers of ``kkt_emit`` changed the program of both variants).  Each round starts, per variant (order alternating), one child in a
 FRESH cache folder (``KNIFEEDGE_CACHE_DIR``, ``NUMBA_CACHE_DIR``) that first runs the single mode (its first DOP853
 run compiles the driver every model shares: "driver"), then the bicycle, whose first run compiles its parts ("first
 run": ``time.process_time`` around it; "child": the child's whole CPU, imports and both compiles included), then
