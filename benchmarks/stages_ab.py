@@ -11,7 +11,7 @@ the parts (the first run of each method in a fresh cache, CPU seconds, minus the
 
 Scenes: ``single`` (the single mode, 3 states), ``celt`` (the full celt, 7 states) and ``bicycle`` (the Whipple
 bicycle derived from ``tests/models/whipple_bicycle.py`` by ``knifeedge derive`` into ``--bicycle`` once: the
-largest model; its right-hand side is numba's compilation, not IR).
+largest model; its right-hand side, selects included, is IR since derivation/ir_emit.py writes selects).
 """
 from __future__ import annotations
 

@@ -9,7 +9,7 @@ parameters that ``constants`` reads.  The runtime hands these strings to
 LLVM (``knifeedge.integrators.irparts``); it never parses source.
 
 The generated ``rhs_q_into(t, s, q, ds)`` (and ``rhs_pose_q_into``) is
-straight-line arithmetic: names bound once, ``s[i]`` and ``q[i]`` read,
+straight-line arithmetic (selects included): names bound once, ``s[i]`` and ``q[i]`` read,
 ``ds[i]`` written, ``+ - * /``, powers, ``math.sin``, ``math.cos``,
 ``math.sqrt``.  numba takes 0.1-0.6 s to compile one (its typing and
 lowering cost about a millisecond per operation); LLVM, given the same
@@ -26,12 +26,23 @@ bit (checked for every generated module by ``tests/test_ir_emit.py``):
 - ``-a``: ``fneg``; ``math.sin``, ``math.cos``, ``math.sqrt``, ``math.exp``,
   ``math.log``, ``abs``: the LLVM intrinsics numba uses (``sqrt`` is exact).
 
+- ``a if x < y else b`` (a conditional expression, the pivot choices of a
+  numeric elimination's LU, ``derivation/kkt_emit.py``) with one comparison
+  ``<``, ``>``, ``<=``, ``>=``, ``==`` or ``!=``: numba's ``fcmp`` (ordered,
+  false when either side is NaN, except ``!=``: unordered, true on NaN;
+  numba/cpython/numbers.py) and a ``select``.  Both arms are computed, where
+  numba computes the one taken: they are pure (names, loads of the inputs,
+  arithmetic and intrinsics, nothing that writes or raises here), so the
+  result is the same bits.  Two integer constants as arms (numba would type
+  the result as an integer) are refused.
+
 A division by zero gives an infinity or NaN here where numba's compilation
 would raise (which a compiled callback cannot pass on): the integrator sees
 a non-finite error norm and rejects the step.
 
-Anything else (a branch, a call of another function) raises
-:class:`Unsupported`; that function is then left out of ``LLVM_IR``.
+Anything else (a statement ``if``, a chained comparison or ``and``/``or``
+in a condition, a call of another function) raises :class:`Unsupported`;
+that function is then left out of ``LLVM_IR``.
 
 Every function is defined ``internal`` under its Python name (``@"rhs_q_into"``, ...): the runtime links it
 into a library of its own that calls it (and inlines it), so equal names in several libraries never clash.
@@ -53,6 +64,11 @@ def literal(x: float) -> str:
 #: math functions and the LLVM intrinsic that numba's compilation calls for each
 _INTRINSICS = {"sin": "llvm.sin.f64", "cos": "llvm.cos.f64", "sqrt": "llvm.sqrt.f64", "exp": "llvm.exp.f64",
                "log": "llvm.log.f64", "fabs": "llvm.fabs.f64"}
+
+
+#: numba's comparison of two floats as the LLVM ``fcmp`` predicate (numba/cpython/numbers.py: ``fcmp_ordered``
+#: for all but ``!=``, which is ``fcmp_unordered``)
+_COMPARISONS = {ast.Lt: "olt", ast.Gt: "ogt", ast.LtE: "ole", ast.GtE: "oge", ast.Eq: "oeq", ast.NotEq: "une"}
 
 
 class Unsupported(ValueError):
@@ -129,6 +145,8 @@ class _Body:
                 raise Unsupported(ast.unparse(node))
             a, b = self.expr(node.left), self.expr(node.right)
             return self.value(f"{op} double {a}, {b}")
+        if isinstance(node, ast.IfExp):
+            return self.select(node)
         if isinstance(node, ast.Call) and not node.keywords and len(node.args) == 1:
             f = node.func
             name = (f.attr if isinstance(f, ast.Attribute) and isinstance(f.value, ast.Name) and f.value.id == "math"
@@ -137,6 +155,18 @@ class _Body:
                 self.used.add(_INTRINSICS[name])
                 return self.value(f"call double @{_INTRINSICS[name]}(double {self.expr(node.args[0])})")
         raise Unsupported(ast.unparse(node))
+
+    def select(self, node: ast.IfExp) -> str:
+        """``a if x <op> y else b``: numba's comparison (:data:`_COMPARISONS`), both arms, a ``select``."""
+        test = node.test
+        if not (isinstance(test, ast.Compare) and len(test.ops) == 1 and type(test.ops[0]) in _COMPARISONS):
+            raise Unsupported(f"condition {ast.unparse(test)}")
+        if all(isinstance(arm, ast.Constant) and type(arm.value) is int for arm in (node.body, node.orelse)):
+            raise Unsupported(f"integer select {ast.unparse(node)}")
+        x, y = self.expr(test.left), self.expr(test.comparators[0])
+        chosen = self.value(f"fcmp {_COMPARISONS[type(test.ops[0])]} double {x}, {y}")
+        a, b = self.expr(node.body), self.expr(node.orelse)
+        return self.value(f"select i1 {chosen}, double {a}, double {b}")
 
     def power(self, node: ast.BinOp) -> str:
         exponent = node.right

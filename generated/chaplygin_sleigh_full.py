@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/sleigh.py (model 'chaplygin_sleigh',
 constraints knife_edge) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:042ab04c0c52db2cbb2629c1322cb6be3267146189fe3ea358e62ce496080abd
+SymPy 1.14.0; input hash sha256:d3d00ab5c8114248b873531ff9923386e03815ba1d2ddbddef663b005a54a3c3
 
 Chaplygin sleigh: a rigid body on the plane with a knife edge at its rear contact point (x, y) that forbids sideways motion; heading phi, centre of mass at distance a ahead of the contact, radius of gyration k about the centre of mass; v is the speed along the axis.
 
@@ -60,7 +60,7 @@ MULTIPLIER_NAMES = ('knife_edge',)
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '042ab04c0c52db2cbb2629c1322cb6be3267146189fe3ea358e62ce496080abd'
+INPUT_HASH = 'd3d00ab5c8114248b873531ff9923386e03815ba1d2ddbddef663b005a54a3c3'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -470,4 +470,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 2
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '70c134682da9e9f939303f42c4e2fbada39628c39a9d61453fe82de43445dd1e'
+MODULE_SHA256 = '056c11ab05e97b4297ca7b624fe7f9417a3bf32930cb919921e6ce70a7d2e724'

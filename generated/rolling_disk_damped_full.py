@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk_damped',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:751baed59521af782e41069125b5af9c58e86d3e34d3d4c7e7d9a6a6bcf3040a
+SymPy 1.14.0; input hash sha256:58ad02687afa17689ec1a7eaf177fcfbdd310550f6040f09835824737efa2b18
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table, its rotation resisted by a viscous torque -c r^2 omega per unit mass (Rayleigh function c r^2 |omega|^2/2).
 
@@ -64,7 +64,7 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = True
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '751baed59521af782e41069125b5af9c58e86d3e34d3d4c7e7d9a6a6bcf3040a'
+INPUT_HASH = '58ad02687afa17689ec1a7eaf177fcfbdd310550f6040f09835824737efa2b18'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -2046,4 +2046,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 3
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '3d9703893e1288c43aa364dc3af051f223887a85c3d106105ad28360fa832f35'
+MODULE_SHA256 = 'd49a08d222e9020586413092d231b97ff76e4a1b0099ab2c1f788e00dba45f5d'

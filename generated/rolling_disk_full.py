@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from examples/rolling_disk.py (model 'rolling_disk',
 constraints no_slip_along, no_slip_across) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:d3720d842231207b7b606469974170a9c2babd0e2f05632d4e5321ecf2aa0482
+SymPy 1.14.0; input hash sha256:7154390682f5b63c57cf9f3fd598d0a6ccf240c5b224d5ab287c1f715bf20e20
 
 Uniform thin disk of radius r rolling without slipping on a horizontal table: heading q1, lean q2 from the vertical, rotation q3 about the axle, contact point (x, y).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('no_slip_along', 'no_slip_across')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'd3720d842231207b7b606469974170a9c2babd0e2f05632d4e5321ecf2aa0482'
+INPUT_HASH = '7154390682f5b63c57cf9f3fd598d0a6ccf240c5b224d5ab287c1f715bf20e20'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -1505,4 +1505,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 2
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = 'b2eae235b1e1adc34d4246b739d7c42c313dad5540c5b45b4012685af498c0a1'
+MODULE_SHA256 = 'b471ba941e464c581c1f5d7378b125ec2e92f674efcf690c8baa93bba271c74d'

@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:c27beddb35fce4fa8d4482618706a0dcc50132c3432e8a81e764b5db63e63bd7
+SymPy 1.14.0; input hash sha256:0cf9cd0419e0a9d2b790aef300f377a0f99649e29d8ffe9a819b4286acda7c4b
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'c27beddb35fce4fa8d4482618706a0dcc50132c3432e8a81e764b5db63e63bd7'
+INPUT_HASH = '0cf9cd0419e0a9d2b790aef300f377a0f99649e29d8ffe9a819b4286acda7c4b'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -662,4 +662,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 4
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '1f153ed68a70eeac95dc37d1d7f7f28b0833e386d13bfd1402e6ed280dcabf23'
+MODULE_SHA256 = '77f68aedccdf47c8503840eb75e38af18caf8e49cea9fa14c0633b88e392e51a'

@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'single_mode',
 constraints vinculo1, vinculo2) through derivation/engine.py and derivation/truncation.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:3357c4ccedc285f06ce82de1d3e2a0e09689f98ea6d5ae78bbbb5717b756a1c7
+SymPy 1.14.0; input hash sha256:db103aead09d93bdd320b613cfd0da1e6ee4a4924c2a957dc9ff96f88afcccc4
 
 Single-mode knife edge (paper section II): a massless bar of length 2L on the table, two masses M/2 hanging at distance ell from its ends; one tilt theta, the contact point shifted by D*theta along the bar (vinculo1, vinculo2).
 
@@ -63,7 +63,7 @@ MULTIPLIER_NAMES = ('vinculo1', 'vinculo2')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '3357c4ccedc285f06ce82de1d3e2a0e09689f98ea6d5ae78bbbb5717b756a1c7'
+INPUT_HASH = 'db103aead09d93bdd320b613cfd0da1e6ee4a4924c2a957dc9ff96f88afcccc4'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -614,4 +614,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 4
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '7dcf2497f0bc3e1e7ed7b71a132973fad5242cd3086644f3cb76a1048e2d4644'
+MODULE_SHA256 = '572e443030f92073a1a969b3afad858d25e8a4ddb0174d0827e2126ee68b1b37'

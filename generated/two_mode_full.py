@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:a19f33a96b823a064bc48de8588e58f63fd79761e1567ca253e5fc3673db28a8
+SymPy 1.14.0; input hash sha256:406415af61462d8f033eb9ab4d86b2adb817abb97f10006b2550c613b0a3e4a0
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -66,7 +66,7 @@ MULTIPLIER_NAMES = ('Const22', 'Const23')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = 'a19f33a96b823a064bc48de8588e58f63fd79761e1567ca253e5fc3673db28a8'
+INPUT_HASH = '406415af61462d8f033eb9ab4d86b2adb817abb97f10006b2550c613b0a3e4a0'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -1782,4 +1782,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 5
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '3cef79aeb5122d609699dfe3267541e20deffadea165832af659086819aa16d5'
+MODULE_SHA256 = '1a27c4e947e238c7612f9797f24a002e9bf6b0be5500ccb20994c038f6240c98'

@@ -4,7 +4,7 @@ GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make derive`` to regenerate.
 Produced by derivation/emit.py (make derive) from derivation/models.py (model 'two_mode',
 constraints Const22, Const23) through derivation/engine.py and derivation/truncation.py.
 Accelerations and multipliers in closed form (symbolic elimination of the multipliers).
-SymPy 1.14.0; input hash sha256:4b43fe17ab58497939b72d8c9c58c412339edf2d9bf03865b325dd77b1ffc44a
+SymPy 1.14.0; input hash sha256:f7374d753b8c57fe8fe6f9f65bf38f36b508a3823eeec6143b4eaeab7462f235
 
 Two-mode knife edge (paper section III): tilts theta1, theta2; the contact is the lowest point of a circle of radius D whose plane makes the chiral angle alpha with the bar (Const22, Const23).
 
@@ -66,7 +66,7 @@ MULTIPLIER_NAMES = ('Const22', 'Const23')
 HAS_DISSIPATION = False
 #: model-specific helpers defined at the end of this module
 EXPORTS = ()
-INPUT_HASH = '4b43fe17ab58497939b72d8c9c58c412339edf2d9bf03865b325dd77b1ffc44a'
+INPUT_HASH = 'f7374d753b8c57fe8fe6f9f65bf38f36b508a3823eeec6143b4eaeab7462f235'
 SYMPY_VERSION = '1.14.0'
 #: how the multipliers are eliminated: "symbolic" (closed form) or "numeric" (a linear solve at every call)
 ELIMINATION = 'symbolic'
@@ -1228,4 +1228,4 @@ LLVM_IR = {
 #: how many parameters the IR of ``constants`` reads
 LLVM_IR_READS = 5
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '677491711f943e7fa4a981c7737d0497a69b319004394a629c059583dbf7c530'
+MODULE_SHA256 = '871a213667c814f0747702e846957a6acaf5f1acbc2e8a662f2130d664acbbc9'

@@ -66,20 +66,25 @@ def test_generated_right_hand_sides_are_written_and_agree_bit_for_bit(key):
     """Every generated module carries the IR of its rhs_q_into (and rhs_pose_q_into): straight-line code the
     writer takes, and at random states and parameters that IR gives numba's result exactly (NaN where numba's
     does); it is the IR written from the module's own text now (not stale)."""
-    mod = importlib.import_module(f"knifeedge.generated.{MODULES[key]}")
-    rng = np.random.default_rng(sum(map(ord, MODULES[key])))
+    check_module_ir(importlib.import_module(f"knifeedge.generated.{MODULES[key]}"), MODULES[key])
+
+
+def check_module_ir(mod, label: str, rounds: int = 3) -> None:
+    """The generated module ``mod`` carries the IR of its rhs_q_into (and rhs_pose_q_into) as the writer writes it
+    from the module's text now, and at random states and parameters that IR gives numba's result exactly (also
+    used by the slow tests of derived numeric-elimination models)."""
+    rng = np.random.default_rng(sum(map(ord, label)))
     names = ["rhs_q_into"] + (["rhs_pose_q_into"] if hasattr(mod, "rhs_pose_q_into") else [])
     n, n_pose = len(mod.STATE_NAMES), len(getattr(mod, "POSE_NAMES", ()))
     for name in names:
         func = getattr(mod, name)
         assert mod.LLVM_IR[name] == ir_emit.rhs_ir(_source(func), name)
         size = n + (n_pose if name == "rhs_pose_q_into" else 0)
-        for _ in range(3):
+        for _ in range(rounds):
             p = rng.uniform(0.5, 2.0, len(mod.PARAM_NAMES))
             q = mod.constants(p)
             s = rng.uniform(-0.6, 0.6, size)
-            ir, nb = _both(func, f"{MODULES[key]}_{name}", float(rng.uniform(0, 10)), s, q, size,
-                           mod.LLVM_IR[name])
+            ir, nb = _both(func, f"{label}_{name}", float(rng.uniform(0, 10)), s, q, size, mod.LLVM_IR[name])
             assert np.isfinite(nb).any()
             np.testing.assert_array_equal(ir.view(np.int64), nb.view(np.int64))
 
@@ -153,6 +158,104 @@ def test_powers_negation_and_functions_are_numbas():
         np.testing.assert_array_equal(ir.view(np.int64), nb.view(np.int64))
 
 
+def _selects(t, s, q, ds):
+    x = s[0]
+    y = s[1]
+    a = s[2]
+    b = s[3]
+    ds[0] = a if x < y else b
+    ds[1] = a if x > y else b
+    ds[2] = a if x <= y else b
+    ds[3] = a if x >= y else b
+    ds[4] = a if x == y else b
+    ds[5] = a if x != y else b
+    ds[6] = ((y) if (abs(x) < abs(y)) else (x))  # a pivot choice as derivation/kkt_emit.py's LU prints it
+    ds[7] = (a if x > 0 else b) * 2 + (x if abs(y) >= 1.5 else (y if x <= -1 else a - b))
+    ds[8] = (1.0 if 0 < x else -1) * (x / y if y != 0 else 0.0)
+
+
+#: NaN, infinities, signed zeros, the smallest subnormal, and ordinary values
+SPECIAL = [math.nan, -math.nan, math.inf, -math.inf, 0.0, -0.0, 5e-324, 1.0, -1.0, 1.5, -2.5]
+
+
+def test_selects_are_numbas_on_nan_infinities_and_signed_zeros():
+    """``a if x <op> y else b`` for each of ``< > <= >= == !=`` (numba: ordered compares, false on NaN; ``!=``
+    unordered, true on NaN), on abs() as the LU's pivot choice prints it, against constants, nested and inside
+    arithmetic: numba's bits for every pair of special values.  The arms 0.0 and -0.0 differ only in their bits,
+    so an arm taken wrongly shows."""
+    jit = njit(_selects)
+    native = "test.native.selects"
+    text = ir_emit.rhs_ir(_source(_selects), native)
+    assert text.count("select i1") == 12 and "fcmp ogt" in text and "fcmp une" in text
+    rhs = _compiled(text, native, "selects")
+    for x in SPECIAL:
+        for y in SPECIAL:
+            for a, b in ((0.0, -0.0), (-0.0, 0.0), (2.0, 3.0)):
+                s, q = np.array([x, y, a, b]), np.zeros(1)
+                ir, nb = np.full(9, 7.0), np.full(9, 7.0)
+                rhs(0.0, s.ctypes.data, q.ctypes.data, q.size, ir.ctypes.data)
+                jit(0.0, s, q, nb)
+                np.testing.assert_array_equal(ir.view(np.int64), nb.view(np.int64), err_msg=f"{x}, {y}, {a}, {b}")
+
+
+def _lu_text(m: int) -> str:
+    """``rhs_q_into`` writing ``x`` with ``A x = b`` (``A`` m x m in ``s[:m*m]``, ``b`` after it), the LU with
+    partial pivoting of a numeric elimination (derivation/kkt_emit.py's ``lu_solve``) printed as the emitter
+    prints a program."""
+    import sympy as sp
+
+    from knifeedge.derive import kkt_emit
+
+    symbols = sp.symbols(f"e0:{m * m + m}", real=True)
+    prog = kkt_emit.Program()
+    A = [list(symbols[r * m:(r + 1) * m]) for r in range(m)]
+    (x,) = kkt_emit.lu_solve(prog, A, [list(symbols[m * m:])])
+    lines, _ = kkt_emit._lines(prog, {f"ds[{i}]": xi for i, xi in enumerate(x)})
+    return ("def rhs_q_into(t, s, q, ds):\n" + "".join(f"    {e} = s[{i}]\n" for i, e in enumerate(symbols))
+            + "\n".join(lines) + "\n")
+
+
+def test_the_pivoting_lu_of_a_numeric_elimination_is_numbas():
+    """The LU with partial pivoting that a numeric elimination writes (selects choosing the larger |pivot|) as IR:
+    numba's bits at random systems (and the solution numpy's to 1e-12), at ties of |pivot| (+-, equal), at a
+    zero and a NaN pivot candidate."""
+    m = 3
+    text = _lu_text(m)
+    assert " if " in text
+    namespace = {"math": math}
+    exec(compile(text, "<lu>", "exec"), namespace)  # noqa: S102
+    jit = njit(namespace["rhs_q_into"])
+    native = "test.native.lu"
+    rhs = _compiled(ir_emit.rhs_ir(ir_emit.functions(text)["rhs_q_into"], native), native, "lu")
+    rng = np.random.default_rng(3)
+    cases = [rng.standard_normal(m * m + m) for _ in range(20)]
+    tie = np.array([1.0, 2.0, 3.0, -1.0, 5.0, 1.0, 1.0, -4.0, 2.0, 1.0, 2.0, 3.0])
+    cases += [tie, np.where(np.arange(12) == 0, 0.0, tie), np.where(np.arange(12) == 3, np.nan, tie)]
+    for k, s in enumerate(cases):
+        q, ir, nb = np.zeros(1), np.full(m, 7.0), np.full(m, 7.0)
+        rhs(0.0, s.ctypes.data, q.ctypes.data, q.size, ir.ctypes.data)
+        jit(0.0, s, q, nb)
+        np.testing.assert_array_equal(ir.view(np.int64), nb.view(np.int64), err_msg=f"case {k}")
+        if k < 20:
+            np.testing.assert_allclose(ir, np.linalg.solve(s[:m * m].reshape(m, m), s[m * m:]), rtol=1e-12, atol=1e-12)
+
+
+def _chained(t, s, q, ds):
+    ds[0] = s[0] if s[1] < s[0] < s[2] else s[1]
+
+
+def _either(t, s, q, ds):
+    ds[0] = s[0] if s[1] > 0 and s[2] > 0 else s[1]
+
+
+def _truthy(t, s, q, ds):
+    ds[0] = s[0] if s[1] else s[2]
+
+
+def _integers(t, s, q, ds):
+    ds[0] = s[0] ** (2 if s[1] > 0 else 3)
+
+
 def _branching(t, s, q, ds):
     if s[0] > 0.9:
         raise ValueError("out of the domain")
@@ -169,9 +272,11 @@ def _rebinding(t, s, q, ds):
     ds[0] = a
 
 
-@pytest.mark.parametrize("func", [_branching, _calling, _rebinding])
+@pytest.mark.parametrize("func", [_branching, _calling, _rebinding, _chained, _either, _truthy, _integers])
 def test_what_is_not_straight_line_arithmetic_is_refused(func):
-    """A branch, a function the writer does not know, a name bound twice: Unsupported, so that the kernel
+    """A branch (a statement ``if``), a function the writer does not know, a name bound twice, a select on a
+    chained comparison, on ``and``, on a value's truth, or between two integers (numba's result an integer):
+    Unsupported, so that the kernel
     uses numba's compilation of the right-hand side instead (tests/test_irparts.py runs a model whose
     right-hand side raises through that path)."""
     with pytest.raises(ir_emit.Unsupported):

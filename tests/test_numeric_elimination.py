@@ -143,9 +143,14 @@ def disk_pendulum(tmp_path_factory):
 @pytest.mark.slow  # derives the two-body model (6-12 s) and compiles it: the slow tier
 def test_disk_pendulum_is_numeric_and_straight_line(disk_pendulum):
     """Four independent accelerations: ``elimination="auto"`` solves numerically, in code the derivation writes
-    as IR too (the module carries it)."""
+    as IR too (the module carries it), the pose's velocity solve with its pivot choices (selects) included: numba's
+    bits (tests/test_ir_emit.py)."""
+    from test_ir_emit import check_module_ir
+
     assert disk_pendulum.module.ELIMINATION == "numeric"
     assert "define" in disk_pendulum.module.LLVM_IR["rhs_q_into"]
+    assert "select i1" in disk_pendulum.module.LLVM_IR["rhs_pose_q_into"]
+    check_module_ir(disk_pendulum.module, "disk_pendulum")
 
 
 @pytest.mark.slow  # derives the two-body model (6-12 s) and compiles it: the slow tier

@@ -59,6 +59,18 @@ def test_numeric_elimination_and_state(bicycle):
 
 
 @pytest.mark.slow
+def test_the_right_hand_side_is_ir_with_its_pivoting(bicycle):
+    """The bicycle's right-hand side solves its dependent velocities by an LU whose pivot choices are selects;
+    the module carries it as IR (the integrators inline it into their stages instead of calling numba's
+    compilation), numba's bits (tests/test_ir_emit.py)."""
+    from test_ir_emit import check_module_ir
+
+    for name in ("rhs_q_into", "rhs_pose_q_into"):
+        assert "select i1" in bicycle.module.LLVM_IR[name]
+    check_module_ir(bicycle.module, "whipple_bicycle", rounds=2)
+
+
+@pytest.mark.slow
 def test_lean_steer_matrix_equals_the_benchmark(bicycle):
     """The linearization about straight running, lean/steer block, equals the benchmark's matrix at 0..10 m/s."""
     p = bicycle.params(bicycle.default_params)
