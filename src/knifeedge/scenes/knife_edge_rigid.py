@@ -20,6 +20,12 @@ sin theta1`` for the body) over a short run started at tilts ``theta_max``,
 for the paper's ``D/ell = 1/2`` and two smaller ones.  The closed-form linear
 periods of both potentials are reported beside them.  It also runs the
 initial state of Fig. ``Numerical2``.
+
+Both models run at rtol 1e-8, atol 1e-11 (the tilts start at 1e-3 and up): the
+scene asks whether two models agree within 1 %, and against runs at rtol 1e-10,
+atol 1e-12 its reversal times moved by at most 2e-6 relative, its periods by
+2e-5 (the FFT's estimate on the steps), its relative errors by at most 2e-5
+(the closest to the 1 % line, -0.984 %, by 3e-7), at two thirds of the CPU.
 """
 from __future__ import annotations
 
@@ -45,7 +51,7 @@ def rigid_state(theta1: float, theta2: float, phi_dot: float) -> dict:
 
 RUN = RunSpec(
     model="two_mode_rigid", fidelity="full", params=PARAMS, y0=rigid_state(1e-3, 1e-3, 0.1),
-    t_span=(0.0, 4000.0), method="DOP853", rtol=1e-10, atol=1e-12, n_eval=None,
+    t_span=(0.0, 4000.0), method="DOP853", rtol=1e-8, atol=1e-11, n_eval=None,
 )
 
 
