@@ -17,6 +17,17 @@ def require_success(result, scene):
     return result
 
 
+def run_to_first_reversal(spec, t_stop: float, scene):
+    """``spec`` (a RunSpec) run up to ``t_stop`` if that is inside its span and the run reverses by then, else over
+    its whole span.  An adaptive run takes the same steps whatever its end (but the last), so its first reversal
+    is the whole span's to the bit."""
+    if t_stop < spec.t_span[1]:
+        r = require_success(spec.with_(t_end=t_stop).simulate(), scene)
+        if len(r.reversal_times):
+            return r
+    return require_success(spec.simulate(), scene)
+
+
 def first_reversal(result) -> float:
     """Time of the first reversal of a run (``result.reversal_times[0]``), ``nan`` if it has none."""
     return float(result.reversal_times[0]) if len(result.reversal_times) else math.nan

@@ -34,7 +34,7 @@ import math
 import numpy as np
 
 from .base import RunSpec, Scene, SceneResult
-from .common import first_reversal, layout, require_success
+from .common import first_reversal, layout, require_success, run_to_first_reversal
 
 PARAMS = {"g": 1.0, "ell": 1.0, "L": 2.0, "D": 0.5, "alpha": math.pi / 4}
 
@@ -93,17 +93,6 @@ def _crossings(t, s) -> np.ndarray:
     """Zero crossings of a sampled signal (linear interpolation between samples)."""
     i = np.nonzero(np.sign(s[:-1]) * np.sign(s[1:]) < 0)[0]
     return t[i] - s[i] * (t[i + 1] - t[i]) / (s[i + 1] - s[i])
-
-
-def run_to_first_reversal(spec: RunSpec, t_stop: float, scene: Scene):
-    """``spec`` run up to ``t_stop`` if that is inside its span and the run reverses by then, else over its whole
-    span.  An adaptive run takes the same steps whatever its end (but the last), so its first reversal is the
-    whole span's to the bit."""
-    if t_stop < spec.t_span[1]:
-        r = require_success(spec.with_(t_end=t_stop).simulate(), scene)
-        if len(r.reversal_times):
-            return r
-    return require_success(spec.simulate(), scene)
 
 
 def first_crossing_paper(spec: RunSpec, scene: Scene) -> float:
