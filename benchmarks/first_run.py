@@ -29,6 +29,13 @@ processes) with each task's process, start, end and CPU recorded, and every
 numba compile with the process and task it ran in: which core waits for what,
 and what is compiled twice.
 
+``--as-user COMMIT [COMMIT ...]`` times ``knifeedge figures`` as a user's first
+run of each commit: a ``git archive`` of it, ``pip install --no-compile`` into
+a fresh virtual environment, copied afresh for every run with no bytecode and
+``PYTHONDONTWRITEBYTECODE`` unset (the run writes it, as on a new machine),
+every cache empty; the commits interleaved, ``--repeats`` times; each cold run
+is followed by a warm one with its caches.
+
 ``--test-command`` also times the README's test command (the set-up line that
 ends in ``pytest``: a virtual environment, the install, the tests) from a fresh
 clone of this repository's committed ``HEAD``, with empty caches, ``--repeats``
@@ -244,6 +251,42 @@ def measure_timeline(work: Path) -> dict:
 ROOT = Path(__file__).resolve().parents[1]
 
 
+def _user_venv(commit: str, work: Path) -> Path:
+    """A virtual environment with ``commit`` installed as the README says (``pip install --no-compile``)."""
+    import shutil
+
+    src, venv = work / f"src-{commit}", work / f"venv-{commit}"
+    src.mkdir()
+    archive = subprocess.run(["git", "-C", str(ROOT), "archive", commit], check=True, capture_output=True).stdout
+    subprocess.run(["tar", "-x", "-C", str(src)], input=archive, check=True)
+    subprocess.run([getattr(sys, "_base_executable", sys.executable), "-m", "venv", str(venv)], check=True)
+    subprocess.run([str(venv / "bin" / "python"), "-m", "pip", "install", "-q", "--no-compile", str(src)], check=True)
+    shutil.rmtree(src)
+    return venv
+
+
+def measure_as_user(commits: list, repeats: int, work: Path) -> dict:
+    """``knifeedge figures`` as a user's first run of each of ``commits`` (interleaved), then warm."""
+    import shutil
+
+    templates = {c: _user_venv(c, work) for c in commits}
+    rows = {c: [] for c in commits}
+    for k in range(repeats):
+        for c in commits:
+            run = Path(tempfile.mkdtemp(prefix=f"user-{c}-", dir=work))
+            venv = run / "venv"
+            shutil.copytree(templates[c], venv, symlinks=True)
+            for cache in list(venv.rglob("__pycache__")):
+                shutil.rmtree(cache)
+            env = {**_cold_env(run), "XDG_CACHE_HOME": str(run / "xdg")}
+            env.pop("PYTHONDONTWRITEBYTECODE", None)
+            command = [str(venv / "bin" / "python"), "-m", "knifeedge", "figures", "--out", str(run / "figs")]
+            rows[c].append({"cold": _run(command, env, run), "warm": _run(command, env, run)})
+            print(f"  {c} {k + 1}/{repeats}: {rows[c][-1]}", flush=True)
+            shutil.rmtree(run)
+    return rows
+
+
 def readme_test_command() -> str:
     """The README's set-up command that installs the package and runs the tests."""
     for line in (ROOT / "README.md").read_text().splitlines():
@@ -280,12 +323,19 @@ def main(argv=None) -> int:
                     help="also profile a cold `knifeedge figures` in one process: CPU and numba compiles per scene")
     ap.add_argument("--timeline", action="store_true",
                     help="also run a cold `knifeedge figures` with each task's process, times and CPU recorded")
+    ap.add_argument("--as-user", nargs="+", metavar="COMMIT",
+                    help="only time `knifeedge figures` as a user's first run of each commit (interleaved), then warm")
     ap.add_argument("--test-command", action="store_true",
                     help="also time the README's test command from a fresh clone (minutes per repeat)")
     args = ap.parse_args(argv)
     results = {"cpus": os.cpu_count()}
     with tempfile.TemporaryDirectory(prefix="knifeedge-first-run-") as tmp:
         work = Path(tmp)
+        if args.as_user:
+            print("knifeedge figures as a user's first run", flush=True)
+            results = {"cpus": os.cpu_count(), "as_user": measure_as_user(args.as_user, args.repeats, work)}
+            print(json.dumps(results))
+            return 0
         print("knifeedge demo", flush=True)
         results["demo"] = measure(["demo", "--out", str(work / "demo.png")], args.repeats, work)
         if not args.skip_figures:

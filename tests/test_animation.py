@@ -237,6 +237,41 @@ def test_frames_differ_where_the_body_moves(single_motion):
     assert np.count_nonzero(np.any(a[label] != b[label], axis=2)) > 5
 
 
+def _pieces(artist) -> list:
+    """The lines one artist draws: its 3D data split at the NaN rows between them."""
+    xyz = np.stack(artist.get_data_3d(), 1)
+    gaps = np.nonzero(np.isnan(xyz[:, 0]))[0]
+    parts = (part[~np.isnan(part[:, 0])] for part in np.split(xyz, gaps))
+    return [part for part in parts if len(part)]
+
+
+def test_a_frame_draws_each_line_once_on_its_side_of_the_table_and_the_spin_so_far(single_motion):
+    """``knifeedge figures`` cold (issue 25 item 4): the body's lines share a few artists (one per style and side
+    of the table) and the spin rate's trace so far is copied as pixels.  Every segment of the drawing
+    (``DRAWING["segments"]`` at the frame's points, checked against the paper's geometry above) and every
+    outline is drawn exactly once, by an artist of the side of the table its mean height is on; the red trace
+    of the spin rate fills the gauge from its left edge up to the frame's time and not beyond (the dot's
+    radius)."""
+    mo = single_motion
+    r = an.FrameRenderer(mo, fps=10, magnify=4.0, size=(6.0, 3.4), dpi=50)
+    for k in (3, int(np.argmin(np.abs(mo.t - mo.reversal_times[0])))):
+        img = r.render(k)
+        below, above = r._body_lines(k)
+        want = [r.pts[k][[a, b]] for a, b in r.seg] + list(r.outl[k])
+        drawn = [(q, side) for side, artists in enumerate((below, above)) for a in artists for q in _pieces(a)]
+        assert len(drawn) == len(want)
+        for line in want:
+            (side,) = [sd for q, sd in drawn if q.shape == line.shape and np.array_equal(q, line)]
+            assert side == (0 if line[:, 2].mean() < 0 else 1)
+        h = img.shape[0]
+        box = r.gauge.bbox
+        rgb = img[h - int(box.y1):h - int(box.y0)].astype(int)  # the gauge's rows
+        red = (rgb[..., 0] - rgb[..., 1] > 60) & (rgb[..., 0] - rgb[..., 2] > 60)  # C3: the trace so far, the dot
+        cols = np.nonzero(red.any(axis=0))[0]
+        x_k = float(r.gauge.transData.transform((mo.t[k], 0.0))[0])
+        assert cols.min() <= box.x0 + 3 and abs(cols.max() - x_k) <= 4
+
+
 def test_gif_has_the_stated_frames(tmp_path):
     out = tmp_path / "spin.gif"
     info = ke.animate("numerical", out, frames=12, fps=10, size=(5.0, 2.8), dpi=40)

@@ -44,6 +44,7 @@ _NICE = (1, 2, 3, 4, 5, 10, 20, 30, 50, 100, 200, 300, 500, 1000)
 #: a call as Python, 2-3 us compiled) is called once a frame only: always as Python (a few hundred frames cost
 #: less than its compile, 0.2-0.9 s)
 DRAW_AS_PYTHON_UP_TO = 10_000
+_GAP = np.full((1, 3), np.nan)  # between the lines one artist draws
 
 
 @dataclass
@@ -446,8 +447,8 @@ class FrameRenderer:
         self._top_view()
         self._spin_gauge()
         self._texts(title)
-        self.body = [*self.seg_lines, *self.outline_lines, self.mass_dots, self.contact_mark]
-        self.overlay = [self.arc, self.arc_head, self.trail, self.tv_mark, self.spin_done, self.spin_dot]
+        self.body = [*(a for pair in self.line_groups for a in pair), self.mass_dots, self.contact_mark]
+        self.overlay = [self.arc, self.trail, self.tv_mark, self.spin_done, self.spin_dot]
         # the texts that change every frame are set on matplotlib Text artists (their position, size, colour and
         # content) but written into the pixels by pillow: matplotlib's text layout costs ~7 ms a text, 3/4 of a frame
         self.labels = [self.spin_text, self.time_text, self.speed_text]
@@ -459,6 +460,12 @@ class FrameRenderer:
             a.set_animated(True)
         self.canvas.draw()
         self.background = self.canvas.copy_from_bbox(self.fig.bbox)
+        # the spin rate's trace so far, red over the grey whole run: drawn once, whole, over the background, and
+        # each frame copied as pixels up to two pixels before the frame's time, the rest drawn as a line (a line
+        # of every step of the run so far, drawn each frame, was 2.5 ms of numerical2's ~12 ms frames)
+        self.gauge.draw_artist(self.spin_done)
+        self.spin_drawn = self.canvas.copy_from_bbox(self.fig.bbox)
+        self.canvas.restore_region(self.background)
 
     def _scene_axes(self) -> None:
         """The 3D view: limits around everything drawn, the table, and the body's artists."""
@@ -492,13 +499,15 @@ class FrameRenderer:
         self.table = Poly3DCollection(table, facecolor=(0.55, 0.55, 0.55, 0.55), edgecolor="0.4", lw=0.6)
         ax.add_collection3d(self.table)
         self.ax3 = ax
-        self.seg_lines = [ax.plot([], [], [], color="k", lw=2.2 if i == 0 else 1.4, solid_capstyle="round")[0]
-                          for i in range(len(self.seg))]
-        self.outline_lines = [ax.plot([], [], [], color="C1", lw=1.6)[0] for _ in range(self.outl.shape[1])]
+        # the body's lines in three styles (the main member, the other members, the outlines), each style one
+        # artist for its lines below the table and one for those above (NaN between lines): an artist costs
+        # ~0.35 ms a frame to draw, a line of its own each made 10-13 artists a frame
+        styles = (dict(color="k", lw=2.2, solid_capstyle="round"), dict(color="k", lw=1.4, solid_capstyle="round"),
+                  dict(color="C1", lw=1.6))
+        self.line_groups = [[ax.plot([], [], [], **style)[0] for _side in ("below", "above")] for style in styles]
         self.mass_dots = ax.plot([], [], [], "o", color="C0", ms=9, mec="k", mew=0.6)[0]
         self.contact_mark = ax.plot([], [], [], "x", color="red", ms=9, mew=2.2)[0]
         self.arc = ax.plot([], [], [], color="C3", lw=2.0)[0]
-        self.arc_head = ax.plot([], [], [], color="C3", lw=2.0)[0]
         self.table_trail = ax.plot([], [], [], color="C3", lw=1.0)[0]  # the recent contact path (camera following)
 
     def _top_view(self) -> None:
@@ -525,7 +534,8 @@ class FrameRenderer:
         mo = self.mo
         ga = self.fig.add_axes((0.66, 0.12, 0.31, 0.27))
         ga.plot(mo.spin_t, mo.spin_y, color="0.75", lw=0.8)
-        self.spin_done = ga.plot([], [], color="C3", lw=1.2)[0]
+        self.spin_done = ga.plot(mo.spin_t, mo.spin_y, color="C3", lw=1.2, animated=True)[0]
+        self.gauge = ga
         self.spin_dot = ga.plot([], [], "o", color="C3", ms=5)[0]
         ga.axhline(0.0, color="0.5", lw=0.5)
         for r in mo.reversal_times:
@@ -556,10 +566,6 @@ class FrameRenderer:
     def render(self, k: int) -> np.ndarray:
         """Draw frame ``k``; returns its pixels, shape (height, width, 3), uint8."""
         p = self.pts[k]
-        for line, (a, b) in zip(self.seg_lines, self.seg):
-            line.set_data_3d(p[[a, b], 0], p[[a, b], 1], p[[a, b], 2])
-        for line, curve in zip(self.outline_lines, self.outl[k]):
-            line.set_data_3d(curve[:, 0], curve[:, 1], curve[:, 2])
         m = p[self.mass]
         self.mass_dots.set_data_3d(m[:, 0], m[:, 1], m[:, 2])
         c = p[self.contact]
@@ -574,8 +580,6 @@ class FrameRenderer:
             rel = trail - self.offset[k, :2]
             self.table_trail.set_data_3d(rel[:, 0], rel[:, 1], np.zeros(len(rel)))
         self.tv_mark.set_data([self.path[k, 0]], [self.path[k, 1]])
-        w = mo.spin_t <= mo.t[k]
-        self.spin_done.set_data(mo.spin_t[w], mo.spin_y[w])
         self.spin_dot.set_data([mo.t[k]], [self.spin[k]])
         s = self.spin[k]
         sense = "counter-clockwise" if s > 0 else ("clockwise" if s < 0 else "at rest")
@@ -588,15 +592,49 @@ class FrameRenderer:
             f" ({ratio:.0f}x slower than elsewhere: near a reversal)" if ratio >= 10 else "")
         self.speed_text.set_text(f"{self.fps:g} frames/s; 1 s of video = {tps:.3g} time units{slow}")
         self.canvas.restore_region(self.background)
-        below = [m[:, 2].mean() < 0 for m in (p[[a, b]] for a, b in self.seg)]
-        below += [c[:, 2].mean() < 0 for c in self.outl[k]]
-        below += [bool(self.mass) and float(p[self.mass, 2].mean()) < 0, False]
+        self._spin_so_far(k)
+        below, above = self._body_lines(k)
+        (below if bool(self.mass) and float(m[:, 2].mean()) < 0 else above).append(self.mass_dots)
         self.table.do_3d_projection()
-        order = [a for a, b in zip(self.body, below) if b] + [self.table, self.table_trail] \
-            + [a for a, b in zip(self.body, below) if not b] + self.overlay
+        order = below + [self.table, self.table_trail] + above + [self.contact_mark] + self.overlay
         for a in order:
             a.axes.draw_artist(a) if a.axes is not None else self.fig.draw_artist(a)
         return self._with_labels()
+
+    def _body_lines(self, k: int) -> tuple:
+        """Set the body's line artists (:attr:`line_groups`) for frame ``k``; returns those holding lines below the
+        table (a line is below when its points' mean height is) and those holding lines above, in drawing order:
+        the main member, the other members, the outlines."""
+        p = self.pts[k]
+        lines = [[[], []] for _ in self.line_groups]
+        for i, (a, b) in enumerate(self.seg):
+            xyz = p[[a, b]]
+            lines[min(i, 1)][0 if xyz[:, 2].mean() < 0 else 1].append(xyz)
+        for curve in self.outl[k]:
+            lines[2][0 if curve[:, 2].mean() < 0 else 1].append(curve)
+        sides = ([], [])
+        for artists, groups in zip(self.line_groups, lines):
+            for side, (artist, group) in enumerate(zip(artists, groups)):
+                if group:
+                    xyz = np.concatenate([np.vstack([g, _GAP]) for g in group])[:-1]
+                    artist.set_data_3d(xyz[:, 0], xyz[:, 1], xyz[:, 2])
+                    sides[side].append(artist)
+        return sides
+
+    def _spin_so_far(self, k: int) -> None:
+        """The red trace of the spin rate up to frame ``k``: pixels of the whole trace (:attr:`spin_drawn`) up to
+        two columns before ``t_k``'s (a column holds many times: a steep trace's later part would show), then
+        the steps from there to ``t_k`` as a line (:attr:`spin_done`)."""
+        mo, ga = self.mo, self.gauge
+        done = math.floor(float(ga.transData.transform((mo.t[k], 0.0))[0])) - 1  # columns < done are copied
+        left = int(ga.bbox.x0) - 2
+        if done > left:
+            self.canvas.restore_region(self.spin_drawn, bbox=(left, 0, done, self.canvas.get_width_height()[1]),
+                                       xy=(0, 0))
+        t_from = float(ga.transData.inverted().transform((done - 1.0, 0.0))[0])
+        i = max(int(np.searchsorted(mo.spin_t, t_from)) - 1, 0)
+        j = int(np.searchsorted(mo.spin_t, mo.t[k], side="right"))
+        self.spin_done.set_data(mo.spin_t[i:j], mo.spin_y[i:j])
 
     def _pil_font(self, text):
         from matplotlib import font_manager
@@ -632,18 +670,17 @@ class FrameRenderer:
         heading = math.atan2(d[1], d[0]) if np.any(d) else 0.0
         if abs(s) < 1e-3:
             self.arc.set_data_3d([], [], [])
-            self.arc_head.set_data_3d([], [], [])
             return
         ang = heading + np.sign(s) * np.linspace(0.0, 1.5 * math.pi * abs(s), 40)
         x = centre[0] + self.arc_r * np.cos(ang)
         y = centre[1] + self.arc_r * np.sin(ang)
         z = np.full_like(x, self.arc_z)
-        self.arc.set_data_3d(x, y, z)
         tip, d = ang[-1], np.sign(s)
         back = tip - d * 0.35
         hx = [centre[0] + 0.8 * self.arc_r * math.cos(back), x[-1], centre[0] + 1.2 * self.arc_r * math.cos(back)]
         hy = [centre[1] + 0.8 * self.arc_r * math.sin(back), y[-1], centre[1] + 1.2 * self.arc_r * math.sin(back)]
-        self.arc_head.set_data_3d(hx, hy, [self.arc_z] * 3)
+        # the arc and its head as one artist (NaN between them)
+        self.arc.set_data_3d(np.r_[x, np.nan, hx], np.r_[y, np.nan, hy], np.r_[z, np.nan, [self.arc_z] * 3])
 
     def close(self) -> None:
         self.fig.clear()

@@ -20,6 +20,12 @@ sin theta1`` for the body) over a short run started at tilts ``theta_max``,
 for the paper's ``D/ell = 1/2`` and two smaller ones.  The closed-form linear
 periods of both potentials are reported beside them.  It also runs the
 initial state of Fig. ``Numerical2``.
+
+Both models run at rtol 1e-8, atol 1e-11 (the tilts start at 1e-3 and up): the
+scene asks whether two models agree within 1 %, and against runs at rtol 1e-10,
+atol 1e-12 its reversal times moved by at most 2e-6 relative, its periods by
+2e-5 (the FFT's estimate on the steps), its relative errors by at most 2e-5
+(the closest to the 1 % line, -0.984 %, by 3e-7), at two thirds of the CPU.
 """
 from __future__ import annotations
 
@@ -28,7 +34,7 @@ import math
 import numpy as np
 
 from .base import RunSpec, Scene, SceneResult
-from .common import first_reversal, layout, require_success
+from .common import first_reversal, label_log_ticks, layout, require_success, run_to_first_reversal
 
 PARAMS = {"g": 1.0, "ell": 1.0, "L": 2.0, "D": 0.5, "alpha": math.pi / 4}
 
@@ -45,7 +51,7 @@ def rigid_state(theta1: float, theta2: float, phi_dot: float) -> dict:
 
 RUN = RunSpec(
     model="two_mode_rigid", fidelity="full", params=PARAMS, y0=rigid_state(1e-3, 1e-3, 0.1),
-    t_span=(0.0, 4000.0), method="DOP853", rtol=1e-10, atol=1e-12, n_eval=None,
+    t_span=(0.0, 4000.0), method="DOP853", rtol=1e-8, atol=1e-11, n_eval=None,
 )
 
 
@@ -87,17 +93,6 @@ def _crossings(t, s) -> np.ndarray:
     """Zero crossings of a sampled signal (linear interpolation between samples)."""
     i = np.nonzero(np.sign(s[:-1]) * np.sign(s[1:]) < 0)[0]
     return t[i] - s[i] * (t[i + 1] - t[i]) / (s[i + 1] - s[i])
-
-
-def run_to_first_reversal(spec: RunSpec, t_stop: float, scene: Scene):
-    """``spec`` run up to ``t_stop`` if that is inside its span and the run reverses by then, else over its whole
-    span.  An adaptive run takes the same steps whatever its end (but the last), so its first reversal is the
-    whole span's to the bit."""
-    if t_stop < spec.t_span[1]:
-        r = require_success(spec.with_(t_end=t_stop).simulate(), scene)
-        if len(r.reversal_times):
-            return r
-    return require_success(spec.simulate(), scene)
 
 
 def first_crossing_paper(spec: RunSpec, scene: Scene) -> float:
@@ -225,8 +220,10 @@ def draw(res: SceneResult, fig) -> None:
     a2.set_xlabel("tilt amplitude [rad]")
     a2.set_ylabel("period of theta1: paper / rigid - 1 [%]")
     a2.legend(fontsize=7)
+    for ax in (a1, a2):  # the scanned tilts only: matplotlib labels every minor tick of this short log axis
+        label_log_ticks(ax, sorted({r[1] for r in rows}))
     fig.suptitle("two-mode knife edge: the paper's model against the rigid body of section III", fontsize=10)
-    layout(fig, res.scene is SCENE, dict(left=0.0998, right=0.9566, bottom=0.1117, top=0.9202, wspace=0.2839))
+    layout(fig, res.scene is SCENE, dict(left=0.0998, right=0.9800, bottom=0.1011, top=0.9202, wspace=0.2086))
 
 
 SCENE = Scene(

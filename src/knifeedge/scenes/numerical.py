@@ -48,7 +48,7 @@ def compute(scene: Scene, progress) -> SceneResult:
     res.claim("(integration check) the reversal time is converged in the tolerance",
               bool(len(rev)) and shift < 1e-6 * rev[0],
               f"moves by {shift:.1e} at rtol {scene.run.rtol * 1e-2:g}; the energy changes by "
-              f"{relative_energy_drift(r):.1e} (relative) because the reduced equations conserve it only to their "
+              f"{res.numbers['relative_energy_change_from_truncation']:.1e} (relative) because the reduced equations conserve it only to their "
               "truncation order, not by integration error")
     res.data.update(t=r.t, theta=r["theta"], phi_dot=r["phi_dot"], amplitude=amp, reversal_times=rev)
     return res
