@@ -3,9 +3,11 @@
 ``attempt`` and ``dense`` (:class:`.erk.AdaptiveKernel`) are the IR that ``make derive`` wrote into
 ``generated/stages.py`` (``derivation/stage_ir.py``, which documents it).  :func:`bound_module` binds its
 right-hand side to the model's by renaming symbols with llvmlite (no text is written here): the model's
-``LLVM_IR``, linked in so that LLVM inlines it into every stage, or else numba's compiled ``rhs`` part.  LLVM
-alone compiles the result (:func:`compile_library`, 0.1-0.3 s), kept in one checked cache file per kernel and
-machine (:func:`cache_file`, :func:`write_parts`: a JSON line and numba's two blobs, no pickle).
+``LLVM_IR``, linked in so that LLVM inlines it into every stage, or else numba's compiled ``rhs`` part (a
+right-hand side that writes a function input first, ``simulate.driven_model``).  LLVM alone compiles the result
+(:func:`compile_library`: 0.1-0.3 s for the built-in models, 5-6 s for the Whipple bicycle's ~3,900 operations),
+kept in one checked cache file per kernel and machine (:func:`cache_file`, :func:`write_parts`: a JSON line and
+numba's two blobs, no pickle).
 """
 from __future__ import annotations
 
