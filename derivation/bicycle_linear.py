@@ -19,7 +19,8 @@ compilation costs about two minutes, a few evaluations in Python a fraction of a
 derivation takes about 25 s of CPU, so this is a target of its own and not part of ``make derive``;
 ``python -m knifeedge.derive.bicycle_linear --check`` (``make check-bicycle-linear``) derives into a temporary
 folder and fails with a diff if the checked-in module differs.  The module's ``INPUT_HASH`` is the SHA-256 of the
-model file and of this file (the tests compare it without deriving).
+model file, of this file and of the derivation's sources that make the Jacobian (:data:`PIPELINE`; the tests
+compare it without deriving).
 """
 from __future__ import annotations
 
@@ -78,10 +79,17 @@ print(json.dumps(out))
 """
 
 
+#: the derivation's sources that make the bicycle's generated Jacobian and its steady state, beside this file (a
+#: change in any of them may move the coefficients' last bits: the half-integer powers of kkt_emit did)
+PIPELINE = ("mechanics.py", "engine.py", "kkt_emit.py", "jacobian.py", "codegen.py", "steady.py", "emit.py")
+
+
 def input_hash(root: Path = ROOT) -> str:
-    """SHA-256 of the model file and of this module's source (what the coefficients are made from)."""
+    """SHA-256 of the model file, of this module's source and of the :data:`PIPELINE` sources (what the
+    coefficients are made from)."""
     h = hashlib.sha256()
-    for path in (root / MODEL_FILE, root / "derivation" / "bicycle_linear.py"):
+    for path in (root / MODEL_FILE, root / "derivation" / "bicycle_linear.py",
+                 *(root / "derivation" / name for name in PIPELINE)):
         h.update(path.read_bytes())
     return h.hexdigest()
 
@@ -128,7 +136,7 @@ def module_text(coeffs, residual: float, digest: str) -> str:
         const("A2", coeffs[2]),
         const("CHECK_SPEEDS", CHECK_SPEEDS),
         const("FIT_RESIDUAL", residual, "largest |A(v) - polynomial| at CHECK_SPEEDS (the polynomial is exact)"),
-        const("INPUT_HASH", digest, f"SHA-256 of {MODEL_FILE} and derivation/bicycle_linear.py"),
+        const("INPUT_HASH", digest, f"SHA-256 of {MODEL_FILE}, derivation/bicycle_linear.py and its PIPELINE"),
         const("SYMPY_VERSION", sp.__version__),
     )
     text = f'''"""whipple_bicycle: the lean/steer equations about straight running, A(v) = A0 + v A1 + v^2 A2.

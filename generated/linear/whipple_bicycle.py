@@ -3,7 +3,7 @@
 GENERATED FILE -- DO NOT EDIT BY HAND.  Run ``make bicycle-linear`` to regenerate.
 Produced by derivation/bicycle_linear.py from tests/models/whipple_bicycle.py: the lean/steer block of the derived bicycle's
 generated Jacobian at straight running at v = 0, 1, 2 m/s, at the benchmark's
-parameters (Meijaard et al. 2007, Table 1).  SymPy 1.14.0; input hash sha256:9c00c1c333fcbf60e3083854ba3897e38ccd067f2b8dc26a0ea0b45dbc67ffa7
+parameters (Meijaard et al. 2007, Table 1).  SymPy 1.14.0; input hash sha256:faeb741aee43b210a3fdef6c6f5704e23d0a19af3519c4902c7e041f530da011
 """
 #: the linear state: lean q2, steer q5 [rad], their rates [rad/s]
 STATE_NAMES = ('q2', 'q5', 'q2_dot', 'q5_dot')
@@ -16,8 +16,8 @@ A2 = ((0.0, 0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 0.0), (0.0, -0.8911977380590886, 0.0
 CHECK_SPEEDS = (5.0, 10.0)
 #: largest |A(v) - polynomial| at CHECK_SPEEDS (the polynomial is exact)
 FIT_RESIDUAL = 2.842170943040401e-14
-#: SHA-256 of tests/models/whipple_bicycle.py and derivation/bicycle_linear.py
-INPUT_HASH = '9c00c1c333fcbf60e3083854ba3897e38ccd067f2b8dc26a0ea0b45dbc67ffa7'
+#: SHA-256 of tests/models/whipple_bicycle.py, derivation/bicycle_linear.py and its PIPELINE
+INPUT_HASH = 'faeb741aee43b210a3fdef6c6f5704e23d0a19af3519c4902c7e041f530da011'
 SYMPY_VERSION = '1.14.0'
 #: SHA-256 of this file's bytes above this line; knifeedge.load refuses the module if they differ
-MODULE_SHA256 = '506f90c8f84225b268d5993895b2a2db0d6c6b96b1c7673b30b2da5e7167ad6e'
+MODULE_SHA256 = 'a80ebb5e76d6f95f379341537fde7521a8898c84e9a04206508dea4d12256cda'
