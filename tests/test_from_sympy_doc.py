@@ -5,8 +5,6 @@ The blocks marked ``python file=disc.py`` are, in order, ``tests/models/sympy_ro
 equations); the other blocks run in order in a fresh folder, and the numbers their
 comments state are checked.
 """
-import contextlib
-import io
 import re
 import shlex
 from pathlib import Path
@@ -41,9 +39,7 @@ def test_the_doc_runs_from_an_empty_folder(tmp_path, monkeypatch):
     assert main(shlex.split(commands[0])[1:]) == 0
     namespace: dict = {}
     for code in _blocks("python"):
-        out = io.StringIO()
-        with contextlib.redirect_stdout(out):
-            docs_blocks.run(code, str(DOC), namespace)
+        docs_blocks.run(code, str(DOC), namespace)
     assert (tmp_path / "disc.png").exists()
 
 
@@ -51,7 +47,5 @@ def test_the_docs_stability_chart_runs(tmp_path, monkeypatch):
     """Section 7's ``python chart`` block (the scene ``bicycle_stability``) as written, in an empty folder."""
     monkeypatch.chdir(tmp_path)
     (code,) = _blocks("python chart")
-    out = io.StringIO()
-    with contextlib.redirect_stdout(out):
-        docs_blocks.run(code, str(DOC), {})
+    docs_blocks.run(code, str(DOC), {})
     assert (tmp_path / "bicycle_stability.png").exists()

@@ -111,8 +111,6 @@ def test_the_disk_alone_rolls_with_the_textbook_constraints():
 def _run_doc_section(tmp_path, monkeypatch, tag: str, files: list) -> None:
     """docs/your-own-model.md's blocks ``python {tag}-file=NAME.py``, ``sh {tag}-example`` and
     ``python {tag}-example`` as written: the files, the commands, then the examples with their printed values."""
-    import contextlib
-    import io
     import re
     import shlex
 
@@ -129,9 +127,7 @@ def _run_doc_section(tmp_path, monkeypatch, tag: str, files: list) -> None:
         assert main(shlex.split(line)[1:]) == 0, line
     namespace: dict = {}
     for code in _blocks(f"python {tag}-example"):
-        out = io.StringIO()
-        with contextlib.redirect_stdout(out):
-            docs_blocks.run(code, "docs/your-own-model.md", namespace)
+        docs_blocks.run(code, "docs/your-own-model.md", namespace)
 
 
 def test_the_docs_show_the_example_file_as_it_is():

@@ -195,8 +195,6 @@ def test_disk_pendulum_conserves_energy(disk_pendulum):
 @pytest.mark.slow  # derives the two-body model (6-12 s) and compiles it: the slow tier
 def test_doc_section_on_two_bodies_runs(tmp_path, monkeypatch):
     """docs/your-own-model.md section 9 as written (tags ``bodies-file=``, ``bodies-example``)."""
-    import contextlib
-    import io
     import re
     import shlex
 
@@ -212,6 +210,4 @@ def test_doc_section_on_two_bodies_runs(tmp_path, monkeypatch):
         assert main(shlex.split(line)[1:]) == 0, line
     namespace: dict = {}
     for code in _blocks("python bodies-example"):
-        out = io.StringIO()
-        with contextlib.redirect_stdout(out):
-            docs_blocks.run(code, str(DOC), namespace)
+        docs_blocks.run(code, str(DOC), namespace)

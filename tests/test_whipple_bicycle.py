@@ -97,8 +97,6 @@ def test_weave_and_capsize_speeds(bicycle):
 def test_the_docs_bicycle_section_runs(bicycle, monkeypatch):
     """docs/from-sympy.md section 6 (blocks ``sh bicycle``, ``python bicycle``) as written, in the folder the
     fixture derived into with the command the doc gives."""
-    import contextlib
-    import io
     import re
     import shlex
 
@@ -109,9 +107,7 @@ def test_the_docs_bicycle_section_runs(bicycle, monkeypatch):
     assert shlex.split(command) == ["knifeedge", "derive", "tests/models/whipple_bicycle.py", "--out", "bikes"]
     monkeypatch.chdir(Path(bicycle.module.__file__).parent.parent)
     for code in re.findall(r"```python bicycle\n(.*?)```", doc, flags=re.S):
-        out = io.StringIO()
-        with contextlib.redirect_stdout(out):
-            docs_blocks.run(code, "docs/from-sympy.md", {})
+        docs_blocks.run(code, "docs/from-sympy.md", {})
 
 
 def _run(bicycle, v: float, lean_rate: float, t_end: float):

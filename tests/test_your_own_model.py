@@ -8,8 +8,6 @@ runs in order in one namespace, and the numbers its comments state are checked.
 """
 from __future__ import annotations
 
-import contextlib
-import io
 import re
 import shlex
 from pathlib import Path
@@ -55,7 +53,5 @@ def test_the_doc_runs_from_an_empty_folder(tmp_path, monkeypatch):
 
     namespace: dict = {}
     for code in _blocks("python"):  # in order: later blocks use earlier names
-        out = io.StringIO()
-        with contextlib.redirect_stdout(out):
-            docs_blocks.run(code, str(DOC), namespace)
+        docs_blocks.run(code, str(DOC), namespace)
     assert (tmp_path / "rolling_disk.png").exists()

@@ -10,8 +10,6 @@ a hand-written ODE, the exact pendulum period).
 """
 from __future__ import annotations
 
-import contextlib
-import io
 import re
 import shlex
 
@@ -43,6 +41,4 @@ def test_sections_on_time_constraints_and_rigid_bodies_run(tmp_path, monkeypatch
         assert "knifeedge derive" in header and "make derive" not in header, header
     namespace: dict = {}
     for code in _blocks("python example"):
-        out = io.StringIO()
-        with contextlib.redirect_stdout(out):
-            docs_blocks.run(code, str(DOC), namespace)
+        docs_blocks.run(code, str(DOC), namespace)
