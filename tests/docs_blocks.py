@@ -29,14 +29,14 @@ def head(comment: str) -> str:
             quote = None if c == quote else quote
         elif c in "'\"":
             quote = c
-        elif c in "([{" and not (c == "(" and i and comment[i - 1] == " " and comment[i + 1:i + 2].isalpha()):
+        elif depth == 0 and c == "(" and comment[i - 1:i] == " " and comment[i + 1:i + 2].isalpha():
+            return comment[:i - 1]
+        elif depth == 0 and comment.startswith(": ", i):
+            return comment[:i]
+        elif c in "([{":
             depth += 1
         elif c in ")]}":
             depth -= 1
-        elif depth == 0 and comment.startswith(": ", i):
-            return comment[:i]
-        elif depth == 0 and c == "(" and comment[i - 1:i] == " " and comment[i + 1:i + 2].isalpha():
-            return comment[:i - 1]
     return comment
 
 
@@ -114,8 +114,8 @@ def run(code: str, filename: str, namespace: dict | None = None, notes: bool = F
             buffer = io.StringIO()
             print(*args, **kwargs, file=buffer)
             printed, wanted = buffer.getvalue(), expected[line]
-            said = wanted[min(calls[line], len(wanted) - 1)] if len(wanted) == 1 else (
-                wanted[calls[line]] if calls[line] < len(wanted) else None)
+            # one comment states every call's output; comment lines after a loop state one call's each
+            said = wanted[0] if len(wanted) == 1 else (wanted[calls[line]] if calls[line] < len(wanted) else None)
             calls[line] += 1
             assert said is not None and matches(said, printed), (
                 f"{filename}: the block's line {line} prints {printed.strip()!r}; its comment says {said!r}")
