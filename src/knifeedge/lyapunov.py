@@ -26,7 +26,10 @@ from .magnus import GAUSS_NODES
 from .models import Model
 from .stability import jacobian
 
-@njit(cache=True)
+#: the loops' helpers below are inlined into the loops by numba (``inline="always"``): compiled as functions of
+#: their own, each costs a first run 0.1-0.4 s of CPU (numba's pipeline, LLVM's vectorized copy, the cache entry);
+#: the same operations in the same order, the same bits (docs/performance.md, "the Lyapunov loop's compile")
+@njit(cache=True, inline="always")
 def _orthonormalize(Q, sums):
     """Modified Gram-Schmidt in place; adds log |R_jj| to ``sums``."""
     n, k = Q.shape
@@ -46,7 +49,7 @@ def _orthonormalize(Q, sums):
             Q[m, j] /= norm
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _project_out(G, Q):
     """Remove from the columns of ``Q`` their components along the rows of ``G`` (orthonormalized here)."""
     m, n = G.shape
@@ -71,14 +74,14 @@ def _project_out(G, Q):
                 Q[c, j] -= r * G[i, c]
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _shifted(out, x, c, dx):
     """``out = x + c dx`` (vectors)."""
     for i in range(x.size):
         out[i] = x[i] + c * dx[i]
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _running(hist, b, sums, t):
     """Row ``b`` of the history: the running estimates ``sums / t`` (a loop: the array expression's assignment
     compiles numba's formatting of its shape error, half the loop's compile time)."""
@@ -86,7 +89,7 @@ def _running(hist, b, sums, t):
         hist[b, j] = sums[j] / t
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _rk4_update(x, h, d1, d2, d3, d4):
     """The classical Runge-Kutta step ``x += h/6 (d1 + 2 d2 + 2 d3 + d4)`` in place (vectors)."""
     for i in range(x.size):
@@ -103,21 +106,18 @@ _JVP = types.FunctionType(types.none(_VECTOR, _VECTOR, _MATRIX, _VECTOR, _MATRIX
 #: ``jvp1_into(s, p, _v, ds, _dv)``: the product of one vector (the largest exponent's loop)
 _JVP1 = types.FunctionType(types.none(_VECTOR, _VECTOR, _VECTOR, _VECTOR, _VECTOR))
 _MATRIX_OF_STATE = types.FunctionType(_MATRIX(_VECTOR, _VECTOR))
-_SIGNATURE = (_JVP, _MATRIX_OF_STATE, _VECTOR, _MATRIX, _VECTOR, types.float64, types.int64, types.int64)
+_SIGNATURE = (_JVP, _MATRIX_OF_STATE, _VECTOR, _MATRIX, _VECTOR, types.float64, types.int64, types.int64, _VECTOR,
+              _MATRIX, _VECTOR, _MATRIX, types.float64[:, :, ::1])
 
 
 @njit(cache=True)
-def _benettin(jvp_into, gradients, y, Q, p, h, n_blocks, steps_per_block):
+def _benettin(jvp_into, gradients, y, Q, p, h, n_blocks, steps_per_block, sums, hist, hist_t, w, W):
     """RK4 on the state ``y`` and the tangent vectors ``Q`` (n x k) for ``n_blocks`` blocks of ``steps_per_block``
-    steps of ``h``, re-orthonormalized after each block; returns the final y, Q, the sums of log |R_jj|, and the
-    times and running estimates of the re-orthonormalizations (from time 0)."""
-    n, k = Q.shape
-    sums = np.zeros(k)
-    hist = np.empty((n_blocks, k))
-    hist_t = np.empty(n_blocks)
-    k1, k2, k3, k4, yt = np.empty(n), np.empty(n), np.empty(n), np.empty(n), np.empty(n)
-    K1, K2, K3, K4, Qt = (np.empty((n, k)), np.empty((n, k)), np.empty((n, k)), np.empty((n, k)),
-                          np.empty((n, k)))
+    steps of ``h``, re-orthonormalized after each block, into ``sums`` (zeros: the sums of log |R_jj|), ``hist_t``
+    and ``hist`` (the times and running estimates of the re-orthonormalizations, from time 0); ``w`` (5, n) and
+    ``W`` (5, n, k): the stages' work space (allocated by the caller: numba compiles no allocation here)."""
+    k1, k2, k3, k4, yt = w[0], w[1], w[2], w[3], w[4]
+    K1, K2, K3, K4, Qt = W[0], W[1], W[2], W[3], W[4]
     # the tangent vectors as flat views, so that one loop over a vector serves the state and the tangents
     q, q1, q2, q3, q4, qt = Q.ravel(), K1.ravel(), K2.ravel(), K3.ravel(), K4.ravel(), Qt.ravel()
     for b in range(n_blocks):
@@ -139,7 +139,6 @@ def _benettin(jvp_into, gradients, y, Q, p, h, n_blocks, steps_per_block):
         _orthonormalize(Q, sums)
         hist_t[b] = (b + 1) * steps_per_block * h
         _running(hist, b, sums, hist_t[b])
-    return y, Q, sums, hist_t, hist
 
 
 def _kernel():
@@ -608,7 +607,10 @@ def lyapunov(m: Model, y0, p, t_end: float, k: int | None = None, h: float | Non
     steps_per_block = max(1, round(tau / h))
     n_blocks = max(1, int(round(span / (steps_per_block * h))))
     h = span / (n_blocks * steps_per_block)
-    y, Q, sums, hist_t, hist = _kernel()(*functions, y, Q, p, h, n_blocks, steps_per_block)
+    n, k = Q.shape
+    sums, hist, hist_t = np.zeros(k), np.empty((n_blocks, k)), np.empty(n_blocks)
+    _kernel()(*functions, y, Q, p, h, n_blocks, steps_per_block, sums, hist, hist_t, np.empty((5, n)),
+              np.empty((5, n, k)))
     return _result(y, hist_t + float(t0), hist, h, steps_per_block * h, n_blocks * steps_per_block, "RK4")
 
 
