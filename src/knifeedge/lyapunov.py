@@ -106,34 +106,33 @@ _JVP = types.FunctionType(types.none(_VECTOR, _VECTOR, _MATRIX, _VECTOR, _MATRIX
 #: ``jvp1_into(s, p, _v, ds, _dv)``: the product of one vector (the largest exponent's loop)
 _JVP1 = types.FunctionType(types.none(_VECTOR, _VECTOR, _VECTOR, _VECTOR, _VECTOR))
 _MATRIX_OF_STATE = types.FunctionType(_MATRIX(_VECTOR, _VECTOR))
-_SIGNATURE = (_JVP, _MATRIX_OF_STATE, _VECTOR, _MATRIX, _VECTOR, types.float64, types.int64, types.int64, _VECTOR,
-              _MATRIX, _VECTOR, _MATRIX, types.float64[:, :, ::1])
+_SIGNATURE = (_JVP, _MATRIX_OF_STATE, _MATRIX, types.int64, _VECTOR, types.float64, types.int64, types.int64, _VECTOR,
+              _MATRIX, _VECTOR)
 
 
 @njit(cache=True)
-def _benettin(jvp_into, gradients, y, Q, p, h, n_blocks, steps_per_block, sums, hist, hist_t, w, W):
-    """RK4 on the state ``y`` and the tangent vectors ``Q`` (n x k) for ``n_blocks`` blocks of ``steps_per_block``
-    steps of ``h``, re-orthonormalized after each block, into ``sums`` (zeros: the sums of log |R_jj|), ``hist_t``
-    and ``hist`` (the times and running estimates of the re-orthonormalizations, from time 0); ``w`` (5, n) and
-    ``W`` (5, n, k): the stages' work space (allocated by the caller: numba compiles no allocation here)."""
-    k1, k2, k3, k4, yt = w[0], w[1], w[2], w[3], w[4]
-    K1, K2, K3, K4, Qt = W[0], W[1], W[2], W[3], W[4]
-    # the tangent vectors as flat views, so that one loop over a vector serves the state and the tangents
-    q, q1, q2, q3, q4, qt = Q.ravel(), K1.ravel(), K2.ravel(), K3.ravel(), K4.ravel(), Qt.ravel()
+def _benettin(jvp_into, gradients, z, n, p, h, n_blocks, steps_per_block, sums, hist, hist_t):
+    """RK4 on the state and ``k`` tangent vectors for ``n_blocks`` blocks of ``steps_per_block`` steps of ``h``,
+    re-orthonormalized after each block, into ``sums`` (zeros: the sums of log |R_jj|), ``hist_t`` and ``hist``
+    (the times and running estimates of the re-orthonormalizations, from time 0).  ``z`` (6, n (k + 1)): row 0
+    the state (``n`` values) and the tangent vectors (the n x k matrix, row by row), rows 1-4 the four stages'
+    derivatives of them, row 5 a stage's point: one loop over a row serves the state and the tangents, and the
+    caller allocates the work space (numba compiles no allocation here)."""
+    k = sums.size
+    x, d1, d2, d3, d4, xt = z[0], z[1], z[2], z[3], z[4], z[5]
+    y, Q, yt, Qt = x[:n], x[n:].reshape((n, k)), xt[:n], xt[n:].reshape((n, k))
+    k1, k2, k3, k4 = d1[:n], d2[:n], d3[:n], d4[:n]
+    K1, K2, K3, K4 = d1[n:].reshape((n, k)), d2[n:].reshape((n, k)), d3[n:].reshape((n, k)), d4[n:].reshape((n, k))
     for b in range(n_blocks):
         for _ in range(steps_per_block):
             jvp_into(y, p, Q, k1, K1)
-            _shifted(yt, y, 0.5 * h, k1)
-            _shifted(qt, q, 0.5 * h, q1)
+            _shifted(xt, x, 0.5 * h, d1)
             jvp_into(yt, p, Qt, k2, K2)
-            _shifted(yt, y, 0.5 * h, k2)
-            _shifted(qt, q, 0.5 * h, q2)
+            _shifted(xt, x, 0.5 * h, d2)
             jvp_into(yt, p, Qt, k3, K3)
-            _shifted(yt, y, h, k3)
-            _shifted(qt, q, h, q3)
+            _shifted(xt, x, h, d3)
             jvp_into(yt, p, Qt, k4, K4)
-            _rk4_update(y, h, k1, k2, k3, k4)
-            _rk4_update(q, h, q1, q2, q3, q4)
+            _rk4_update(x, h, d1, d2, d3, d4)
         # round-off leaks into the invariants' directions (rate 0), which would outgrow decaying directions
         _project_out(gradients(y, p), Q)
         _orthonormalize(Q, sums)
@@ -607,10 +606,11 @@ def lyapunov(m: Model, y0, p, t_end: float, k: int | None = None, h: float | Non
     steps_per_block = max(1, round(tau / h))
     n_blocks = max(1, int(round(span / (steps_per_block * h))))
     h = span / (n_blocks * steps_per_block)
-    n, k = Q.shape
+    (n, k), z = Q.shape, np.empty((6, Q.size + y.size))
+    z[0, :n], z[0, n:] = y, Q.ravel()
     sums, hist, hist_t = np.zeros(k), np.empty((n_blocks, k)), np.empty(n_blocks)
-    _kernel()(*functions, y, Q, p, h, n_blocks, steps_per_block, sums, hist, hist_t, np.empty((5, n)),
-              np.empty((5, n, k)))
+    _kernel()(*functions, z, n, p, h, n_blocks, steps_per_block, sums, hist, hist_t)
+    y = z[0, :n].copy()
     return _result(y, hist_t + float(t0), hist, h, steps_per_block * h, n_blocks * steps_per_block, "RK4")
 
 

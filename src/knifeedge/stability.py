@@ -101,7 +101,15 @@ def steady_state(m: Model, p, family: str, value: float) -> np.ndarray:
 
 def _steady(m: Model, p: np.ndarray, k: int, value: float) -> np.ndarray:
     """:func:`steady_state` of the family of index ``k`` with ``p`` validated."""
-    return m.module.steady_state(k, float(value), p)[0].copy()
+    return _steady_rows(m, k, value, p)[0].copy()
+
+
+def _steady_rows(m: Model, k: int, value: float, p: np.ndarray) -> np.ndarray:
+    """The generated ``steady_state(k, value, p)`` (the state and the tangent of family ``k``) as plain Python
+    (``py_func``): a few assignments, called a few hundred times at most, cost less so than numba's compile of
+    them on a first run (0.13-0.26 s of CPU; docs/performance.md, "the compiles other than the DOP853 driver")."""
+    f = m.module.steady_state
+    return getattr(f, "py_func", f)(k, float(value), p)
 
 
 def _through(m: Model, y: np.ndarray, p: np.ndarray):
@@ -110,7 +118,7 @@ def _through(m: Model, y: np.ndarray, p: np.ndarray):
         if not info["value_state"]:
             continue
         value = float(y[m.closed_state_names.index(info["value_state"])])
-        if np.allclose(m.module.steady_state(k, value, p)[0], y, rtol=1e-12, atol=1e-12):
+        if np.allclose(_steady_rows(m, k, value, p)[0], y, rtol=1e-12, atol=1e-12):
             return name, value
     return None, None
 
@@ -187,7 +195,7 @@ def _frame(m: Model, y: np.ndarray, p: np.ndarray, family: str | None, value: fl
     N, _ = _basis(G, n)
     t, rows = None, G
     if family is not None:
-        t = m.module.steady_state(_family_index(m, family), value if value is not None else 0.0, p)[1]
+        t = _steady_rows(m, _family_index(m, family), value if value is not None else 0.0, p)[1]
         t = t - N @ (N.T @ t)
         t = t / np.linalg.norm(t)
         rows = np.vstack([G, t])
