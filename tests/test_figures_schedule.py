@@ -6,11 +6,13 @@ import threading
 import time
 
 from knifeedge import figures
+from knifeedge.scenes import get_scene
 
 
-def _scheduled(monkeypatch, tmp_path, order, seconds=None):
+def _scheduled(monkeypatch, tmp_path, order, seconds=None, scene_seconds=None):
     """Run ``figures._schedule`` on threads with every compilation and scene replaced by a logged stub
-    (``seconds(key)``: how long the compilation ``key`` takes; default the first 0.5 s, the others 0.01 s)."""
+    (``seconds(key)``: how long the compilation ``key`` takes; default the first 0.5 s, the others 0.01 s;
+    ``scene_seconds``: how long each scene and animation takes, its end logged too; default no time, no end)."""
     log, lock = [], threading.Lock()
 
     def record(*event):
@@ -32,6 +34,9 @@ def _scheduled(monkeypatch, tmp_path, order, seconds=None):
     def scene(kind):
         def task(name, out):
             record(kind, name)
+            if scene_seconds is not None:
+                time.sleep(scene_seconds)
+                record(f"{kind} end", name)
             return {"name": name, "ok": True, "seconds": 0.0}
         return task
 
@@ -145,3 +150,17 @@ def test_no_integrator_compiles_beside_the_first_one_when_a_lyapunov_loop_ends_f
     loops = [e for e in warmed if e[2][0] == "lyapunov"]
     assert len(loops) == 2 and all(e[0] < first_end for e in loops)  # both loops beside the first integrator
     assert any(e[1] == "parts" and e[0] < first_end for e in log)  # then the next models' parts
+
+
+def test_two_scenes_that_compile_one_function_do_not_run_at_once(monkeypatch, tmp_path):
+    """``celt`` and ``celt_schoemer`` both call the celt's ``energy`` and ``power_dissipated`` compiled (their
+    energy balance over thousands of samples): run at once, both processes compiled them (0.3-0.5 s of CPU);
+    one after the other, the second loads them from numba's cache.  The other worker runs other tasks meanwhile."""
+    assert set(get_scene("celt").compiles) & set(get_scene("celt_schoemer").compiles)
+    log = _scheduled(monkeypatch, tmp_path, ["celt", "celt_schoemer", "knife_edge_vs_celt", "ellipses"],
+                     scene_seconds=0.1)
+    span = {n: (next(e[0] for e in log if e[1] == "scene" and e[2] == n),
+                next(e[0] for e in log if e[1] == "scene end" and e[2] == n)) for n in ("celt", "celt_schoemer")}
+    first, second = sorted(span.values())
+    assert second[0] >= first[1]
+    assert any(first[0] < e[0] < first[1] for e in log if e[1] in ("scene", "warm start"))  # the other worker works

@@ -185,7 +185,10 @@ def _schedule(pool, workers: int, order: list, out: Path, report, progress, t0: 
     compiled, otherwise the next compilation, in the order of the first task
     that needs it.  A scene that needs nothing compiled waits for the first
     compilation to end: started first, it would hold a process while the
-    compilations that every other scene waits for could run.
+    compilations that every other scene waits for could run.  Two scenes that
+    call one generated function compiled (their ``compiles``) do not run at
+    once: the second loads what the first compiled, instead of compiling it
+    too in the other process.
     """
     tasks = [("scene", n) for n in order] + [("animation", n) for n in order if n in ANIMATIONS]
     tasks.sort(key=lambda t: _ORDER.index(t) if t in _ORDER else len(_ORDER))  # heaviest first
@@ -199,11 +202,14 @@ def _schedule(pool, workers: int, order: list, out: Path, report, progress, t0: 
     compiled: set = set()
     parted: set = set()  # integrators whose model parts were compiled, or are, while the first one compiles
     scenes = list(needs)
+    calls = {t: set(get_scene(t[1]).compiles) if t[0] == "scene" else set() for t in tasks}
     running: dict = {}
     n_warm = len(warms)
     while scenes or running:
         while len(running) < workers:
-            ready = [n for n in scenes if needs[n] <= compiled and (needs[n] or compiled or not n_warm)]
+            compiling = set().union(*(calls.get(t, set()) for t in running.values()))
+            ready = [n for n in scenes if needs[n] <= compiled and (needs[n] or compiled or not n_warm)
+                     and not calls[n] & compiling]
             if ready:
                 scenes.remove(ready[0])
                 task = render_scene if ready[0][0] == "scene" else render_animation

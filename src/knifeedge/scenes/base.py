@@ -116,6 +116,10 @@ class Scene:
         linearization (its ``jvp_into``) the scene computes (``knifeedge
         figures`` compiles the variational loop and the model's ``jvp_into``
         once, before the scenes that need them).
+    compiles : every ``(model, fidelity, function)`` of a generated module
+        that the scene calls compiled, other than its integrators and
+        Lyapunov loops (``knifeedge figures`` runs two scenes that share
+        one one after the other: the second loads what the first compiled).
     """
 
     name: str
@@ -131,6 +135,7 @@ class Scene:
     figsize: tuple[float, float] = (7.5, 5.5)
     uses: tuple | None = None
     lyapunov: tuple = ()
+    compiles: tuple = ()
 
     def __post_init__(self):
         if self.uses is None:

@@ -16,6 +16,8 @@ import numpy as np
 from .base import RunSpec, Scene, SceneResult
 from .common import claim_energy_conserved, layout, require_success
 
+#: the generated functions :func:`energy_balance` calls compiled (its runs' thousands of samples)
+BALANCE_COMPILES = (("celt", "full", "energy"), ("celt", "full", "power_dissipated"))
 #: Kane & Levinson's initial tilts (about the body x and y axes)
 TILT = math.radians(0.5)
 N0 = (math.cos(TILT) * math.sin(TILT), math.sin(TILT), math.cos(TILT) * math.cos(TILT))
@@ -144,4 +146,5 @@ SCENE = Scene(
     draw=draw,
     settings={"spins": (5.0, -5.0), "sigmas": (0.0, 1e-4), "episode_gap": 1.0},
     figsize=(7.5, 6.0),
+    compiles=BALANCE_COMPILES,
 )

@@ -9,7 +9,7 @@ from __future__ import annotations
 import numpy as np
 
 from .base import RunSpec, Scene, SceneResult
-from .celt import energy_balance, episodes, initial_state, max_tilt_deg, preset
+from .celt import BALANCE_COMPILES, energy_balance, episodes, initial_state, max_tilt_deg, preset
 from .common import claim_energy_conserved, layout, require_success
 
 RUN = RunSpec(
@@ -71,4 +71,5 @@ SCENE = Scene(
     compute=compute,
     draw=draw,
     settings={"episode_gap": 1.0},
+    compiles=BALANCE_COMPILES,
 )
