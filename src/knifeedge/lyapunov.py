@@ -26,10 +26,7 @@ from .magnus import GAUSS_NODES
 from .models import Model
 from .stability import jacobian
 
-#: the loops' helpers below are inlined into the loops by numba (``inline="always"``): compiled as functions of
-#: their own, each costs a first run 0.1-0.4 s of CPU (numba's pipeline, LLVM's vectorized copy, the cache entry);
-#: the same operations in the same order, the same bits (docs/performance.md, "the Lyapunov loop's compile")
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _orthonormalize(Q, sums):
     """Modified Gram-Schmidt in place; adds log |R_jj| to ``sums``."""
     n, k = Q.shape
@@ -49,7 +46,7 @@ def _orthonormalize(Q, sums):
             Q[m, j] /= norm
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _project_out(G, Q):
     """Remove from the columns of ``Q`` their components along the rows of ``G`` (orthonormalized here)."""
     m, n = G.shape
@@ -74,6 +71,10 @@ def _project_out(G, Q):
                 Q[c, j] -= r * G[i, c]
 
 
+#: the loops' vector helpers below are inlined into the loops by numba (``inline="always"``): compiled as functions
+#: of their own, each cost a first run 0.1-0.2 s of CPU (numba's pipeline, LLVM's vectorized copy, the cache entry);
+#: the same operations in the same order, the same bits.  ``_project_out`` and ``_orthonormalize`` stay functions:
+#: inlined, the Magnus loop took 0.5-0.9 s longer to compile (docs/performance.md, "compiles other than the driver")
 @njit(cache=True, inline="always")
 def _shifted(out, x, c, dx):
     """``out = x + c dx`` (vectors)."""
