@@ -1,6 +1,6 @@
 """Where a cold compile of one of the two long loops goes: CPU seconds by numba pass, LLVM and compiled function.
 
-``python -m benchmarks.compile_profile [driver|benettin|adaptive ...] [--repeats 3]``
+``python -m benchmarks.compile_profile [driver|benettin|adaptive|warmups ...] [--repeats 3]``
 
 Each repeat is a fresh process with empty caches (``NUMBA_CACHE_DIR``, ``KNIFEEDGE_CACHE_DIR``):
 
@@ -9,7 +9,9 @@ Each repeat is a fresh process with empty caches (``NUMBA_CACHE_DIR``, ``KNIFEED
 * ``benettin``: the fixed-step Lyapunov loop (``lyapunov._benettin``, what ``celt_chaos`` and ``predictability``
   run) for its first-class function types, then ``figures.warm_lyapunov`` of the two-mode model (its
   ``jvp_into`` and ``invariant_gradients``: the task ``knifeedge figures`` runs);
-* ``adaptive``: the largest exponent's DOP853 loop (``lyapunov._benettin_adaptive``) alone.
+* ``adaptive``: the largest exponent's DOP853 loop (``lyapunov._benettin_adaptive``) alone;
+* ``warmups``: ``benettin``, then ``figures.warm_lyapunov`` of the celt (its ``jvp_into`` and
+  ``invariant_gradients``): all that ``knifeedge figures`` compiles for its Lyapunov scenes.
 
 Printed per repeat: the process's CPU for the imports, for numba's first compile in the process (a one-line
 function), for the model's parts (``driver``), for the target; then, from numba's events (``numba:compile``, ``numba:run_pass``,
@@ -82,13 +84,15 @@ def _child(target: str) -> dict:
         figures.warm_parts("single_mode", "reduced", True, "DOP853")
         c_parts = cpu()  # the model's parts are not the driver's
         figures.warm("single_mode", "reduced", True, "DOP853")
-    elif target == "benettin":
+    elif target in ("benettin", "warmups"):
         importlib.import_module("knifeedge.lyapunov")._kernel()
         figures.warm_lyapunov("two_mode", "reduced")
+        if target == "warmups":
+            figures.warm_lyapunov("celt", "full")
     elif target == "adaptive":
         importlib.import_module("knifeedge.lyapunov")._adaptive_kernel()
     else:
-        raise ValueError(f"`target` must be driver, benettin or adaptive, got {target!r}")
+        raise ValueError(f"`target` must be driver, benettin, adaptive or warmups, got {target!r}")
     top = lambda d, n: sorted(((round(v, 2), k) for k, v in d.items() if v >= 0.05), reverse=True)[:n]  # noqa: E731
     return {"imports": round(c_imports - c0, 2), "first_compile": round(c_first - c_imports, 2),
             "parts": round(c_parts - c_first, 2), "target": round(cpu() - c_parts, 2), "llvm": round(profile.llvm, 2), "passes": top(profile.passes, 6),
