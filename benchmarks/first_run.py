@@ -31,10 +31,16 @@ and what is compiled twice.
 
 ``--as-user COMMIT [COMMIT ...]`` times ``knifeedge figures`` as a user's first
 run of each commit: a ``git archive`` of it, ``pip install --no-compile`` into
-a fresh virtual environment, copied afresh for every run with no bytecode and
-``PYTHONDONTWRITEBYTECODE`` unset (the run writes it, as on a new machine),
-every cache empty; the commits interleaved, ``--repeats`` times; each cold run
-is followed by a warm one with its caches.
+a fresh virtual environment (as the README's demo command), copied afresh for
+every run with no bytecode and ``PYTHONDONTWRITEBYTECODE`` unset (the run
+writes it, as on a new machine), every cache empty; the commits interleaved,
+``--repeats`` times; each cold run is followed by a warm one with its caches.
+With ``--byte-compiled`` the install is pip's default (bytecode written at
+install, as the README's test command), kept in the copies.  With
+``--shared-precompiled`` the cold run's caches start with the package's own
+compiled code that serves every model (the adaptive integrators, the event
+helpers, the Lyapunov loops: what is not named after a model), taken from a
+cold run made first: what shipping that code with the package would give.
 
 ``--test-command`` also times the README's test command (the set-up line that
 ends in ``pytest``: a virtual environment, the install, the tests) from a fresh
@@ -251,8 +257,9 @@ def measure_timeline(work: Path) -> dict:
 ROOT = Path(__file__).resolve().parents[1]
 
 
-def _user_venv(commit: str, work: Path) -> Path:
-    """A virtual environment with ``commit`` installed as the README says (``pip install --no-compile``)."""
+def _user_venv(commit: str, work: Path, byte_compiled: bool) -> Path:
+    """A virtual environment with ``commit`` installed as the README's demo command says (``pip install
+    --no-compile``), or with pip's default (``byte_compiled``: bytecode written at install)."""
     import shutil
 
     src, venv = work / f"src-{commit}", work / f"venv-{commit}"
@@ -260,28 +267,60 @@ def _user_venv(commit: str, work: Path) -> Path:
     archive = subprocess.run(["git", "-C", str(ROOT), "archive", commit], check=True, capture_output=True).stdout
     subprocess.run(["tar", "-x", "-C", str(src)], input=archive, check=True)
     subprocess.run([getattr(sys, "_base_executable", sys.executable), "-m", "venv", str(venv)], check=True)
-    subprocess.run([str(venv / "bin" / "python"), "-m", "pip", "install", "-q", "--no-compile", str(src)], check=True)
+    flags = [] if byte_compiled else ["--no-compile"]
+    subprocess.run([str(venv / "bin" / "python"), "-m", "pip", "install", "-q", *flags, str(src)], check=True)
     shutil.rmtree(src)
     return venv
 
 
-def measure_as_user(commits: list, repeats: int, work: Path) -> dict:
+def _shared_caches(caches: Path, into: Path) -> None:
+    """Copy from the cache folders of a cold run (``_cold_env(caches)``) what serves every model into ``into``:
+    the kernels named after a method alone (the adaptive integrators, ``erk-<method>-<stamp>``, not
+    ``erk-<method>-<model>-...``) and numba's cache of the package's own functions (not ``generated_*``)."""
+    import re
+    import shutil
+
+    kernels = into / "kernels-cache" / "kernels"
+    kernels.mkdir(parents=True, mode=0o700)
+    (into / "kernels-cache").chmod(0o700)
+    for f in (caches / "kernels-cache" / "kernels").iterdir():
+        if re.fullmatch(r"erk-[A-Za-z0-9_]+-[0-9a-f]{20}\.py\d+(\.\d+\.nbc|\.nbi)", f.name):
+            shutil.copy2(f, kernels / f.name)
+    for folder in (caches / "numba-cache").iterdir():
+        if not folder.name.startswith("generated_"):
+            shutil.copytree(folder, into / "numba-cache" / folder.name)
+
+
+def measure_as_user(commits: list, repeats: int, work: Path, byte_compiled: bool = False,
+                    shared_precompiled: bool = False) -> dict:
     """``knifeedge figures`` as a user's first run of each of ``commits`` (interleaved), then warm."""
     import shutil
 
-    templates = {c: _user_venv(c, work) for c in commits}
+    templates = {c: _user_venv(c, work, byte_compiled) for c in commits}
+
+    def figures(c: str, run: Path, seed: Path | None = None) -> dict:
+        venv = run / "venv"
+        shutil.copytree(templates[c], venv, symlinks=True)
+        if not byte_compiled:
+            for cache in list(venv.rglob("__pycache__")):
+                shutil.rmtree(cache)
+        if seed is not None:
+            _shared_caches(seed, run)
+        env = {**_cold_env(run), "XDG_CACHE_HOME": str(run / "xdg")}
+        env.pop("PYTHONDONTWRITEBYTECODE", None)
+        command = [str(venv / "bin" / "python"), "-m", "knifeedge", "figures", "--out", str(run / "figs")]
+        return {"cold": _run(command, env, run), "warm": _run(command, env, run)}
+
+    seeds = {}
+    if shared_precompiled:
+        for c in commits:
+            seeds[c] = Path(tempfile.mkdtemp(prefix=f"seed-{c}-", dir=work))
+            figures(c, seeds[c])
     rows = {c: [] for c in commits}
     for k in range(repeats):
         for c in commits:
             run = Path(tempfile.mkdtemp(prefix=f"user-{c}-", dir=work))
-            venv = run / "venv"
-            shutil.copytree(templates[c], venv, symlinks=True)
-            for cache in list(venv.rglob("__pycache__")):
-                shutil.rmtree(cache)
-            env = {**_cold_env(run), "XDG_CACHE_HOME": str(run / "xdg")}
-            env.pop("PYTHONDONTWRITEBYTECODE", None)
-            command = [str(venv / "bin" / "python"), "-m", "knifeedge", "figures", "--out", str(run / "figs")]
-            rows[c].append({"cold": _run(command, env, run), "warm": _run(command, env, run)})
+            rows[c].append(figures(c, run, seeds.get(c)))
             print(f"  {c} {k + 1}/{repeats}: {rows[c][-1]}", flush=True)
             shutil.rmtree(run)
     return rows
@@ -325,6 +364,10 @@ def main(argv=None) -> int:
                     help="also run a cold `knifeedge figures` with each task's process, times and CPU recorded")
     ap.add_argument("--as-user", nargs="+", metavar="COMMIT",
                     help="only time `knifeedge figures` as a user's first run of each commit (interleaved), then warm")
+    ap.add_argument("--byte-compiled", action="store_true",
+                    help="with --as-user: install with pip's default (bytecode written at install)")
+    ap.add_argument("--shared-precompiled", action="store_true",
+                    help="with --as-user: start each cold run with the compiled code that serves every model")
     ap.add_argument("--test-command", action="store_true",
                     help="also time the README's test command from a fresh clone (minutes per repeat)")
     args = ap.parse_args(argv)
@@ -333,7 +376,8 @@ def main(argv=None) -> int:
         work = Path(tmp)
         if args.as_user:
             print("knifeedge figures as a user's first run", flush=True)
-            results = {"cpus": os.cpu_count(), "as_user": measure_as_user(args.as_user, args.repeats, work)}
+            results = {"cpus": os.cpu_count(), "as_user": measure_as_user(args.as_user, args.repeats, work,
+                                                                          args.byte_compiled, args.shared_precompiled)}
             print(json.dumps(results))
             return 0
         print("knifeedge demo", flush=True)
