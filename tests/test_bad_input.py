@@ -305,6 +305,15 @@ def test_reversal_time_refuses_bad_input(reduced2, kw, exc, text):
     assert text in str(info.value)
 
 
+@pytest.mark.parametrize("fidelity", ["full", "amplitude"])
+def test_reversal_time_refuses_a_model_without_the_knife_edges_theory(fidelity):
+    """The celt has amplitude equations but not the knife edges' modes (no growth and drive rates): a clear
+    `model` error before any work (it was an AttributeError from inside the generated module)."""
+    m = ke.load("celt", fidelity)
+    with pytest.raises(ValueError, match="`model` celt: its amplitude equations define no frequencies"):
+        reversal_time(m, m.default_params, m.default_state)
+
+
 def test_reversal_time_reports_progress_of_many_intervals(reduced2):
     """`n_intervals` up to the bound is computed, and a callback sees every interval; with a background
     the intervals alternate between two values (module docstring of knifeedge.reversal)."""
@@ -403,6 +412,19 @@ def test_sweep_checks_every_run_as_simulate_does_before_any_work(grid, text):
     with pytest.raises((ValueError, TypeError)) as info:
         sweep(get_scene("numerical"), grid)
     assert text in str(info.value)
+
+
+@pytest.mark.parametrize("kw,exc,text", [
+    (dict(t_span=10.0), TypeError, "`t_span` must be a pair"),  # was "'float' object is not iterable"
+    (dict(t_span=(0.0, 5.0, 10.0)), TypeError, "`t_span` must be a pair"),
+    (dict(params=[1.0, 1.0, 1.0, 1.0]), TypeError, "`params` of a scene"),  # was "'list' ... no attribute 'items'"
+    (dict(y0=np.array([1e-3, 0.0, 0.1])), TypeError, "`y0` of a scene"),
+])
+def test_sweep_of_a_scene_refuses_bad_settings_naming_them(kw, exc, text):
+    from knifeedge.sweep import sweep
+
+    with pytest.raises(exc, match=text):
+        sweep("numerical", {"D": [1.0]}, executor="serial", progress=False, **kw)
 
 
 def test_cli_sweep_refuses_a_name_in_both_set_and_grid(capsys):
