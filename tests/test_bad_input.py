@@ -243,6 +243,26 @@ def test_cli_refuses_bad_input_in_one_line(capsys, argv, needle):
     assert needle in err
 
 
+@pytest.mark.parametrize("argv,needle", [
+    (["simulate", "--out", "{file}/x.csv"], "`--out` "),
+    (["simulate", "--plot", "{file}/plots/x.png"], "`--plot` "),
+    (["simulate", "--out", "{folder}"], "`--out` "),
+    (["scene", "numerical", "--out", "{file}/x.png"], "`--out` "),
+    (["demo", "--out", "{file}/x.png"], "`--out` "),
+])
+def test_cli_refuses_an_output_it_cannot_write_before_the_run(tmp_path, capsys, argv, needle):
+    """A file where the output's folder should be, or an output naming a folder: one line naming the flag, before
+    anything is integrated (it was an OSError's text, "[Errno 17] File exists", once the run was done)."""
+    (tmp_path / "notes.txt").write_text("a file")
+    (tmp_path / "old.csv").mkdir()
+    argv = [a.format(file=tmp_path / "notes.txt", folder=tmp_path / "old.csv") for a in argv]
+    rc = main(argv)
+    out, err = capsys.readouterr()
+    assert rc == 2 and out == "", (out, err)  # nothing run, nothing printed
+    assert err.count("\n") == 1 and needle in err
+    assert "is a file, not a folder" in err or "is a folder: give the name of a file" in err
+
+
 def test_cli_takes_the_step_and_the_step_budget(capsys):
     """`--h` and `--max-steps` exist (the RK4 error asks for `h`); a spent budget is a reported failure (exit 1)."""
     # the full single-mode model: its RK4 kernel is the one the other checks compile

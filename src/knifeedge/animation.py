@@ -33,6 +33,8 @@ from pathlib import Path
 
 import numpy as np
 
+from ._output import replacing, writable
+
 #: file suffixes :func:`animate` writes
 FORMATS = (".gif", ".mp4")
 #: largest tilt (rad) that the automatic magnification aims for (about 23 degrees)
@@ -762,6 +764,7 @@ def animate(source, out, *, frames: int = 240, fps: float = 20, magnify="auto", 
     """
     start = time.perf_counter()
     out, frames, fps = _check_options(out, frames, fps, magnify, size, dpi)
+    writable(out, "`out`")
     if out.suffix.lower() == ".gif":  # GIF frame durations are whole centiseconds: state the rate it plays at
         fps = 100.0 / max(2, round(100.0 / fps))
     say = progress or (lambda msg: None)
@@ -773,9 +776,9 @@ def animate(source, out, *, frames: int = 240, fps: float = 20, magnify="auto", 
         title = f"scene {source}: {mo.model.name}, drawn from its own simulation"
     title = title if title is not None else f"{mo.model.name}: the body drawn from its own simulation"
     renderer = FrameRenderer(mo, fps, mag, size=size, dpi=dpi, title=title or "")
-    out.parent.mkdir(parents=True, exist_ok=True)
     gen = (renderer.render(k) for k in range(frames))
-    n = _write_gif(gen, out, fps) if out.suffix.lower() == ".gif" else _write_mp4(gen, out, fps)
+    with replacing(out) as tmp:  # an error or Ctrl-C while drawing leaves no half-written video
+        n = _write_gif(gen, tmp, fps) if out.suffix.lower() == ".gif" else _write_mp4(gen, tmp, fps)
     renderer.close()
     info = AnimationInfo(out, n, fps, mo.t, renderer.time_per_second, mag, mo.drawn_by, time.perf_counter() - start)
     say(info.summary())
