@@ -227,6 +227,7 @@ BAD_CLI = [
     (["sweep", "numerical", "--grid", "method=a:b:3"], "`--grid method`"),
     (["sweep", "numerical", "--grid", "D=1:2:1000", "phi_dot=1:2:1000", "L=1:2:1000"], "`--grid`"),
     (["demo", "--out", "noext"], "`--out`"),
+    (["animate", "numerical", "--magnify", "big"], "`--magnify`"),
     (["demo", "--t-end", "nan"], "--t-end"),
 ]
 
@@ -249,6 +250,7 @@ def test_cli_refuses_bad_input_in_one_line(capsys, argv, needle):
     (["simulate", "--out", "{folder}"], "`--out` "),
     (["scene", "numerical", "--out", "{file}/x.png"], "`--out` "),
     (["demo", "--out", "{file}/x.png"], "`--out` "),
+    (["figures", "--out", "{file}", "--only", "numerical"], "`--out` "),  # was "[Errno 17] File exists"
 ])
 def test_cli_refuses_an_output_it_cannot_write_before_the_run(tmp_path, capsys, argv, needle):
     """A file where the output's folder should be, or an output naming a folder: one line naming the flag, before

@@ -459,6 +459,7 @@ def figures_cmd(args) -> int:
 
     if args.workers is not None and args.workers < 1:
         raise ValueError(f"`--workers` must be at least 1, got {args.workers}")
+    writable(args.out / "index.html", "`--out`")  # the folder, made if needed
     records = make_figures(args.out, names=args.only, max_workers=args.workers)
     failed = [r["name"] for r in records if not r["ok"]]
     print(f"{len(records) - len(failed)} figure(s) written to {args.out}/ (index: {args.out / 'index.html'})")
@@ -488,7 +489,10 @@ def animate_cmd(args) -> int:
     from .animation import animate
     from .scenes import get_scene
 
-    magnify = args.magnify if args.magnify == "auto" else number(args.magnify)
+    try:
+        magnify = args.magnify if args.magnify == "auto" else number(args.magnify)
+    except ValueError as exc:
+        raise ValueError(f"`--magnify`: {exc} or auto") from None
     scene = get_scene(args.name, **assignments(args.set))
     out = args.out or Path(f"{scene.name}.gif")
     info = animate(scene, out, frames=args.frames, fps=args.fps, magnify=magnify, dpi=args.dpi,
