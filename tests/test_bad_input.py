@@ -441,6 +441,7 @@ def test_sweep_checks_every_run_as_simulate_does_before_any_work(grid, text):
     (dict(t_span=(0.0, 5.0, 10.0)), TypeError, "`t_span` must be a pair"),
     (dict(params=[1.0, 1.0, 1.0, 1.0]), TypeError, "`params` of a scene"),  # was "'list' ... no attribute 'items'"
     (dict(y0=np.array([1e-3, 0.0, 0.1])), TypeError, "`y0` of a scene"),
+    (dict(method="RK5"), ValueError, "unknown `method` 'RK5' \\(the argument"),  # said "in `grid`"
 ])
 def test_sweep_of_a_scene_refuses_bad_settings_naming_them(kw, exc, text):
     from knifeedge.sweep import sweep

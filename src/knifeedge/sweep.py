@@ -390,7 +390,8 @@ class _Base:
 
     def __init__(self, run: RunSpec, model, names: Sequence[str]):
         if not isinstance(run.method, str) or run.method not in METHODS:
-            raise ValueError(f"unknown `method` {run.method!r} in `grid`; accepted: {', '.join(sorted(METHODS))}")
+            raise ValueError(f"unknown `method` {run.method!r} (the argument, the scene's or a `grid` value); "
+                             f"accepted: {', '.join(sorted(METHODS))}")
         if not run.t_span[1] > run.t_span[0]:
             raise ValueError(f"`t_end` must exceed the start time {run.t_span[0]:g}, got {run.t_span[1]!r}")
         extra = {} if run.max_steps is None else {"max_steps": run.max_steps}
