@@ -315,8 +315,14 @@ def test_auto_magnification_rule():
     ({"fps": float("nan")}, "`fps`"),
     ({"magnify": 0.5}, "`magnify`"),
     ({"magnify": "big"}, "`magnify`"),
+    ({"progress": "yes"}, "`progress`"),  # was "'str' object is not callable"
+    ({"frames": 5000, "dpi": 600}, "lower `frames`, `dpi` or `size`"),  # 65 GB of frames held until written
 ])
-def test_bad_input_is_refused_before_any_work(tmp_path, kwargs, match):
+def test_bad_input_is_refused_before_any_work(tmp_path, kwargs, match, monkeypatch):
+    def integrate(*args, **kwargs):
+        raise AssertionError("integrated before the arguments were checked")
+
+    monkeypatch.setattr(an, "motion", integrate)
     args = {"out": tmp_path / "a.gif", **kwargs}
     out = args.pop("out")
     with pytest.raises((ValueError, TypeError), match=match):
