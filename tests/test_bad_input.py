@@ -387,6 +387,18 @@ def test_noisy_intervals_bounded(reduced2):
     (lambda m, mp, p: mp.pose_rates(np.zeros((8, 3)), p), ValueError, "`y`"),
     (lambda m, mp, p: m.params([1, 1, 2, 0.5, 0.7]), TypeError, "`p`"),
     (lambda m, mp, p: m.state([0, 0, 0, 0, 0.1]), TypeError, "`y0`"),
+    # a mapping, as simulate takes: was "every element of `y` must be a real number, got dict"
+    (lambda m, mp, p: m.energy(Y2, p), TypeError, "for a mapping of names to values use model.state"),
+    (lambda m, mp, p: ke.linearize(m, Y2, p), TypeError, "for a mapping of names to values use model.state"),
+    # the scans' grids: one rule for numbers, and a bound (a point costs ~0.2 ms: 10**9 of them ran for days)
+    (lambda m, mp, p: ke.stability(m, p, "steady_spin", ["0.1"]), TypeError, "`values`"),  # was float("0.1")
+    (lambda m, mp, p: ke.stability(m, p, "steady_spin", True), TypeError, "`values`"),  # was 1.0
+    (lambda m, mp, p: ke.stability_boundaries(m, p, "steady_spin", (0.1, 1.0), n_grid=10**9), ValueError,
+     "`n_grid` must be an integer from 2 to 100000"),
+    # the fixed-step Lyapunov loop: its steps bounded by `max_steps` before anything compiles
+    (lambda m, mp, p: ke.lyapunov(m, np.array([1e-3, 1e-3, 0, 0, 0.1]), p, 1e300, h=0.01), ValueError, "`max_steps`"),
+    (lambda m, mp, p: ke.lyapunov(m, np.array([1e-3, 1e-3, 0, 0, 0.1]), p, 100.0, h=0.01, max_steps=1000),
+     ValueError, "takes 1e+04 steps of `h` = 0.01, more than `max_steps` = 1000"),
 ])
 def test_model_functions_refuse_wrong_shapes_and_types(call, exc, text):
     m, mp = ke.load("two_mode"), ke.load("two_mode", pose=True)
