@@ -105,7 +105,7 @@ def cycles(edges: dict) -> list:
 #: (the seal of a generated module, the checks of a rigid body's numbers, the registered methods' tables that
 #: derivation/stage_ir.py writes the adaptive methods' stages from).
 LAYERS = (
-    ("knifeedge.modulecheck", "knifeedge.bodies", "knifeedge._validate", "knifeedge._process",
+    ("knifeedge.modulecheck", "knifeedge.bodies", "knifeedge._validate", "knifeedge._process", "knifeedge._output",
      "knifeedge.integrators.methods"),
     ("knifeedge.derive",),
     ("knifeedge.generated",),

@@ -315,13 +315,63 @@ def test_auto_magnification_rule():
     ({"fps": float("nan")}, "`fps`"),
     ({"magnify": 0.5}, "`magnify`"),
     ({"magnify": "big"}, "`magnify`"),
+    ({"progress": "yes"}, "`progress`"),  # was "'str' object is not callable"
+    ({"frames": 5000, "dpi": 600}, "lower `frames`, `dpi` or `size`"),  # 65 GB of frames held until written
 ])
-def test_bad_input_is_refused_before_any_work(tmp_path, kwargs, match):
+def test_bad_input_is_refused_before_any_work(tmp_path, kwargs, match, monkeypatch):
+    def integrate(*args, **kwargs):
+        raise AssertionError("integrated before the arguments were checked")
+
+    monkeypatch.setattr(an, "motion", integrate)
     args = {"out": tmp_path / "a.gif", **kwargs}
     out = args.pop("out")
     with pytest.raises((ValueError, TypeError), match=match):
         an.animate("numerical", out, **args)
     assert not (tmp_path / "a.gif").exists()
+
+
+def test_an_output_that_cannot_be_written_is_refused_before_any_work(tmp_path, monkeypatch):
+    """`out` under a file (not a folder) or naming a folder: a ValueError naming `out` before the run is integrated
+    (it was an OSError once the run was integrated and drawn)."""
+    def integrate(*args, **kwargs):
+        raise AssertionError("integrated before `out` was checked")
+
+    monkeypatch.setattr(an, "motion", integrate)
+    (tmp_path / "notes.txt").write_text("a file")
+    (tmp_path / "old.gif").mkdir()
+    with pytest.raises(ValueError, match="`out` .*notes.txt' is a file, not a folder"):
+        an.animate("numerical", tmp_path / "notes.txt" / "a.gif", frames=4)
+    with pytest.raises(ValueError, match="`out` .* is a folder"):
+        an.animate("numerical", tmp_path / "old.gif", frames=4)
+
+
+def test_a_drawing_that_fails_leaves_no_half_written_file(single_motion, tmp_path, monkeypatch):
+    """An error (or Ctrl-C) while the frames are drawn and streamed to ffmpeg leaves the earlier file of that name
+    as it was, and no temporary file (the frames went into it as they were drawn: a truncated video)."""
+    import os
+    import stat
+
+    fake = tmp_path / "bin" / "ffmpeg"  # stores its input in the file it is given, as ffmpeg writes as it reads
+    fake.parent.mkdir()
+    fake.write_text('#!/bin/sh\nfor last; do :; done\ncat > "$last"\n')
+    fake.chmod(fake.stat().st_mode | stat.S_IEXEC)
+    monkeypatch.setenv("PATH", f"{fake.parent}{os.pathsep}{os.environ['PATH']}")
+    monkeypatch.setattr(an, "motion", lambda source, frames: single_motion)
+    drawn = an.FrameRenderer.render
+
+    def render(self, k):
+        if k == 3:
+            raise KeyboardInterrupt
+        return drawn(self, k)
+
+    monkeypatch.setattr(an.FrameRenderer, "render", render)
+    out = tmp_path / "videos" / "spin.mp4"
+    out.parent.mkdir()
+    out.write_bytes(b"an earlier animation")
+    with pytest.raises(KeyboardInterrupt):
+        an.animate("numerical", out, frames=6, size=(4.0, 2.5), dpi=40)
+    assert out.read_bytes() == b"an earlier animation"
+    assert [p.name for p in out.parent.iterdir()] == ["spin.mp4"]
 
 
 def test_bad_source():

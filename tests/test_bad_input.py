@@ -227,6 +227,7 @@ BAD_CLI = [
     (["sweep", "numerical", "--grid", "method=a:b:3"], "`--grid method`"),
     (["sweep", "numerical", "--grid", "D=1:2:1000", "phi_dot=1:2:1000", "L=1:2:1000"], "`--grid`"),
     (["demo", "--out", "noext"], "`--out`"),
+    (["animate", "numerical", "--magnify", "big"], "`--magnify`"),
     (["demo", "--t-end", "nan"], "--t-end"),
 ]
 
@@ -241,6 +242,27 @@ def test_cli_refuses_bad_input_in_one_line(capsys, argv, needle):
     assert rc == 2, (out, err)
     assert "Traceback" not in err and err.count("\n") == 1 and "error:" in err
     assert needle in err
+
+
+@pytest.mark.parametrize("argv,needle", [
+    (["simulate", "--out", "{file}/x.csv"], "`--out` "),
+    (["simulate", "--plot", "{file}/plots/x.png"], "`--plot` "),
+    (["simulate", "--out", "{folder}"], "`--out` "),
+    (["scene", "numerical", "--out", "{file}/x.png"], "`--out` "),
+    (["demo", "--out", "{file}/x.png"], "`--out` "),
+    (["figures", "--out", "{file}", "--only", "numerical"], "`--out` "),  # was "[Errno 17] File exists"
+])
+def test_cli_refuses_an_output_it_cannot_write_before_the_run(tmp_path, capsys, argv, needle):
+    """A file where the output's folder should be, or an output naming a folder: one line naming the flag, before
+    anything is integrated (it was an OSError's text, "[Errno 17] File exists", once the run was done)."""
+    (tmp_path / "notes.txt").write_text("a file")
+    (tmp_path / "old.csv").mkdir()
+    argv = [a.format(file=tmp_path / "notes.txt", folder=tmp_path / "old.csv") for a in argv]
+    rc = main(argv)
+    out, err = capsys.readouterr()
+    assert rc == 2 and out == "", (out, err)  # nothing run, nothing printed
+    assert err.count("\n") == 1 and needle in err
+    assert "is a file, not a folder" in err or "is a folder: give the name of a file" in err
 
 
 def test_cli_takes_the_step_and_the_step_budget(capsys):
@@ -305,6 +327,15 @@ def test_reversal_time_refuses_bad_input(reduced2, kw, exc, text):
     assert text in str(info.value)
 
 
+@pytest.mark.parametrize("fidelity", ["full", "amplitude"])
+def test_reversal_time_refuses_a_model_without_the_knife_edges_theory(fidelity):
+    """The celt has amplitude equations but not the knife edges' modes (no growth and drive rates): a clear
+    `model` error before any work (it was an AttributeError from inside the generated module)."""
+    m = ke.load("celt", fidelity)
+    with pytest.raises(ValueError, match="`model` celt: its amplitude equations define no frequencies"):
+        reversal_time(m, m.default_params, m.default_state)
+
+
 def test_reversal_time_reports_progress_of_many_intervals(reduced2):
     """`n_intervals` up to the bound is computed, and a callback sees every interval; with a background
     the intervals alternate between two values (module docstring of knifeedge.reversal)."""
@@ -356,6 +387,18 @@ def test_noisy_intervals_bounded(reduced2):
     (lambda m, mp, p: mp.pose_rates(np.zeros((8, 3)), p), ValueError, "`y`"),
     (lambda m, mp, p: m.params([1, 1, 2, 0.5, 0.7]), TypeError, "`p`"),
     (lambda m, mp, p: m.state([0, 0, 0, 0, 0.1]), TypeError, "`y0`"),
+    # a mapping, as simulate takes: was "every element of `y` must be a real number, got dict"
+    (lambda m, mp, p: m.energy(Y2, p), TypeError, "for a mapping of names to values use model.state"),
+    (lambda m, mp, p: ke.linearize(m, Y2, p), TypeError, "for a mapping of names to values use model.state"),
+    # the scans' grids: one rule for numbers, and a bound (a point costs ~0.2 ms: 10**9 of them ran for days)
+    (lambda m, mp, p: ke.stability(m, p, "steady_spin", ["0.1"]), TypeError, "`values`"),  # was float("0.1")
+    (lambda m, mp, p: ke.stability(m, p, "steady_spin", True), TypeError, "`values`"),  # was 1.0
+    (lambda m, mp, p: ke.stability_boundaries(m, p, "steady_spin", (0.1, 1.0), n_grid=10**9), ValueError,
+     "`n_grid` must be an integer from 2 to 100000"),
+    # the fixed-step Lyapunov loop: its steps bounded by `max_steps` before anything compiles
+    (lambda m, mp, p: ke.lyapunov(m, np.array([1e-3, 1e-3, 0, 0, 0.1]), p, 1e300, h=0.01), ValueError, "`max_steps`"),
+    (lambda m, mp, p: ke.lyapunov(m, np.array([1e-3, 1e-3, 0, 0, 0.1]), p, 100.0, h=0.01, max_steps=1000),
+     ValueError, "takes 1e+04 steps of `h` = 0.01, more than `max_steps` = 1000"),
 ])
 def test_model_functions_refuse_wrong_shapes_and_types(call, exc, text):
     m, mp = ke.load("two_mode"), ke.load("two_mode", pose=True)
@@ -403,6 +446,20 @@ def test_sweep_checks_every_run_as_simulate_does_before_any_work(grid, text):
     with pytest.raises((ValueError, TypeError)) as info:
         sweep(get_scene("numerical"), grid)
     assert text in str(info.value)
+
+
+@pytest.mark.parametrize("kw,exc,text", [
+    (dict(t_span=10.0), TypeError, "`t_span` must be a pair"),  # was "'float' object is not iterable"
+    (dict(t_span=(0.0, 5.0, 10.0)), TypeError, "`t_span` must be a pair"),
+    (dict(params=[1.0, 1.0, 1.0, 1.0]), TypeError, "`params` of a scene"),  # was "'list' ... no attribute 'items'"
+    (dict(y0=np.array([1e-3, 0.0, 0.1])), TypeError, "`y0` of a scene"),
+    (dict(method="RK5"), ValueError, "unknown `method` 'RK5' \\(the argument"),  # said "in `grid`"
+])
+def test_sweep_of_a_scene_refuses_bad_settings_naming_them(kw, exc, text):
+    from knifeedge.sweep import sweep
+
+    with pytest.raises(exc, match=text):
+        sweep("numerical", {"D": [1.0]}, executor="serial", progress=False, **kw)
 
 
 def test_cli_sweep_refuses_a_name_in_both_set_and_grid(capsys):

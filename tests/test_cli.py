@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import subprocess
 import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -53,6 +54,31 @@ def test_simulate_two_mode_by_name_to_npz(capsys, tmp_path):
     assert list(z["state_names"]) == ["theta1", "theta2", "theta1_dot", "theta2_dot", "phi_dot"]
     assert z["y"].shape == (5, 11) and z["y"][4, 0] == 0.2
     assert len(z["reversal_times"]) >= 1
+
+
+def test_simulate_writes_its_file_whole_or_not_at_all(capsys, tmp_path, monkeypatch):
+    """`--out X.NPZ` writes X.NPZ (numpy's savez added ".npz" to a path not ending in lower-case .npz, and the
+    command said it wrote X.NPZ); a Ctrl-C while the CSV is written leaves the earlier file as it was."""
+    npz = tmp_path / "Run.NPZ"
+    rc, out, err = run(capsys, "simulate", "--t-end", "10", "--n-eval", "11", "--out", str(npz))
+    assert rc == 0, err
+    assert [p.name for p in tmp_path.iterdir()] == ["Run.NPZ"]
+    assert np.load(npz)["y"].shape == (3, 11)
+
+    def interrupted(fname, X, **kwargs):  # the first rows written, then Ctrl-C
+        if hasattr(fname, "write"):
+            fname.write(b"t,theta\n0.0,")
+        else:
+            Path(fname).write_text("t,theta\n0.0,")
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(np, "savetxt", interrupted)
+    csv = tmp_path / "run.csv"
+    csv.write_text("an earlier run")
+    rc, out, err = run(capsys, "simulate", "--t-end", "10", "--n-eval", "11", "--out", str(csv))
+    assert rc == 130 and "interrupted" in err
+    assert csv.read_text() == "an earlier run"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["Run.NPZ", "run.csv"]
 
 
 @pytest.mark.parametrize("argv, needle", [

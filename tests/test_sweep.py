@@ -421,6 +421,18 @@ def test_an_unreadable_text_file_names_file_line_and_remedy(tmp_path, quick_tabl
         ke.sweep(_quick(), QUICK, executor="serial", out=jl, progress=False)
 
 
+def test_a_text_export_is_readable_as_any_file_the_user_writes(tmp_path, quick_table):
+    """The CSV/JSONL export takes its mode from the umask, as the store and any file the user writes (it was
+    0600 whatever the umask: a temporary file's mode, moved into place), and leaves no temporary file."""
+    old = os.umask(0o022)
+    try:
+        quick_table.to_csv(tmp_path / "tr.csv")
+        quick_table.to_jsonl(tmp_path / "tr.jsonl")
+    finally:
+        os.umask(old)
+    assert {p.name: p.stat().st_mode & 0o777 for p in tmp_path.iterdir()} == {"tr.csv": 0o644, "tr.jsonl": 0o644}
+
+
 def test_results_of_an_earlier_version_are_read_not_recomputed(tmp_path, quick_table):
     """A CSV appended by the earlier sweep (no checksum, no `seconds`, the last line cut short) is imported."""
     cols = [c for c in quick_table.columns if c != "seconds"]

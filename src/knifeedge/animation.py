@@ -33,8 +33,13 @@ from pathlib import Path
 
 import numpy as np
 
+from ._output import replacing, writable
+
 #: file suffixes :func:`animate` writes
 FORMATS = (".gif", ".mp4")
+#: most pixels of all a GIF's frames together: they are held in memory until the file is written (one byte a
+#: pixel; the default 240 frames of 640 x 360 hold 55 million), an MP4's are streamed to ffmpeg
+MAX_GIF_PIXELS = 2**31
 #: largest tilt (rad) that the automatic magnification aims for (about 23 degrees)
 TARGET_TILT = 0.4
 _NICE = (1, 2, 3, 4, 5, 10, 20, 30, 50, 100, 200, 300, 500, 1000)
@@ -182,6 +187,11 @@ def _check_options(out, frames, fps, magnify, size=(8.0, 4.5), dpi=80) -> tuple:
         raise TypeError(f"`size` must be a pair (width, height) in inches, got {size!r}") from None
     if not (0.5 <= w <= 40 and 0.5 <= h <= 40):
         raise ValueError(f"`size` must be between 0.5 and 40 inches each way, got {size!r}")
+    pixels = frames * round(w * dpi) * round(h * dpi)
+    if out.suffix.lower() == ".gif" and pixels > MAX_GIF_PIXELS:
+        raise ValueError(f"a GIF of {frames} frames at {round(w * dpi)} x {round(h * dpi)} pixels holds {pixels:.3g} "
+                         f"pixels in memory, more than {MAX_GIF_PIXELS:.3g}: lower `frames`, `dpi` or `size`, or "
+                         f"write an .mp4 (streamed to ffmpeg)")
     if out.suffix.lower() == ".mp4" and shutil.which("ffmpeg") is None:
         raise RuntimeError("writing MP4 needs ffmpeg on the PATH, and it was not found: install it "
                            "(apt-get install ffmpeg, conda install ffmpeg, brew install ffmpeg) or write a .gif "
@@ -762,6 +772,9 @@ def animate(source, out, *, frames: int = 240, fps: float = 20, magnify="auto", 
     """
     start = time.perf_counter()
     out, frames, fps = _check_options(out, frames, fps, magnify, size, dpi)
+    if progress is not None and not callable(progress):
+        raise TypeError(f"`progress` must be None or a callable(message), got {progress!r}")
+    writable(out, "`out`")
     if out.suffix.lower() == ".gif":  # GIF frame durations are whole centiseconds: state the rate it plays at
         fps = 100.0 / max(2, round(100.0 / fps))
     say = progress or (lambda msg: None)
@@ -773,9 +786,9 @@ def animate(source, out, *, frames: int = 240, fps: float = 20, magnify="auto", 
         title = f"scene {source}: {mo.model.name}, drawn from its own simulation"
     title = title if title is not None else f"{mo.model.name}: the body drawn from its own simulation"
     renderer = FrameRenderer(mo, fps, mag, size=size, dpi=dpi, title=title or "")
-    out.parent.mkdir(parents=True, exist_ok=True)
     gen = (renderer.render(k) for k in range(frames))
-    n = _write_gif(gen, out, fps) if out.suffix.lower() == ".gif" else _write_mp4(gen, out, fps)
+    with replacing(out) as tmp:  # an error or Ctrl-C while drawing leaves no half-written video
+        n = _write_gif(gen, tmp, fps) if out.suffix.lower() == ".gif" else _write_mp4(gen, tmp, fps)
     renderer.close()
     info = AnimationInfo(out, n, fps, mo.t, renderer.time_per_second, mag, mo.drawn_by, time.perf_counter() - start)
     say(info.summary())

@@ -15,6 +15,8 @@ import os
 import sys
 from pathlib import Path
 
+from ._output import replacing, writable
+
 COMMANDS: dict = {}
 
 
@@ -39,6 +41,7 @@ def demo(args) -> int:
 
     if args.out.suffix.lower() != ".png":
         raise ValueError(f"`--out` must end in .png, got {args.out.name!r}")
+    writable(args.out, "`--out`")
     model = load("single_mode", fidelity="full")
     p = model.params(g=1.0, ell=1.0, L=1.0, D=1.0)
     y0 = {"theta": 1e-3, "theta_dot": 0.0, "phi_dot": 0.1}
@@ -70,8 +73,8 @@ def demo(args) -> int:
     a2.set_ylabel(r"$\dot\phi$ [$\sqrt{g/\ell}$]")
     a2.set_xlabel(r"t [$\sqrt{\ell/g}$]")
     fig.tight_layout()
-    args.out.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(args.out, dpi=120)
+    with replacing(args.out) as tmp:
+        fig.savefig(tmp, dpi=120)
     print(f"  plot written to {args.out}")
     return 0
 
@@ -309,6 +312,9 @@ def simulate_cmd(args) -> int:
         raise ValueError(f"`--out` must end in .csv or .npz, got {args.out.name!r}")
     if args.plot is not None and args.plot.suffix.lower() != ".png":
         raise ValueError(f"`--plot` must end in .png, got {args.plot.name!r}")
+    for path, flag in ((args.out, "`--out`"), (args.plot, "`--plot`")):
+        if path is not None:
+            writable(path, flag)
     if not args.t_end > args.t_start:
         raise ValueError(f"`--t-end` must exceed `--t-start` ({args.t_start:g}), got {args.t_end:g}")
     fidelity = args.fidelity
@@ -358,16 +364,17 @@ def simulate_cmd(args) -> int:
     control = f"h={args.h:g}" if args.h is not None else f"rtol={args.rtol:g}, atol={args.atol:g}"
     print(f"  {r.method}, {control}: {r.nsteps} steps, {r.nfev} rhs evaluations; {r.message}")
     if args.out is not None:
-        args.out.parent.mkdir(parents=True, exist_ok=True)
-        if args.out.suffix.lower() == ".csv":
-            np.savetxt(args.out, np.column_stack([r.t, r.y.T]), delimiter=",", header=",".join(("t",) + r.state_names),
-                       comments="")
-        else:
-            np.savez(args.out, t=r.t, y=r.y, state_names=np.array(r.state_names), reversal_times=rev,
-                     params=np.array([p[n] for n in m.param_names]), param_names=np.array(m.param_names))
+        with replacing(args.out) as tmp, open(tmp, "wb") as f:  # a file object: savez adds no ".npz" to ".NPZ"
+            if args.out.suffix.lower() == ".csv":
+                np.savetxt(f, np.column_stack([r.t, r.y.T]), delimiter=",", header=",".join(("t",) + r.state_names),
+                           comments="")
+            else:
+                np.savez(f, t=r.t, y=r.y, state_names=np.array(r.state_names), reversal_times=rev,
+                         params=np.array([p[n] for n in m.param_names]), param_names=np.array(m.param_names))
         print(f"  trajectory written to {args.out}")
     if args.plot is not None and r.t.size:
-        _plot_run(r, m, args.plot)
+        with replacing(args.plot) as tmp:
+            _plot_run(r, m, tmp)
         print(f"  plot written to {args.plot}")
     if not r.success:
         print(f"knifeedge simulate: integration failed: {r.message}", file=sys.stderr)
@@ -430,10 +437,11 @@ def scene_cmd(args) -> int:
     if args.out is not None and args.out.suffix.lower() != ".png":
         raise ValueError(f"`--out` must end in .png, got {args.out.name!r}")
     scene = get_scene(args.name, **assignments(args.set))
+    out = writable(args.out or Path(f"{scene.name}.png"), "`--out`")
     result = scene(progress=lambda msg: print(f"scene {scene.name}: {msg}", file=sys.stderr, flush=True))
     print(result.summary())
-    out = args.out or Path(f"{scene.name}.png")
-    result.savefig(out)
+    with replacing(out) as tmp:
+        result.savefig(tmp)
     print(f"  plot written to {out}")
     return 0
 
@@ -451,6 +459,7 @@ def figures_cmd(args) -> int:
 
     if args.workers is not None and args.workers < 1:
         raise ValueError(f"`--workers` must be at least 1, got {args.workers}")
+    writable(args.out / "index.html", "`--out`")  # the folder, made if needed
     records = make_figures(args.out, names=args.only, max_workers=args.workers)
     failed = [r["name"] for r in records if not r["ok"]]
     print(f"{len(records) - len(failed)} figure(s) written to {args.out}/ (index: {args.out / 'index.html'})")
@@ -480,7 +489,10 @@ def animate_cmd(args) -> int:
     from .animation import animate
     from .scenes import get_scene
 
-    magnify = args.magnify if args.magnify == "auto" else number(args.magnify)
+    try:
+        magnify = args.magnify if args.magnify == "auto" else number(args.magnify)
+    except ValueError as exc:
+        raise ValueError(f"`--magnify`: {exc} or auto") from None
     scene = get_scene(args.name, **assignments(args.set))
     out = args.out or Path(f"{scene.name}.gif")
     info = animate(scene, out, frames=args.frames, fps=args.fps, magnify=magnify, dpi=args.dpi,

@@ -607,6 +607,9 @@ def lyapunov(m: Model, y0, p, t_end: float, k: int | None = None, h: float | Non
     steps_per_block = max(1, round(tau / h))
     n_blocks = max(1, int(round(span / (steps_per_block * h))))
     h = span / (n_blocks * steps_per_block)
+    if n_blocks * steps_per_block > max_steps:  # a span of 1e12 steps ran for days; of 1e300 overflowed in numba
+        raise ValueError(f"the span {span:g} takes {n_blocks * steps_per_block:.3g} steps of `h` = {h:.3g}, more than "
+                         f"`max_steps` = {max_steps}: shorten `t_end`, take a longer `h` or raise `max_steps`")
     (n, k), z = Q.shape, np.empty((6, Q.size + y.size))
     z[0, :n], z[0, n:] = y, Q.ravel()
     sums, hist, hist_t = np.zeros(k), np.empty((n_blocks, k)), np.empty(n_blocks)

@@ -341,6 +341,9 @@ class Model:
         state's (without the pose) unless ``pose``; the compiled functions do not check their bounds."""
         if isinstance(y, np.ndarray) and y.dtype == np.float64 and y.ndim in (1, 2):
             arr = y
+        elif isinstance(y, Mapping):
+            raise TypeError(f"`y` must be an array of states in the order of {self.state_names}; for a mapping of "
+                            f"names to values use model.state(...)")
         else:
             arr = _validate.real_array(y, "`y`")
         sizes = (self.n_state,) if pose else tuple(sorted({self.n_state, len(self.closed_state_names)}))

@@ -91,12 +91,22 @@ class ReversalPrediction:
     validity_message: str = ""
 
 
+#: what the reversal theory reads from a model's amplitude module (the knife edges' emit them)
+THEORY_FUNCTIONS = ("frequencies", "growth_rates", "drive_rates")
+
+
 def _amplitude_module(model: Model):
     folder = model.source_path.parent if model.source_path is not None else None
     if (model.name, "amplitude") not in available(folder):
         raise ValueError(f"`model` {model.name} has no amplitude equations (fidelity 'amplitude'); "
                          f"reversal times need them")
-    return load(model.name, "amplitude", path=folder).module
+    mod = load(model.name, "amplitude", path=folder).module
+    lacking = [f for f in THEORY_FUNCTIONS if not hasattr(mod, f)]
+    if lacking:  # e.g. the celt's averaged flow: its modes are not the knife edges' pairs of opposite chirality
+        raise ValueError(f"`model` {model.name}: its amplitude equations define no {', '.join(lacking)}, which the "
+                         f"reversal theory needs (the knife edges' modes); simulate the model instead "
+                         f"(fidelity 'amplitude' integrates its averaged flow)")
+    return mod
 
 
 def _closed_form(f):

@@ -87,9 +87,9 @@ class RunSpec:
             object.__setattr__(self, "path", str(Path(self.path).expanduser().resolve()))
         object.__setattr__(self, "params", _frozen(self.params))
         object.__setattr__(self, "y0", _frozen(self.y0))
+        if isinstance(self.t_span, (str, bytes)) or not hasattr(self.t_span, "__len__") or len(self.t_span) != 2:
+            raise TypeError(f"`t_span` must be a pair (t0, t1) of numbers, got {self.t_span!r}")
         object.__setattr__(self, "t_span", tuple(_validate.finite(v, "`t_span`") for v in self.t_span))
-        if len(self.t_span) != 2:
-            raise ValueError(f"`t_span` must be a pair (t0, t1), got {self.t_span!r}")
         object.__setattr__(self, "n_eval", _count(self.n_eval, "n_eval", 2, MAX_N_EVAL))
         object.__setattr__(self, "max_steps", _count(self.max_steps, "max_steps", 1, 2**63 - 1))
 
@@ -152,9 +152,7 @@ class RunSpec:
 
     @classmethod
     def from_dict(cls, d: Mapping) -> "RunSpec":
-        d = dict(d)
-        d["t_span"] = tuple(d["t_span"])
-        return cls(**d)
+        return cls(**d)  # __post_init__ makes t_span a tuple
 
     def describe(self) -> str:
         """One line: model, fidelity, parameters, initial state, span, method."""

@@ -21,12 +21,15 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import brentq
 
+from . import _validate
 from .models import Model
 
 #: a real part counts as nonzero above this fraction of the size of the linearization (its physical block's norm):
 #: the eigenvalues of a nearly defective block, at a collision of two imaginary pairs, are only fixed to about
 #: machine epsilon over their separation
 MARGINAL = 1e-7
+#: most points of the grid of :func:`stability_boundaries` (a point costs ~0.2 ms: the celt's 100,000 take ~20 s)
+MAX_GRID = 100_000
 
 
 @dataclass(frozen=True)
@@ -242,7 +245,11 @@ class StabilityTable:
 
 
 def _values(values, what: str = "`values`") -> np.ndarray:
-    arr = np.atleast_1d(np.asarray(values, dtype=float))
+    """``values``, a number or a sequence of them (the rule of :mod:`knifeedge._validate`), as a 1-D array."""
+    if isinstance(values, (str, bytes)) or not hasattr(values, "__len__") or np.ndim(values) == 0:
+        arr = np.array([_validate.real(values, f"each of {what}")])
+    else:
+        arr = _validate.real_array(values, what)
     if arr.ndim != 1 or arr.size == 0 or not np.isfinite(arr).all():
         raise ValueError(f"{what} must be one or more finite numbers, got {values!r}")
     return arr
@@ -283,8 +290,8 @@ def stability_boundaries(m: Model, p, family: str, interval, n_grid: int = 400) 
     lo, hi = _values(interval, "`interval`")[:2] if np.size(interval) == 2 else (None, None)
     if lo is None or not lo < hi:
         raise ValueError(f"`interval` must be (lo, hi) with lo < hi, got {interval!r}")
-    if not isinstance(n_grid, int) or n_grid < 2:
-        raise ValueError(f"`n_grid` must be an integer >= 2, got {n_grid!r}")
+    if isinstance(n_grid, bool) or not isinstance(n_grid, (int, np.integer)) or not 2 <= n_grid <= MAX_GRID:
+        raise ValueError(f"`n_grid` must be an integer from 2 to {MAX_GRID}, got {n_grid!r}")
     _family_index(m, family)
     return growth_boundaries(lambda v: _growth(m, p, family, v), lo, hi, n_grid)
 

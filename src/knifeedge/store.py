@@ -46,13 +46,13 @@ import math
 import os
 import socket
 import sqlite3
-import tempfile
 import time
 import uuid
 from collections.abc import Iterable, Mapping, Sequence
 from operator import add, itemgetter
 from pathlib import Path
 
+from ._output import replacing
 from ._process import alive as _alive, start_time as _start_time
 
 #: outcome columns, after the input columns
@@ -603,25 +603,20 @@ def write_text(path: str | Path, rows: Sequence[Mapping], columns: Sequence[str]
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     cols = list(columns)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
-    try:
-        with os.fdopen(fd, "w", newline="") as f:
-            if path.suffix.lower() == ".csv":
-                w = csv.writer(f, lineterminator="\n")
-                w.writerow(cols + ["checksum"])
-                for row in rows:
-                    w.writerow([_csv_cell(c, row[c]) for c in cols] + [checksum(row, cols)])
-            else:
-                for row in rows:
-                    d = {c: (None if isinstance(row[c], float) and math.isnan(row[c]) else row[c]) for c in cols}
-                    d["checksum"] = checksum(row, cols)
-                    f.write(json.dumps(d, allow_nan=False) + "\n")
-            f.flush()
-            os.fsync(f.fileno())
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
+    # a temporary file moved into place; created as open() creates files (its mode from the umask, as the store's)
+    with replacing(path) as tmp, open(tmp, "w", newline="") as f:
+        if path.suffix.lower() == ".csv":
+            w = csv.writer(f, lineterminator="\n")
+            w.writerow(cols + ["checksum"])
+            for row in rows:
+                w.writerow([_csv_cell(c, row[c]) for c in cols] + [checksum(row, cols)])
+        else:
+            for row in rows:
+                d = {c: (None if isinstance(row[c], float) and math.isnan(row[c]) else row[c]) for c in cols}
+                d["checksum"] = checksum(row, cols)
+                f.write(json.dumps(d, allow_nan=False) + "\n")
+        f.flush()
+        os.fsync(f.fileno())
     return path
 
 

@@ -294,10 +294,14 @@ def _base_run(target, params, y0, t_span, method, rtol, atol) -> RunSpec:
         raise TypeError(f"`scene_or_model` must be a Scene, a scene name, a RunSpec or a Model, got {type(target).__name__}")
     changes: dict[str, Any] = {}
     if not isinstance(target, Model):
+        for name, given in (("params", params), ("y0", y0)):
+            if given is not None and not isinstance(given, Mapping):
+                raise TypeError(f"`{name}` of a scene or RunSpec must be a mapping {{name: value}} of the values to "
+                                f"replace (an array is taken only with a Model), got {type(given).__name__}")
         changes.update({k: v for k, v in (params or {}).items()})
         changes.update({k: v for k, v in (y0 or {}).items()})
         if t_span is not None:
-            run = RunSpec.from_dict({**run.to_dict(), "t_span": tuple(t_span)})
+            run = RunSpec.from_dict({**run.to_dict(), "t_span": t_span})
     for k, v in (("method", method), ("rtol", rtol), ("atol", atol)):
         if v is not None:
             changes[k] = v
@@ -386,7 +390,8 @@ class _Base:
 
     def __init__(self, run: RunSpec, model, names: Sequence[str]):
         if not isinstance(run.method, str) or run.method not in METHODS:
-            raise ValueError(f"unknown `method` {run.method!r} in `grid`; accepted: {', '.join(sorted(METHODS))}")
+            raise ValueError(f"unknown `method` {run.method!r} (the argument, the scene's or a `grid` value); "
+                             f"accepted: {', '.join(sorted(METHODS))}")
         if not run.t_span[1] > run.t_span[0]:
             raise ValueError(f"`t_end` must exceed the start time {run.t_span[0]:g}, got {run.t_span[1]!r}")
         extra = {} if run.max_steps is None else {"max_steps": run.max_steps}
